@@ -1,0 +1,41 @@
+// Engine-independent views of a run: trace rows, path, statistics.
+//
+// Every engine (golden, SystemC, RTL) turns its run into a vector of Iteration records;
+// these functions print them, so the same command with another engine prints the same
+// rows and `diff` is a valid cross-check.
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "dda/golden.hpp"
+
+namespace dda {
+
+// v / scale rounded to 4 decimals (half away from zero), exact integer arithmetic.
+std::string paper_units(std::int64_t v, std::int64_t scale);
+
+enum class TraceFormat { Csv, Table, Json };
+void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
+                 TraceFormat fmt);
+
+// Lattice points of the path: the start, then the position after every move.
+std::vector<Point> path_points(const Plan& plan, const std::vector<Iteration>& iters);
+
+enum class PathFormat { Csv, Json };
+void write_path(std::ostream& os, const std::vector<Point>& points, PathFormat fmt);
+
+struct Stats {
+  std::uint64_t iterations = 0, moves = 0, pulses_x = 0, pulses_y = 0, points = 0;
+  double max_dev = 0.0;  // largest distance of a path point from the ellipse, in steps
+  Point max_dev_at;
+  double mean_dev = 0.0;
+};
+Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters);
+
+enum class StatsFormat { Text, Json };
+void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat fmt);
+
+}  // namespace dda

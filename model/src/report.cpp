@@ -1,0 +1,186 @@
+#include "dda/report.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+namespace dda {
+
+std::string paper_units(std::int64_t v, std::int64_t scale) {
+  const __int128 num = static_cast<__int128>(v) * 10000;
+  const bool neg = (num < 0) != (scale < 0);
+  __int128 n = num < 0 ? -num : num;
+  const __int128 d = scale < 0 ? -static_cast<__int128>(scale) : scale;
+  __int128 q = n / d;
+  const __int128 r = n % d;
+  if (2 * r >= d) ++q;  // half away from zero
+  const auto whole = static_cast<std::uint64_t>(q / 10000);
+  const auto frac = static_cast<unsigned>(q % 10000);
+  return fmt::format("{}{}.{:04d}", (neg && q != 0) ? "-" : "", whole, frac);
+}
+
+namespace {
+
+struct Row {
+  std::uint64_t iter;
+  std::int64_t jvx, jrx, jvy, jry;
+  bool ax, ay;  // axis active (accumulator added) in this row
+  bool dx, dy;
+  std::int64_t remx, remy;
+};
+
+std::vector<Row> rows(const Plan& plan, const std::vector<Iteration>& iters) {
+  std::vector<Row> v;
+  v.reserve(iters.size() + 1);
+  const Command& c = plan.cmd;
+  v.push_back({0, c.jv_x, c.jr_x, c.jv_y, c.jr_y, c.cnt_x != 0, c.cnt_y != 0, false, false,
+               c.cnt_x, c.cnt_y});
+  for (const auto& it : iters) {
+    v.push_back({it.iter, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
+                 it.step_x, it.step_y, it.after.cnt_x, it.after.cnt_y});
+  }
+  return v;
+}
+
+std::string acc_cell(bool active, std::int64_t v, std::int64_t scale) {
+  return active ? paper_units(v, scale) : std::string("stopped");
+}
+
+}  // namespace
+
+void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
+                 TraceFormat fmt) {
+  const std::int64_t s = plan.scale;
+  if (fmt == TraceFormat::Csv) {
+    os << "iter,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y\n";
+    for (const Row& r : rows(plan, iters)) {
+      fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s),
+                 acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s),
+                 acc_cell(r.ay, r.jry, s), r.dy, r.remy);
+    }
+    return;
+  }
+  if (fmt == TraceFormat::Table) {
+    // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
+    fmt::print(os, "a={} b={} n={} preload={} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
+               plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload),
+               plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+    const auto line = [&](auto... c) {
+      fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |\n",
+                 c...);
+    };
+    line("iter", "JVX", "JRX", "dX", "remX", "JVY", "JRY", "dY", "remY");
+    os << "|-------|------------|------------|----|-------|------------|------------|----|-------|\n";
+    for (const Row& r : rows(plan, iters)) {
+      if (r.iter != 0 && !r.dx && !r.dy) continue;
+      line(r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), int(r.dx), r.remx,
+           paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), int(r.dy), r.remy);
+    }
+    return;
+  }
+  // JSON: the full records, exact scaled integers.
+  nlohmann::ordered_json j;
+  j["a"] = plan.spec.a;
+  j["b"] = plan.spec.b;
+  j["bits"] = plan.spec.bits;
+  j["preload"] = to_string(plan.spec.preload);
+  j["from"] = {plan.from.x, plan.from.y};
+  j["to"] = {plan.to.x, plan.to.y};
+  j["scale"] = s;
+  j["cap"] = plan.cmd.cap;
+  auto& recs = j["iterations"] = nlohmann::ordered_json::array();
+  for (const auto& it : iters) {
+    nlohmann::ordered_json r;
+    r["iter"] = it.iter;
+    r["active_x"] = it.active_x;
+    r["active_y"] = it.active_y;
+    r["jv_x"] = it.jv_x;
+    r["jv_y"] = it.jv_y;
+    r["sum_x"] = it.sum_x;
+    r["sum_y"] = it.sum_y;
+    r["step_x"] = it.step_x;
+    r["step_y"] = it.step_y;
+    r["jr_x"] = it.after.jr_x;
+    r["jr_y"] = it.after.jr_y;
+    r["cnt_x"] = it.after.cnt_x;
+    r["cnt_y"] = it.after.cnt_y;
+    r["jv_x_next"] = it.after.jv_x;
+    r["jv_y_next"] = it.after.jv_y;
+    r["x"] = it.pos.x;
+    r["y"] = it.pos.y;
+    recs.push_back(std::move(r));
+  }
+  os << j.dump(1) << '\n';
+}
+
+std::vector<Point> path_points(const Plan& plan, const std::vector<Iteration>& iters) {
+  std::vector<Point> pts{plan.from};
+  for (const auto& it : iters) {
+    if (it.step_x || it.step_y) pts.push_back(it.pos);
+  }
+  return pts;
+}
+
+void write_path(std::ostream& os, const std::vector<Point>& points, PathFormat fmt) {
+  if (fmt == PathFormat::Csv) {
+    os << "point,x,y\n";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      fmt::print(os, "{},{},{}\n", i, points[i].x, points[i].y);
+    }
+    return;
+  }
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const auto& p : points) j.push_back({p.x, p.y});
+  os << j.dump() << '\n';
+}
+
+Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters) {
+  Stats s;
+  s.iterations = iters.size();
+  for (const auto& it : iters) {
+    s.pulses_x += it.step_x;
+    s.pulses_y += it.step_y;
+    s.moves += (it.step_x || it.step_y);
+  }
+  const auto pts = path_points(plan, iters);
+  s.points = pts.size();
+  double sum = 0;
+  for (const auto& p : pts) {
+    const double d = ellipse_distance(double(plan.spec.a), double(plan.spec.b), double(p.x),
+                                      double(p.y));
+    sum += d;
+    if (d > s.max_dev) {
+      s.max_dev = d;
+      s.max_dev_at = p;
+    }
+  }
+  s.mean_dev = sum / double(pts.size());
+  return s;
+}
+
+void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat fmt) {
+  if (fmt == StatsFormat::Text) {
+    fmt::print(os, "iterations: {}\nmoves: {}\npulses_x: {}\npulses_y: {}\npoints: {}\n",
+               s.iterations, s.moves, s.pulses_x, s.pulses_y, s.points);
+    fmt::print(os, "max_dev: {:.6f} at ({},{})\nmean_dev: {:.6f}\n", s.max_dev, s.max_dev_at.x,
+               s.max_dev_at.y, s.mean_dev);
+    fmt::print(os, "bits: {}\npreload: {}\n", plan.spec.bits, to_string(plan.spec.preload));
+    return;
+  }
+  nlohmann::ordered_json j;
+  j["iterations"] = s.iterations;
+  j["moves"] = s.moves;
+  j["pulses_x"] = s.pulses_x;
+  j["pulses_y"] = s.pulses_y;
+  j["points"] = s.points;
+  j["max_dev"] = s.max_dev;
+  j["max_dev_at"] = {s.max_dev_at.x, s.max_dev_at.y};
+  j["mean_dev"] = s.mean_dev;
+  j["bits"] = plan.spec.bits;
+  j["preload"] = to_string(plan.spec.preload);
+  os << j.dump(1) << '\n';
+}
+
+}  // namespace dda

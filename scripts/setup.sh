@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Install the Debian packages this project builds and tests with, if any is missing.
+# Safe to run again: it asks apt only when a package is absent.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
+  catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
+  z3 librsvg2-bin
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

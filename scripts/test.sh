@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Install what is missing, build, and run the whole default test suite through ctest.
+# Longer regressions are separate scripts (see README, "Regressions").
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${DDA_BUILD_DIR:-$root/build}
+"$root/scripts/build.sh"
+cd "$build"
+ctest --output-on-failure -j "$(nproc)" "$@"

@@ -1,0 +1,6 @@
+#pragma once
+
+namespace dda::cli {
+// The whole `dda` command; returns the process exit status.
+int main(int argc, char** argv);
+}  // namespace dda::cli

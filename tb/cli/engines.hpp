@@ -1,0 +1,20 @@
+// Engines the `dda` command can run: each turns a Plan into Iteration records
+// sampled from its own state (golden model, SystemC model, Verilated RTL).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dda/golden.hpp"
+
+namespace dda::cli {
+
+struct EngineOptions {
+  std::string vcd;  // waveform file, empty for none
+};
+using EngineFn = std::vector<Iteration> (*)(const Plan&, const EngineOptions&);
+
+EngineFn find_engine(const std::string& name);
+std::string engine_names();
+
+}  // namespace dda::cli

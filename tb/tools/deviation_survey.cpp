@@ -1,0 +1,48 @@
+// Measures the golden model's drift: for random arcs (the property tests' distribution),
+// the largest distance of a path point from the ellipse minus the start-offset term
+// |r - 1| * max(a, b), binned by the larger semi-axis, per preload, next to the
+// documented deviation_bound() drift term E. Prints a table; asserts nothing.
+//   usage: deviation_survey [seed] [arcs]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+#include "dda/golden.hpp"
+#include "dda_random.hpp"
+
+using namespace dda;
+
+int main(int argc, char** argv) {
+  const std::uint64_t seed = argc > 1 ? std::strtoull(argv[1], nullptr, 0) : 1;
+  const int arcs = argc > 2 ? std::atoi(argv[2]) : 20000;
+  RandomArcs gen(seed, 4096);
+  struct Bin { double worst[2] = {0, 0}; double bound[2] = {1e9, 1e9}; int n = 0; };
+  std::map<int, Bin> bins;
+  for (int i = 0; i < arcs;) {
+    const auto plan = gen.next();
+    if (!plan) continue;
+    ++i;
+    const double a = double(plan->spec.a), b = double(plan->spec.b);
+    double worst = 0;
+    run(*plan, [&](const Iteration& it) {
+      if (it.step_x || it.step_y) worst = std::max(worst, ellipse_distance(a, b, double(it.pos.x), double(it.pos.y)));
+    });
+    const double x0 = double(plan->from.x) / a, y0 = double(plan->from.y) / b;
+    const double offset = std::fabs(std::sqrt(x0 * x0 + y0 * y0) - 1.0) * std::max(a, b);
+    const int k = plan->spec.preload == Preload::Half;
+    Bin& bin = bins[int(std::floor(std::log2(std::max(a, b))))];
+    bin.worst[k] = std::max(bin.worst[k], worst - offset);
+    bin.bound[k] = std::min(bin.bound[k], deviation_bound(*plan) - offset);
+    ++bin.n;
+  }
+  std::printf("seed %llu, %d arcs (a, b log-uniform in [1, 4096], n = smallest..+8, random sub-arcs)\n",
+              static_cast<unsigned long long>(seed), arcs);
+  std::printf("| max(a,b) in | arcs | zero: worst drift | zero: E | half: worst drift | half: E |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  for (const auto& [k, bin] : bins) {
+    std::printf("| [%d, %d) | %d | %.3f | %.3f | %.3f | %.3f |\n", 1 << k, 2 << k, bin.n,
+                bin.worst[0], bin.bound[0], bin.worst[1], bin.bound[1]);
+  }
+  return 0;
+}

@@ -1,0 +1,223 @@
+// The `dda` command as a user runs it: outputs, exit status, error messages, files.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+// A scratch directory per test case, removed afterwards.
+struct Scratch {
+  fs::path dir;
+  Scratch() {
+    dir = fs::temp_directory_path() / ("dda_cli_test_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() { fs::remove_all(dir); }
+  // Files in the directory other than the captured stdout/stderr.
+  int user_files() const {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const auto name = e.path().filename().string();
+      n += name != "stdout" && name != "stderr";
+    }
+    return n;
+  }
+};
+
+Result dda(const Scratch& s, const std::string& args) {
+  const std::string cmd = std::string(DDA_BIN) + " " + args + " >" + (s.dir / "stdout").string() +
+                          " 2>" + (s.dir / "stderr").string();
+  const int rc = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.out = slurp(s.dir / "stdout");
+  r.err = slurp(s.dir / "stderr");
+  return r;
+}
+
+const std::string kPaper = "--a 10 --b 6 --bits 4";
+
+// Bad input: status 2, one line on stderr naming the value and the rule, nothing written.
+void expect_usage_error(const std::string& args, const std::string& needle) {
+  Scratch s;
+  const fs::path out = s.dir / "out.txt";
+  const Result r = dda(s, args + " --out " + out.string());
+  INFO("dda " << args << "\nstderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.rfind("dda: error: ", 0) == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(r.err.find(needle) != std::string::npos);
+  CHECK(s.user_files() == 0);
+}
+
+}  // namespace
+
+TEST_CASE("cli: trace csv of the paper's example is byte-identical to the spec", "[cli]") {
+  Scratch s;
+  const Result r = dda(s, "trace " + kPaper + " --format csv");
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));
+}
+
+TEST_CASE("cli: --out writes the same bytes to a file", "[cli]") {
+  Scratch s;
+  const fs::path out = s.dir / "t.csv";
+  const Result r = dda(s, "trace " + kPaper + " --out " + out.string());
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(slurp(out) == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));
+  CHECK(s.user_files() == 1);  // no temporary file left behind
+}
+
+TEST_CASE("cli: trace table prints row 0 and the rows with a pulse", "[cli]") {
+  Scratch s;
+  const Result r = dda(s, "trace " + kPaper + " --format table");
+  CHECK(r.status == 0);
+  std::istringstream is(r.out);
+  std::string line;
+  int rows = 0;
+  while (std::getline(is, line)) rows += line.rfind("| ", 0) == 0 && line.find("iter") == std::string::npos;
+  CHECK(rows == 16);  // row 0 + 15 iterations with a pulse
+  CHECK(r.out.find("|    27 |    10.0000 |    24.3333 |  1 |     0 |") != std::string::npos);
+  CHECK(r.out.find("stopped") != std::string::npos);
+}
+
+TEST_CASE("cli: trace json holds the full records", "[cli]") {
+  Scratch s;
+  const Result r = dda(s, "trace " + kPaper + " --format json");
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["cap"] == 960);
+  CHECK(j["scale"] == 60);
+  REQUIRE(j["iterations"].size() == 27);
+  const auto& last = j["iterations"][26];
+  CHECK(last["iter"] == 27);
+  CHECK(last["sum_x"] == 1460);
+  CHECK(last["step_x"] == true);
+  CHECK(last["x"] == 0);
+  CHECK(last["y"] == 6);
+}
+
+TEST_CASE("cli: path of the paper's example", "[cli]") {
+  Scratch s;
+  const Result r = dda(s, "path " + kPaper + " --format csv");
+  CHECK(r.status == 0);
+  CHECK(r.out ==
+        "point,x,y\n0,10,0\n1,10,1\n2,10,2\n3,10,3\n4,9,3\n5,9,4\n6,8,4\n7,7,5\n8,6,5\n9,6,6\n"
+        "10,5,6\n11,4,6\n12,3,6\n13,2,6\n14,1,6\n15,0,6\n");
+}
+
+TEST_CASE("cli: stats of the paper's example", "[cli]") {
+  Scratch s;
+  Result r = dda(s, "stats " + kPaper);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("iterations: 27\n") != std::string::npos);
+  CHECK(r.out.find("moves: 15\n") != std::string::npos);
+  CHECK(r.out.find("pulses_x: 10\n") != std::string::npos);
+  CHECK(r.out.find("pulses_y: 6\n") != std::string::npos);
+  CHECK(r.out.find("points: 16\n") != std::string::npos);
+  CHECK(r.out.find("max_dev: 1.10") != std::string::npos);
+  CHECK(r.out.find(" at (6,6)\n") != std::string::npos);
+  CHECK(r.out.find("mean_dev: ") != std::string::npos);
+  r = dda(s, "stats " + kPaper + " --format json");
+  CHECK(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["moves"] == 15);
+  CHECK(j["max_dev_at"] == nlohmann::json::array({6, 6}));
+  CHECK(j["max_dev"].get<double>() == Approx(1.104).margin(5e-4));
+}
+
+TEST_CASE("cli: bad semi-axes", "[cli][errors]") {
+  expect_usage_error("trace --a 0 --b 6 --bits 4", "a = 0 is invalid: a semi-axis must be a positive integer");
+  expect_usage_error("trace --a -3 --b 6 --bits 4", "a = -3 is invalid");
+  expect_usage_error("trace --a 2.5 --b 6 --bits 4", "a = '2.5' is invalid: a semi-axis must be a positive integer");
+  expect_usage_error("path --a 10 --b x --bits 4", "b = 'x' is invalid");
+  expect_usage_error("stats --a 10 --b 0 --bits 4", "b = 0 is invalid");
+  expect_usage_error("stats --a 4000000000 --b 4000000000 --bits 32", "out of range");
+}
+
+TEST_CASE("cli: bad accumulator width", "[cli][errors]") {
+  expect_usage_error("trace --a 10 --b 6 --bits 3", "bits = 3 is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is 4)");
+  expect_usage_error("trace --a 10 --b 6 --bits 0", "bits = 0 is invalid");
+  expect_usage_error("trace --a 10 --b 6 --bits four", "bits = 'four' is invalid");
+  expect_usage_error("trace --a 16 --b 2 --bits 4 --to 0,3", "bits = 4 is too small for this arc");
+}
+
+TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "[cli][errors]") {
+  expect_usage_error("trace " + kPaper + " --from 3,0", "from point (3,0) is 5.5621 steps from the ellipse: start and end must lie within 1.0000 step of it");
+  expect_usage_error("path " + kPaper + " --to 0,8", "to point (0,8) is 2.0000 steps from the ellipse");
+  expect_usage_error("trace " + kPaper + " --from 0,6 --to 10,0", "to (10,0) comes before from (0,6)");
+  expect_usage_error("trace " + kPaper + " --from 10,0 --to 10,0", "a full ellipse (from == to) is not supported yet");
+  expect_usage_error("trace " + kPaper + " --from -10,0", "outside quadrant I");
+  expect_usage_error("trace " + kPaper + " --from 9,3 --to 0,7",
+                     "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
+  expect_usage_error("trace " + kPaper + " --from 10,0 --to 9,0", "end point (9,0) is unreachable");
+  expect_usage_error("trace " + kPaper + " --from 1,2,3", "from = '1,2,3' is invalid: a point is two integers X,Y");
+  expect_usage_error("trace " + kPaper + " --to abc", "to = 'abc' is invalid");
+}
+
+TEST_CASE("cli: bad options", "[cli][errors]") {
+  expect_usage_error("trace " + kPaper + " --preload full", "preload = 'full' is invalid: use zero or half");
+  expect_usage_error("trace " + kPaper + " --format xml", "format = 'xml' is invalid: use one of csv, json, table");
+  expect_usage_error("stats " + kPaper + " --format csv", "format = 'csv' is invalid");
+  expect_usage_error("trace " + kPaper + " --engine spice", "engine = 'spice' is invalid");
+  expect_usage_error("trace " + kPaper + " --frobnicate 1", "frobnicate");
+  expect_usage_error("trace --b 6 --bits 4", "--a is required");
+  expect_usage_error("nosuchcommand", "command 'nosuchcommand' is unknown: use one of trace, path, stats");
+}
+
+TEST_CASE("cli: I/O failure exits 1 and leaves no file", "[cli][errors]") {
+  Scratch s;
+  const Result r = dda(s, "trace " + kPaper + " --out " + (s.dir / "no" / "such" / "dir.csv").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.rfind("dda: error: cannot write", 0) == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(s.user_files() == 0);
+}
+
+TEST_CASE("cli: an existing output file is replaced only on success", "[cli][errors]") {
+  Scratch s;
+  const fs::path out = s.dir / "keep.csv";
+  std::ofstream(out) << "previous\n";
+  const Result r = dda(s, "trace --a 10 --b 6 --bits 3 --out " + out.string());
+  CHECK(r.status == 2);
+  CHECK(slurp(out) == "previous\n");
+}
+
+TEST_CASE("cli: help and version exit 0", "[cli]") {
+  Scratch s;
+  Result r = dda(s, "--help");
+  CHECK(r.status == 0);
+  CHECK(r.out.find("trace") != std::string::npos);
+  r = dda(s, "trace --help");
+  CHECK(r.status == 0);
+  CHECK(r.out.find("--preload") != std::string::npos);
+  r = dda(s, "--version");
+  CHECK(r.status == 0);
+}

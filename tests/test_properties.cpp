@@ -1,0 +1,120 @@
+// Property tests over random configurations of the golden model.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "dda/golden.hpp"
+#include "dda_random.hpp"
+
+using namespace dda;
+
+namespace {
+
+// Checks every documented invariant of one run; returns the first violation or "".
+std::string check_run(const Plan& plan) {
+  std::ostringstream err;
+  Point prev = plan.from;
+  const auto a = double(plan.spec.a), b = double(plan.spec.b);
+  const double bound = deviation_bound(plan);
+  const auto dev = [&](Point p) { return ellipse_distance(a, b, double(p.x), double(p.y)); };
+  if (dev(plan.from) > bound) err << "start point deviates " << dev(plan.from);
+  try {
+    const RunSummary s = run(plan, [&](const Iteration& it) {
+      if (!err.str().empty()) return;
+      const auto& r = it.after;
+      if (r.jr_x < 0 || r.jr_x >= plan.cmd.cap || r.jr_y < 0 || r.jr_y >= plan.cmd.cap) {
+        err << "iteration " << it.iter << ": accumulator outside [0, cap) after overflow removal";
+      }
+      if (std::llabs(it.pos.x - prev.x) > 1 || std::llabs(it.pos.y - prev.y) > 1) {
+        err << "iteration " << it.iter << ": moved more than one step on an axis";
+      }
+      if (it.step_x || it.step_y) {
+        const double d = dev(it.pos);
+        if (d > bound) {
+          err << "iteration " << it.iter << ": point (" << it.pos.x << ',' << it.pos.y
+              << ") deviates " << d << " > bound " << bound;
+        }
+      }
+      prev = it.pos;
+    });
+    if (err.str().empty() && s.iterations > plan.iteration_bound) err << "iteration bound passed";
+    if (err.str().empty() && s.end != plan.to) err << "did not end at the end point";
+  } catch (const GuardError& e) {
+    err << "guard: " << e.what();
+  }
+  return err.str();
+}
+
+}  // namespace
+
+TEST_CASE("properties: 10,000 random configurations hold every invariant", "[golden][random]") {
+  const std::uint64_t seed = test_seed(20261122);
+  RandomArcs gen(seed, 4096);
+  int checked = 0, non_default = 0;
+  while (checked < 10000) {
+    const auto drawn = gen.next();
+    if (!drawn) continue;
+    const Plan& plan = *drawn;
+    non_default += !(plan.from == Point{plan.spec.a, 0} && plan.to == Point{0, plan.spec.b});
+    const std::string err = check_run(plan);
+    if (!err.empty()) {
+      FAIL("seed " << seed << ", case " << checked << ": " << describe(plan) << ": " << err);
+    }
+    ++checked;
+  }
+  INFO("seed " << seed << ", rejected draws " << gen.rejected());
+  CHECK(non_default > 5000);
+  CHECK(gen.rejected() < 2000);
+}
+
+TEST_CASE("properties: a wrong variant (integrands not corrected) breaks them", "[golden][random]") {
+  // Built only here: the command of a correct plan with one integrand correction
+  // removed, as if the hardware forgot to update JVY after an X step. Arcs of at least
+  // 16 steps on each axis, where a lost correction has room to show.
+  const std::uint64_t seed = test_seed(7);
+  RandomArcs gen(seed, 4096);
+  int broken = 0, tried = 0;
+  while (tried < 200) {
+    auto drawn = gen.next();
+    if (!drawn || drawn->cmd.cnt_x < 16 || drawn->cmd.cnt_y < 16) continue;
+    Plan plan = *drawn;
+    REQUIRE(check_run(plan).empty());
+    plan.cmd.inc_y_on_x = 0;
+    ++tried;
+    broken += !check_run(plan).empty();
+  }
+  INFO("seed " << seed << ": " << broken << " of " << tried << " broken runs caught");
+  CHECK(broken >= 100);
+  // The paper's example with no integrand corrected at all: X never starts (stall).
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  Plan paper = plan_arc(s);
+  paper.cmd.inc_y_on_x = 0;
+  paper.cmd.inc_x_on_y = 0;
+  CHECK_FALSE(check_run(paper).empty());
+}
+
+TEST_CASE("properties: iteration bound is not passed by the worst-case shapes", "[golden]") {
+  for (std::int64_t a : {1, 2, 3, 4095, 4096}) {
+    for (std::int64_t b : {1, 2, 3, 4095, 4096}) {
+      const int n0 = smallest_valid_bits(a, b);
+      for (int n : {n0, n0 + 8}) {
+        for (Preload p : {Preload::Zero, Preload::Half}) {
+          ArcSpec s;
+          s.a = a;
+          s.b = b;
+          s.bits = n;
+          s.preload = p;
+          const Plan plan = plan_arc(s);
+          INFO(describe(plan));
+          CHECK(check_run(plan).empty());
+        }
+      }
+    }
+  }
+}
