@@ -221,3 +221,32 @@ TEST_CASE("cli: help and version exit 0", "[cli]") {
   r = dda(s, "--version");
   CHECK(r.status == 0);
 }
+
+TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]") {
+  Scratch s;
+  for (const std::string engine : {"systemc"}) {
+    INFO("engine " << engine);
+    for (const std::string sub : {"trace --format csv", "trace --format json", "path", "stats"}) {
+      for (const std::string& arc : {kPaper, std::string("--a 37 --b 900 --bits 14 --preload half --from 30,526 --to 3,898")}) {
+        INFO(sub << ' ' << arc);
+        const Result g = dda(s, sub + " " + arc + " --engine golden");
+        const Result e = dda(s, sub + " " + arc + " --engine " + engine);
+        CHECK(g.status == 0);
+        CHECK(e.status == 0);
+        CHECK(e.err.empty());
+        CHECK(e.out == g.out);
+      }
+    }
+  }
+}
+
+TEST_CASE("cli: --vcd writes the systemc waveform, and is refused for golden", "[cli][engines]") {
+  Scratch s;
+  const fs::path vcd = s.dir / "run.vcd";
+  const Result r = dda(s, "trace " + kPaper + " --engine systemc --vcd " + vcd.string());
+  CHECK(r.status == 0);
+  const std::string v = slurp(vcd);
+  CHECK(v.find("$scope module u_int_x $end") != std::string::npos);
+  CHECK(v.find(" jr_q ") != std::string::npos);
+  expect_usage_error("trace " + kPaper + " --vcd x.vcd", "--vcd is invalid with engine golden");
+}

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "dda/golden.hpp"
+#include "dda/hw_params.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
 
@@ -164,6 +165,10 @@ int main(int argc, char** argv) {
   add_arc_options(path, pa, "csv or json", "csv");
   auto* stats = app.add_subcommand("stats", "counts and deviation from the ideal ellipse");
   add_arc_options(stats, st, "text or json", "text");
+  std::string gp_kind = "verilog", gp_out;
+  auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
+  gen->add_option("--kind", gp_kind, "verilog (rtl/dda_params.vh) or markdown (docs/design.md tables)");
+  gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
@@ -214,6 +219,11 @@ int main(int argc, char** argv) {
       const auto iters = run_engine(st, plan);
       Output out(st.out);
       write_stats(out.stream(), plan, compute_stats(plan, iters), fmt);
+      out.commit();
+    } else if (gen->parsed()) {
+      const bool verilog = parse_enum<bool>("kind", gp_kind, {{"verilog", true}, {"markdown", false}});
+      Output out(gp_out);
+      out.stream() << (verilog ? hw::verilog_header() : hw::markdown_tables());
       out.commit();
     }
   } catch (const InputError& e) {

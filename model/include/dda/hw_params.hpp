@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace dda::hw {
@@ -67,5 +68,38 @@ constexpr int cmd_offset(std::string_view name) {
   return -1;
 }
 inline constexpr int kCmdWidth = cmd_width();
+
+// Architectural registers: the state the scoreboards compare after every iteration
+// (hierarchical names as in the RTL and the SystemC model).
+struct Reg {
+  std::string_view name;
+  int width;
+  std::string_view meaning;
+};
+inline constexpr std::array<Reg, 19> kRegisters{{
+    {"u_int_x.jv_q", kAccWidth, "X integrand"},
+    {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)"},
+    {"u_int_x.inc_on_x_q", kAccWidth, "added to the X integrand after an X step"},
+    {"u_int_x.inc_on_y_q", kAccWidth, "added to the X integrand after a Y step"},
+    {"u_int_y.jv_q", kAccWidth, "Y integrand"},
+    {"u_int_y.jr_q", kAccWidth, "Y accumulator (after overflow removal)"},
+    {"u_int_y.inc_on_x_q", kAccWidth, "added to the Y integrand after an X step"},
+    {"u_int_y.inc_on_y_q", kAccWidth, "added to the Y integrand after a Y step"},
+    {"u_cnt_x.cnt_q", kCntWidth, "X steps still owed"},
+    {"u_cnt_y.cnt_q", kCntWidth, "Y steps still owed"},
+    {"cap_q", kAccWidth, "accumulator capacity"},
+    {"dir_x_q", 1, "X direction (drives dir_x_o)"},
+    {"dir_y_q", 1, "Y direction (drives dir_y_o)"},
+    {"step_x_q", 1, "X step pulse (drives step_x_o)"},
+    {"step_y_q", 1, "Y step pulse (drives step_y_o)"},
+    {"u_ctrl.state_q", kStateWidth, "control state: 0 idle, 1 run"},
+    {"u_ctrl.done_q", 1, "arc finished (drives done_o, one cycle)"},
+    {"u_ctrl.err_q", 1, "arc aborted on a stall (drives err_o, one cycle)"},
+    {"u_ctrl.iter_q", 1, "an iteration happened on the last edge (drives iter_o)"},
+}};
+
+// Text generated from the definitions above (model/src/hw_params.cpp).
+std::string verilog_header();   // rtl/dda_params.vh
+std::string markdown_tables();  // the tables in docs/design.md
 
 }  // namespace dda::hw

@@ -1,0 +1,24 @@
+// The golden model's Command as the hardware's command word (fields of hw_params.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "dda/golden.hpp"
+#include "dda/hw_params.hpp"
+
+namespace dda::hw {
+
+// Field values in kCmdFields order, each masked to its width (increments in two's
+// complement). Throws InputError naming the field if a value does not fit the
+// hardware's widths (the golden model itself has wider, 64-bit, limits).
+std::array<std::uint64_t, kCmdFields.size()> command_fields(const Command& c);
+
+// The command word as 32-bit words, least significant first (Verilator's layout).
+std::vector<std::uint32_t> pack_command(const Command& c);
+
+// Largest semi-axis the default widths support at the smallest valid n (+ extra bits).
+std::int64_t max_semi_axis(int extra_bits);
+
+}  // namespace dda::hw

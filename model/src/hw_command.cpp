@@ -1,0 +1,80 @@
+#include "dda/hw_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace dda::hw {
+
+namespace {
+
+std::uint64_t unsigned_field(const char* name, std::int64_t v, int width) {
+  const std::uint64_t max = width >= 64 ? ~0ull : (std::uint64_t{1} << width) - 1;
+  if (v < 0 || static_cast<std::uint64_t>(v) > max) {
+    throw InputError(std::string(name) + " = " + std::to_string(v) + " does not fit the hardware's " +
+                     std::to_string(width) + "-bit field (hw_params.hpp)");
+  }
+  return static_cast<std::uint64_t>(v);
+}
+
+std::uint64_t signed_field(const char* name, std::int64_t v, int width) {
+  const std::int64_t lim = std::int64_t{1} << (width - 1);
+  if (v < -lim || v >= lim) {
+    throw InputError(std::string(name) + " = " + std::to_string(v) + " does not fit the hardware's " +
+                     std::to_string(width) + "-bit two's complement field (hw_params.hpp)");
+  }
+  return static_cast<std::uint64_t>(v) & ((std::uint64_t{1} << width) - 1);
+}
+
+}  // namespace
+
+std::array<std::uint64_t, kCmdFields.size()> command_fields(const Command& c) {
+  // The sum jr + jv of an integrator is AccWidth + 1 bits, so cap, jv, jr < 2^AccWidth.
+  return {
+      unsigned_field("jv_x", c.jv_x, kAccWidth),
+      unsigned_field("jv_y", c.jv_y, kAccWidth),
+      unsigned_field("jr_x", c.jr_x, kAccWidth),
+      unsigned_field("jr_y", c.jr_y, kAccWidth),
+      unsigned_field("cap", c.cap, kAccWidth),
+      unsigned_field("cnt_x", c.cnt_x, kCntWidth),
+      unsigned_field("cnt_y", c.cnt_y, kCntWidth),
+      c.dir_x_neg ? kDirNeg : kDirPos,
+      c.dir_y_neg ? kDirNeg : kDirPos,
+      signed_field("inc_x_on_x", c.inc_x_on_x, kAccWidth),
+      signed_field("inc_x_on_y", c.inc_x_on_y, kAccWidth),
+      signed_field("inc_y_on_x", c.inc_y_on_x, kAccWidth),
+      signed_field("inc_y_on_y", c.inc_y_on_y, kAccWidth),
+  };
+}
+
+std::vector<std::uint32_t> pack_command(const Command& c) {
+  const auto v = command_fields(c);
+  std::vector<std::uint32_t> w((kCmdWidth + 31) / 32, 0);
+  int bit = 0;
+  for (std::size_t i = 0; i < kCmdFields.size(); ++i) {
+    for (int k = 0; k < kCmdFields[i].width; ++k, ++bit) {
+      if ((v[i] >> k) & 1u) w[bit / 32] |= 1u << (bit % 32);
+    }
+  }
+  return w;
+}
+
+std::int64_t max_semi_axis(int extra_bits) {
+  // Largest m such that a = b = m (the worst case) fits: cap = 2^n * m^2 < 2^AccWidth
+  // with n = smallest_valid_bits(m) + extra_bits, and a quarter arc's m steps fit the
+  // counters. For m in (2^(k-1), 2^k] the smallest valid n is k.
+  std::int64_t best = 1;
+  for (int k = 1; k < 31; ++k) {
+    const int n = k + extra_bits;
+    if (n >= kAccWidth) break;
+    const std::uint64_t room = (std::uint64_t{1} << (kAccWidth - n)) - 1;  // m^2 <= room
+    auto m = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(room)));
+    while (m * m > room) --m;
+    while ((m + 1) * (m + 1) <= room) ++m;
+    m = std::min(m, std::uint64_t{1} << k);
+    if (m > (std::uint64_t{1} << (k - 1))) best = std::max<std::int64_t>(best, std::int64_t(m));
+  }
+  return std::min<std::int64_t>(best, std::int64_t(kCntMax));
+}
+
+}  // namespace dda::hw

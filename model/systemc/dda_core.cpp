@@ -1,0 +1,157 @@
+#include "dda_core.h"
+
+namespace dda::sc {
+
+namespace {
+template <typename T>
+T field(const cmd_t& cmd, std::string_view name) {
+  const int lsb = hw::cmd_offset(name);
+  int width = 0;
+  for (const auto& f : hw::kCmdFields) {
+    if (f.name == name) width = f.width;
+  }
+  return T(cmd.range(lsb + width - 1, lsb).to_uint64());
+}
+}  // namespace
+
+dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrator)
+    : sc_core::sc_module(name) {
+  if (!make_integrator) {
+    make_integrator = [](const char* n) { return std::make_unique<dda_integrator>(n); };
+  }
+  u_int_x = make_integrator("u_int_x");
+  u_int_y = make_integrator("u_int_y");
+
+  for (auto* integ : {u_int_x.get(), u_int_y.get()}) {
+    integ->clk_i(clk_i);
+    integ->rst_ni(rst_ni);
+    integ->load_i(load);
+    integ->iterate_i(iterate);
+    integ->cap_i(cap_q);
+    integ->ovf_x_i(ovf_x);
+    integ->ovf_y_i(ovf_y);
+  }
+  u_int_x->active_i(active_x);
+  u_int_x->cmd_jv_i(cmd_jv_x);
+  u_int_x->cmd_jr_i(cmd_jr_x);
+  u_int_x->cmd_inc_on_x_i(cmd_inc_x_on_x);
+  u_int_x->cmd_inc_on_y_i(cmd_inc_x_on_y);
+  u_int_x->ovf_o(ovf_x);
+  u_int_x->jv_nz_o(jv_nz_x);
+  u_int_y->active_i(active_y);
+  u_int_y->cmd_jv_i(cmd_jv_y);
+  u_int_y->cmd_jr_i(cmd_jr_y);
+  u_int_y->cmd_inc_on_x_i(cmd_inc_y_on_x);
+  u_int_y->cmd_inc_on_y_i(cmd_inc_y_on_y);
+  u_int_y->ovf_o(ovf_y);
+  u_int_y->jv_nz_o(jv_nz_y);
+
+  u_cnt_x.clk_i(clk_i);
+  u_cnt_x.rst_ni(rst_ni);
+  u_cnt_x.load_i(load);
+  u_cnt_x.iterate_i(iterate);
+  u_cnt_x.cmd_cnt_i(cmd_cnt_x);
+  u_cnt_x.ovf_i(ovf_x);
+  u_cnt_x.active_o(active_x);
+  u_cnt_x.last_o(last_x);
+  u_cnt_y.clk_i(clk_i);
+  u_cnt_y.rst_ni(rst_ni);
+  u_cnt_y.load_i(load);
+  u_cnt_y.iterate_i(iterate);
+  u_cnt_y.cmd_cnt_i(cmd_cnt_y);
+  u_cnt_y.ovf_i(ovf_y);
+  u_cnt_y.active_o(active_y);
+  u_cnt_y.last_o(last_y);
+
+  u_ctrl.clk_i(clk_i);
+  u_ctrl.rst_ni(rst_ni);
+  u_ctrl.cmd_valid_i(cmd_valid_i);
+  u_ctrl.ce_i(ce_i);
+  u_ctrl.active_x_i(active_x);
+  u_ctrl.active_y_i(active_y);
+  u_ctrl.jv_nz_x_i(jv_nz_x);
+  u_ctrl.jv_nz_y_i(jv_nz_y);
+  u_ctrl.last_x_i(last_x);
+  u_ctrl.last_y_i(last_y);
+  u_ctrl.cmd_ready_o(cmd_ready_o);
+  u_ctrl.load_o(load);
+  u_ctrl.iterate_o(iterate);
+  u_ctrl.busy_o(busy_o);
+
+  SC_METHOD(decode);
+  sensitive << cmd_i;
+  SC_METHOD(seq);
+  sensitive << clk_i.pos();
+  dont_initialize();
+  SC_METHOD(outputs);
+  sensitive << step_x_q << step_y_q << dir_x_q << dir_y_q << u_ctrl.done_q << u_ctrl.err_q
+            << u_ctrl.iter_q;
+}
+
+void dda_core::decode() {
+  const cmd_t c = cmd_i.read();
+  cmd_jv_x.write(field<acc_t>(c, "jv_x"));
+  cmd_jv_y.write(field<acc_t>(c, "jv_y"));
+  cmd_jr_x.write(field<acc_t>(c, "jr_x"));
+  cmd_jr_y.write(field<acc_t>(c, "jr_y"));
+  cmd_cap.write(field<acc_t>(c, "cap"));
+  cmd_cnt_x.write(field<cnt_t>(c, "cnt_x"));
+  cmd_cnt_y.write(field<cnt_t>(c, "cnt_y"));
+  cmd_dir_x.write(field<unsigned>(c, "dir_x") != 0);
+  cmd_dir_y.write(field<unsigned>(c, "dir_y") != 0);
+  cmd_inc_x_on_x.write(field<acc_t>(c, "inc_x_on_x"));
+  cmd_inc_x_on_y.write(field<acc_t>(c, "inc_x_on_y"));
+  cmd_inc_y_on_x.write(field<acc_t>(c, "inc_y_on_x"));
+  cmd_inc_y_on_y.write(field<acc_t>(c, "inc_y_on_y"));
+}
+
+void dda_core::seq() {
+  if (!rst_ni.read()) {
+    cap_q.write(0);
+    dir_x_q.write(false);
+    dir_y_q.write(false);
+    step_x_q.write(false);
+    step_y_q.write(false);
+    return;
+  }
+  if (load.read()) {
+    cap_q.write(cmd_cap.read());
+    dir_x_q.write(cmd_dir_x.read());
+    dir_y_q.write(cmd_dir_y.read());
+  }
+  step_x_q.write(iterate.read() && ovf_x.read());
+  step_y_q.write(iterate.read() && ovf_y.read());
+}
+
+void dda_core::outputs() {
+  step_x_o.write(step_x_q.read());
+  step_y_o.write(step_y_q.read());
+  dir_x_o.write(dir_x_q.read());
+  dir_y_o.write(dir_y_q.read());
+  done_o.write(u_ctrl.done_q.read());
+  err_o.write(u_ctrl.err_q.read());
+  iter_o.write(u_ctrl.iter_q.read());
+}
+
+void dda_core::trace(sc_core::sc_trace_file* tf) const {
+  sc_core::sc_trace(tf, clk_i, "clk_i");
+  sc_core::sc_trace(tf, rst_ni, "rst_ni");
+  sc_core::sc_trace(tf, ce_i, "ce_i");
+  sc_core::sc_trace(tf, cmd_valid_i, "cmd_valid_i");
+  sc_core::sc_trace(tf, cmd_ready_o, "cmd_ready_o");
+  sc_core::sc_trace(tf, cap_q, "cap_q");
+  sc_core::sc_trace(tf, dir_x_q, "dir_x_q");
+  sc_core::sc_trace(tf, dir_y_q, "dir_y_q");
+  sc_core::sc_trace(tf, step_x_q, "step_x_q");
+  sc_core::sc_trace(tf, step_y_q, "step_y_q");
+  sc_core::sc_trace(tf, busy_o, "busy_o");
+  sc_core::sc_trace(tf, load, "load");
+  sc_core::sc_trace(tf, iterate, "iterate");
+  u_int_x->trace(tf, "u_int_x");
+  u_int_y->trace(tf, "u_int_y");
+  u_cnt_x.trace(tf, "u_cnt_x");
+  u_cnt_y.trace(tf, "u_cnt_y");
+  u_ctrl.trace(tf, "u_ctrl");
+}
+
+}  // namespace dda::sc

@@ -1,0 +1,65 @@
+#include "dda_ctrl.h"
+
+namespace dda::sc {
+
+namespace {
+constexpr unsigned kIdle = unsigned(hw::State::Idle);
+constexpr unsigned kRun = unsigned(hw::State::Run);
+}  // namespace
+
+void dda_ctrl::comb() {
+  const bool idle = state_q.read() == kIdle;
+  const bool ax = active_x_i.read(), ay = active_y_i.read();
+  const bool fin = !ax && !ay;
+  const bool st = !fin && !(ax && jv_nz_x_i.read()) && !(ay && jv_nz_y_i.read());
+  finished.write(fin);
+  stall.write(st);
+  cmd_ready_o.write(idle);
+  busy_o.write(!idle);
+  load_o.write(idle && cmd_valid_i.read());
+  iterate_o.write(!idle && ce_i.read() && !fin && !st);
+}
+
+void dda_ctrl::seq() {
+  if (!rst_ni.read()) {
+    state_q.write(kIdle);
+    done_q.write(false);
+    err_q.write(false);
+    iter_q.write(false);
+    return;
+  }
+  bool done = false, err = false, iter = false;
+  unsigned state = state_q.read();
+  if (state == kIdle) {
+    if (cmd_valid_i.read()) state = kRun;
+  } else if (ce_i.read()) {
+    if (finished.read()) {
+      state = kIdle;
+      done = true;
+    } else if (stall.read()) {
+      state = kIdle;
+      err = true;
+    } else {
+      iter = true;
+      if (last_x_i.read() && last_y_i.read()) {
+        state = kIdle;
+        done = true;
+      }
+    }
+  }
+  state_q.write(state);
+  done_q.write(done);
+  err_q.write(err);
+  iter_q.write(iter);
+}
+
+void dda_ctrl::trace(sc_core::sc_trace_file* tf, const std::string& p) const {
+  sc_core::sc_trace(tf, state_q, p + ".state_q");
+  sc_core::sc_trace(tf, done_q, p + ".done_q");
+  sc_core::sc_trace(tf, err_q, p + ".err_q");
+  sc_core::sc_trace(tf, iter_q, p + ".iter_q");
+  sc_core::sc_trace(tf, finished, p + ".finished");
+  sc_core::sc_trace(tf, stall, p + ".stall");
+}
+
+}  // namespace dda::sc

@@ -1,0 +1,114 @@
+#include "scoreboard.hpp"
+
+#include <sstream>
+
+#include "dda/hw_params.hpp"
+
+namespace dda {
+
+namespace {
+
+std::uint64_t hw_value(std::int64_t v) { return static_cast<std::uint64_t>(v) & hw::kAccMask; }
+
+}  // namespace
+
+bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, Iteration& rec) {
+  if (!post.iter) return false;
+  rec = Iteration{};
+  rec.iter = ++n_;
+  rec.active_x = pre.cnt_x != 0;
+  rec.active_y = pre.cnt_y != 0;
+  rec.jv_x = static_cast<std::int64_t>(pre.jv_x);
+  rec.jv_y = static_cast<std::int64_t>(pre.jv_y);
+  rec.sum_x = static_cast<std::int64_t>(rec.active_x ? pre.sum_x : pre.jr_x);
+  rec.sum_y = static_cast<std::int64_t>(rec.active_y ? pre.sum_y : pre.jr_y);
+  rec.step_x = post.step_x;
+  rec.step_y = post.step_y;
+  rec.after.jv_x = static_cast<std::int64_t>(post.jv_x);
+  rec.after.jv_y = static_cast<std::int64_t>(post.jv_y);
+  rec.after.jr_x = static_cast<std::int64_t>(post.jr_x);
+  rec.after.jr_y = static_cast<std::int64_t>(post.jr_y);
+  rec.after.cnt_x = static_cast<std::int64_t>(post.cnt_x);
+  rec.after.cnt_y = static_cast<std::int64_t>(post.cnt_y);
+  if (post.step_x) pos_.x += post.dir_x ? -1 : 1;
+  if (post.step_y) pos_.y += post.dir_y ? -1 : 1;
+  rec.pos = pos_;
+  return true;
+}
+
+Scoreboard::Scoreboard(const Plan& plan, std::string engine)
+    : plan_(plan), engine_(std::move(engine)), dp_(plan.cmd, plan.from) {}
+
+void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
+  if (dp_.done()) {
+    std::ostringstream m;
+    m << engine_ << ": iteration at cycle " << cycle << " after the golden run ended ("
+      << dp_.iterations() << " iterations)";
+    throw MismatchError(m.str());
+  }
+  const Iteration g = dp_.iterate();
+  struct Cmp {
+    const char* name;
+    std::uint64_t expect, got;
+  };
+  const Cmp regs[] = {
+      {"u_int_x.jr_q", hw_value(g.after.jr_x), post.jr_x},
+      {"u_int_y.jr_q", hw_value(g.after.jr_y), post.jr_y},
+      {"step_x_q", g.step_x, post.step_x},
+      {"step_y_q", g.step_y, post.step_y},
+      {"u_cnt_x.cnt_q", hw_value(g.after.cnt_x), post.cnt_x},
+      {"u_cnt_y.cnt_q", hw_value(g.after.cnt_y), post.cnt_y},
+      {"u_int_x.jv_q", hw_value(g.after.jv_x), post.jv_x},
+      {"u_int_y.jv_q", hw_value(g.after.jv_y), post.jv_y},
+      {"dir_x_q", plan_.cmd.dir_x_neg, post.dir_x},
+      {"dir_y_q", plan_.cmd.dir_y_neg, post.dir_y},
+      {"cap_q", hw_value(plan_.cmd.cap), post.cap},
+      {"u_ctrl.done_q", dp_.done(), post.done},
+  };
+  for (const auto& r : regs) {
+    if (r.expect != r.got) {
+      std::ostringstream m;
+      m << engine_ << " mismatch: register " << r.name << " at iteration " << g.iter << " (cycle "
+        << cycle << "): golden " << r.expect << ", " << engine_ << ' ' << r.got;
+      throw MismatchError(m.str());
+    }
+  }
+}
+
+void Scoreboard::on_done(std::uint64_t cycle) {
+  if (!dp_.done()) {
+    std::ostringstream m;
+    m << engine_ << " mismatch: done at cycle " << cycle << " after " << dp_.iterations()
+      << " iterations, but the golden run owes (" << dp_.regs().cnt_x << ", " << dp_.regs().cnt_y
+      << ") steps";
+    throw MismatchError(m.str());
+  }
+}
+
+std::string compare_samples(const CoreSample& a, const CoreSample& b) {
+  struct Cmp {
+    const char* name;
+    std::uint64_t x, y;
+  };
+  const Cmp regs[] = {
+      {"u_int_x.jv_q", a.jv_x, b.jv_x},   {"u_int_x.jr_q", a.jr_x, b.jr_x},
+      {"u_int_y.jv_q", a.jv_y, b.jv_y},   {"u_int_y.jr_q", a.jr_y, b.jr_y},
+      {"u_int_x.sum", a.sum_x, b.sum_x},  {"u_int_y.sum", a.sum_y, b.sum_y},
+      {"u_cnt_x.cnt_q", a.cnt_x, b.cnt_x}, {"u_cnt_y.cnt_q", a.cnt_y, b.cnt_y},
+      {"cap_q", a.cap, b.cap},            {"step_x_q", a.step_x, b.step_x},
+      {"step_y_q", a.step_y, b.step_y},   {"dir_x_q", a.dir_x, b.dir_x},
+      {"dir_y_q", a.dir_y, b.dir_y},      {"u_ctrl.state_q", a.state, b.state},
+      {"u_ctrl.done_q", a.done, b.done},  {"u_ctrl.err_q", a.err, b.err},
+      {"u_ctrl.iter_q", a.iter, b.iter},
+  };
+  for (const auto& r : regs) {
+    if (r.x != r.y) {
+      std::ostringstream m;
+      m << "register " << r.name << ": " << r.x << " vs " << r.y;
+      return m.str();
+    }
+  }
+  return "";
+}
+
+}  // namespace dda

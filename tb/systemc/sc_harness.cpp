@@ -1,0 +1,97 @@
+#include "sc_harness.hpp"
+
+namespace dda::sc {
+
+ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory) {
+  core_ = std::make_unique<dda_core>("dut", std::move(factory));
+  core_->clk_i(clk_);
+  core_->rst_ni(rst_n_);
+  core_->ce_i(ce_);
+  core_->cmd_valid_i(cmd_valid_);
+  core_->cmd_ready_o(cmd_ready_);
+  core_->cmd_i(cmd_);
+  core_->step_x_o(step_x_);
+  core_->dir_x_o(dir_x_);
+  core_->step_y_o(step_y_);
+  core_->dir_y_o(dir_y_);
+  core_->busy_o(busy_);
+  core_->done_o(done_);
+  core_->err_o(err_);
+  core_->iter_o(iter_);
+  if (!vcd.empty()) {
+    std::string base = vcd;
+    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0) base.resize(base.size() - 4);
+    tf_ = sc_core::sc_create_vcd_trace_file(base.c_str());
+    tf_->set_time_unit(1, sc_core::SC_NS);
+    core_->trace(tf_);
+    sc_core::sc_trace(tf_, step_x_, "step_x_o");
+    sc_core::sc_trace(tf_, dir_x_, "dir_x_o");
+    sc_core::sc_trace(tf_, step_y_, "step_y_o");
+    sc_core::sc_trace(tf_, dir_y_, "dir_y_o");
+    sc_core::sc_trace(tf_, done_, "done_o");
+    sc_core::sc_trace(tf_, err_, "err_o");
+    sc_core::sc_trace(tf_, iter_, "iter_o");
+  }
+}
+
+ScHarness::~ScHarness() { close_trace(); }
+
+void ScHarness::close_trace() {
+  if (tf_) {
+    sc_core::sc_close_vcd_trace_file(tf_);
+    tf_ = nullptr;
+  }
+}
+
+void ScHarness::set_command(bool valid, const std::vector<std::uint32_t>& words) {
+  cmd_valid_.write(valid);
+  if (!valid) return;
+  cmd_t c;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    for (int b = 0; b < 32 && int(i * 32) + b < hw::kCmdWidth; ++b) {
+      c[int(i * 32) + b] = bool((words[i] >> b) & 1u);
+    }
+  }
+  cmd_.write(c);
+}
+
+bool ScHarness::cmd_ready() {
+  // Let pending input writes and the combinational logic settle first.
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  started_ = true;
+  return cmd_ready_.read();
+}
+
+void ScHarness::tick() {
+  // The clock's rising edges are at 5, 15, 25, ... ns: one period moves over one edge.
+  sc_core::sc_start(10, sc_core::SC_NS);
+  started_ = true;
+  ++cycle_;
+}
+
+CoreSample ScHarness::sample() {
+  // Registers and the adders (which depend on registers only) have settled by the end
+  // of tick(); input writes since then cannot change them.
+  const dda_core& c = *core_;
+  CoreSample s;
+  s.jv_x = c.u_int_x->jv_q.read().to_uint64();
+  s.jr_x = c.u_int_x->jr_q.read().to_uint64();
+  s.sum_x = c.u_int_x->sum.read().to_uint64();
+  s.jv_y = c.u_int_y->jv_q.read().to_uint64();
+  s.jr_y = c.u_int_y->jr_q.read().to_uint64();
+  s.sum_y = c.u_int_y->sum.read().to_uint64();
+  s.cnt_x = c.u_cnt_x.cnt_q.read().to_uint64();
+  s.cnt_y = c.u_cnt_y.cnt_q.read().to_uint64();
+  s.cap = c.cap_q.read().to_uint64();
+  s.step_x = c.step_x_q.read();
+  s.step_y = c.step_y_q.read();
+  s.dir_x = c.dir_x_q.read();
+  s.dir_y = c.dir_y_q.read();
+  s.state = unsigned(c.u_ctrl.state_q.read().to_uint());
+  s.done = c.u_ctrl.done_q.read();
+  s.err = c.u_ctrl.err_q.read();
+  s.iter = c.u_ctrl.iter_q.read();
+  return s;
+}
+
+}  // namespace dda::sc

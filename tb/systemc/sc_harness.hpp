@@ -1,0 +1,43 @@
+// The SystemC model in a test bench: clock, reset, command and ce_i signals, an
+// optional VCD, and the CoreHarness interface the shared driver uses. Elaborate one
+// per process (SystemC cannot elaborate twice); run many arcs through it.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core_driver.hpp"
+#include "dda_core.h"
+
+namespace dda::sc {
+
+class ScHarness : public CoreHarness {
+ public:
+  // vcd: waveform file name ("" for none); the factory builds the integrators.
+  explicit ScHarness(const std::string& vcd = "", dda_core::IntegratorFactory factory = {});
+  ~ScHarness() override;
+
+  void set_reset(bool rst_n) override { rst_n_.write(rst_n); }
+  void set_ce(bool ce) override { ce_.write(ce); }
+  void set_command(bool valid, const std::vector<std::uint32_t>& words) override;
+  bool cmd_ready() override;
+  void tick() override;
+  CoreSample sample() override;
+  const char* name() const override { return "systemc"; }
+
+  dda_core& core() { return *core_; }
+  // Finish the waveform file (also done by the destructor).
+  void close_trace();
+
+ private:
+  sc_core::sc_clock clk_{"clk", 10, sc_core::SC_NS, 0.5, 5, sc_core::SC_NS, true};
+  sc_core::sc_signal<bool> rst_n_{"rst_n"}, ce_{"ce"}, cmd_valid_{"cmd_valid"}, cmd_ready_{"cmd_ready"};
+  sc_core::sc_signal<cmd_t> cmd_{"cmd"};
+  sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
+  sc_core::sc_signal<bool> busy_{"busy"}, done_{"done"}, err_{"err"}, iter_{"iter"};
+  std::unique_ptr<dda_core> core_;
+  sc_core::sc_trace_file* tf_ = nullptr;
+  bool started_ = false;
+};
+
+}  // namespace dda::sc
