@@ -224,7 +224,7 @@ TEST_CASE("cli: help and version exit 0", "[cli]") {
 
 TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]") {
   Scratch s;
-  for (const std::string engine : {"systemc"}) {
+  for (const std::string engine : {"systemc", "rtl"}) {
     INFO("engine " << engine);
     for (const std::string sub : {"trace --format csv", "trace --format json", "path", "stats"}) {
       for (const std::string& arc : {kPaper, std::string("--a 37 --b 900 --bits 14 --preload half --from 30,526 --to 3,898")}) {
@@ -240,13 +240,16 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
   }
 }
 
-TEST_CASE("cli: --vcd writes the systemc waveform, and is refused for golden", "[cli][engines]") {
+TEST_CASE("cli: --vcd writes the systemc and rtl waveforms, and is refused for golden", "[cli][engines]") {
   Scratch s;
-  const fs::path vcd = s.dir / "run.vcd";
-  const Result r = dda(s, "trace " + kPaper + " --engine systemc --vcd " + vcd.string());
-  CHECK(r.status == 0);
-  const std::string v = slurp(vcd);
-  CHECK(v.find("$scope module u_int_x $end") != std::string::npos);
-  CHECK(v.find(" jr_q ") != std::string::npos);
+  for (const std::string engine : {"systemc", "rtl"}) {
+    INFO("engine " << engine);
+    const fs::path vcd = s.dir / (engine + ".vcd");
+    const Result r = dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " + vcd.string());
+    CHECK(r.status == 0);
+    const std::string v = slurp(vcd);
+    CHECK(v.find("$scope module u_int_x $end") != std::string::npos);
+    CHECK(v.find(" jr_q ") != std::string::npos);
+  }
   expect_usage_error("trace " + kPaper + " --vcd x.vcd", "--vcd is invalid with engine golden");
 }

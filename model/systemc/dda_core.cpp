@@ -32,34 +32,34 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
     integ->ovf_y_i(ovf_y);
   }
   u_int_x->active_i(active_x);
-  u_int_x->cmd_jv_i(cmd_jv_x);
-  u_int_x->cmd_jr_i(cmd_jr_x);
-  u_int_x->cmd_inc_on_x_i(cmd_inc_x_on_x);
-  u_int_x->cmd_inc_on_y_i(cmd_inc_x_on_y);
+  u_int_x->jv_i(cmd_jv_x);
+  u_int_x->jr_i(cmd_jr_x);
+  u_int_x->inc_on_x_i(cmd_inc_x_on_x);
+  u_int_x->inc_on_y_i(cmd_inc_x_on_y);
   u_int_x->ovf_o(ovf_x);
-  u_int_x->jv_nz_o(jv_nz_x);
+  u_int_x->can_o(can_x);
   u_int_y->active_i(active_y);
-  u_int_y->cmd_jv_i(cmd_jv_y);
-  u_int_y->cmd_jr_i(cmd_jr_y);
-  u_int_y->cmd_inc_on_x_i(cmd_inc_y_on_x);
-  u_int_y->cmd_inc_on_y_i(cmd_inc_y_on_y);
+  u_int_y->jv_i(cmd_jv_y);
+  u_int_y->jr_i(cmd_jr_y);
+  u_int_y->inc_on_x_i(cmd_inc_y_on_x);
+  u_int_y->inc_on_y_i(cmd_inc_y_on_y);
   u_int_y->ovf_o(ovf_y);
-  u_int_y->jv_nz_o(jv_nz_y);
+  u_int_y->can_o(can_y);
 
   u_cnt_x.clk_i(clk_i);
   u_cnt_x.rst_ni(rst_ni);
   u_cnt_x.load_i(load);
   u_cnt_x.iterate_i(iterate);
-  u_cnt_x.cmd_cnt_i(cmd_cnt_x);
-  u_cnt_x.ovf_i(ovf_x);
+  u_cnt_x.cnt_i(cmd_cnt_x);
+  u_cnt_x.dec_i(ovf_x);
   u_cnt_x.active_o(active_x);
   u_cnt_x.last_o(last_x);
   u_cnt_y.clk_i(clk_i);
   u_cnt_y.rst_ni(rst_ni);
   u_cnt_y.load_i(load);
   u_cnt_y.iterate_i(iterate);
-  u_cnt_y.cmd_cnt_i(cmd_cnt_y);
-  u_cnt_y.ovf_i(ovf_y);
+  u_cnt_y.cnt_i(cmd_cnt_y);
+  u_cnt_y.dec_i(ovf_y);
   u_cnt_y.active_o(active_y);
   u_cnt_y.last_o(last_y);
 
@@ -69,14 +69,17 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   u_ctrl.ce_i(ce_i);
   u_ctrl.active_x_i(active_x);
   u_ctrl.active_y_i(active_y);
-  u_ctrl.jv_nz_x_i(jv_nz_x);
-  u_ctrl.jv_nz_y_i(jv_nz_y);
+  u_ctrl.can_x_i(can_x);
+  u_ctrl.can_y_i(can_y);
   u_ctrl.last_x_i(last_x);
   u_ctrl.last_y_i(last_y);
   u_ctrl.cmd_ready_o(cmd_ready_o);
   u_ctrl.load_o(load);
   u_ctrl.iterate_o(iterate);
   u_ctrl.busy_o(busy_o);
+  u_ctrl.done_o(done_o);
+  u_ctrl.err_o(err_o);
+  u_ctrl.iter_o(iter_o);
 
   SC_METHOD(decode);
   sensitive << cmd_i;
@@ -84,8 +87,7 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   sensitive << clk_i.pos();
   dont_initialize();
   SC_METHOD(outputs);
-  sensitive << step_x_q << step_y_q << dir_x_q << dir_y_q << u_ctrl.done_q << u_ctrl.err_q
-            << u_ctrl.iter_q;
+  sensitive << step_x_q << step_y_q << dir_x_q << dir_y_q;
 }
 
 void dda_core::decode() {
@@ -128,9 +130,6 @@ void dda_core::outputs() {
   step_y_o.write(step_y_q.read());
   dir_x_o.write(dir_x_q.read());
   dir_y_o.write(dir_y_q.read());
-  done_o.write(u_ctrl.done_q.read());
-  err_o.write(u_ctrl.err_q.read());
-  iter_o.write(u_ctrl.iter_q.read());
 }
 
 void dda_core::trace(sc_core::sc_trace_file* tf) const {

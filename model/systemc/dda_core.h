@@ -46,7 +46,7 @@ SC_MODULE(dda_core) {
   sc_core::sc_signal<bool> cmd_dir_x{"cmd_dir_x"}, cmd_dir_y{"cmd_dir_y"};
   // Wires between the blocks.
   sc_core::sc_signal<bool> load{"load"}, iterate{"iterate"};
-  sc_core::sc_signal<bool> ovf_x{"ovf_x"}, ovf_y{"ovf_y"}, jv_nz_x{"jv_nz_x"}, jv_nz_y{"jv_nz_y"};
+  sc_core::sc_signal<bool> ovf_x{"ovf_x"}, ovf_y{"ovf_y"}, can_x{"can_x"}, can_y{"can_y"};
   sc_core::sc_signal<bool> active_x{"active_x"}, active_y{"active_y"}, last_x{"last_x"}, last_y{"last_y"};
 
   void decode();

@@ -5,15 +5,15 @@ namespace dda::sc {
 void dda_counter::comb() {
   const cnt_t c = cnt_q.read();
   active_o.write(c != 0);
-  last_o.write(c == 0 || (c == 1 && ovf_i.read()));
+  last_o.write(c == 0 || (c == 1 && dec_i.read()));
 }
 
 void dda_counter::seq() {
   if (!rst_ni.read()) {
     cnt_q.write(0);
   } else if (load_i.read()) {
-    cnt_q.write(cmd_cnt_i.read());
-  } else if (iterate_i.read() && ovf_i.read()) {
+    cnt_q.write(cnt_i.read());
+  } else if (iterate_i.read() && dec_i.read()) {
     cnt_q.write(cnt_q.read() - 1);
   }
 }

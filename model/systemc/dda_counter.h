@@ -8,8 +8,8 @@ namespace dda::sc {
 SC_MODULE(dda_counter) {
   sc_core::sc_in<bool> clk_i, rst_ni;
   sc_core::sc_in<bool> load_i, iterate_i;
-  sc_core::sc_in<cnt_t> cmd_cnt_i;
-  sc_core::sc_in<bool> ovf_i;        // this axis carries in this iteration
+  sc_core::sc_in<cnt_t> cnt_i;
+  sc_core::sc_in<bool> dec_i;        // this axis carries in this iteration
   sc_core::sc_out<bool> active_o;    // cnt_q != 0: the axis still adds
   sc_core::sc_out<bool> last_o;      // cnt_q is 0 after this iteration
 
@@ -17,7 +17,7 @@ SC_MODULE(dda_counter) {
 
   SC_CTOR(dda_counter) {
     SC_METHOD(comb);
-    sensitive << cnt_q << ovf_i;
+    sensitive << cnt_q << dec_i;
     SC_METHOD(seq);
     sensitive << clk_i.pos();
     dont_initialize();

@@ -11,13 +11,16 @@ void dda_ctrl::comb() {
   const bool idle = state_q.read() == kIdle;
   const bool ax = active_x_i.read(), ay = active_y_i.read();
   const bool fin = !ax && !ay;
-  const bool st = !fin && !(ax && jv_nz_x_i.read()) && !(ay && jv_nz_y_i.read());
+  const bool st = !fin && !can_x_i.read() && !can_y_i.read();
   finished.write(fin);
   stall.write(st);
   cmd_ready_o.write(idle);
   busy_o.write(!idle);
   load_o.write(idle && cmd_valid_i.read());
   iterate_o.write(!idle && ce_i.read() && !fin && !st);
+  done_o.write(done_q.read());
+  err_o.write(err_q.read());
+  iter_o.write(iter_q.read());
 }
 
 void dda_ctrl::seq() {

@@ -6,7 +6,7 @@ void dda_integrator::comb() {
   const sum_t s = sum_t(jr_q.read()) + sum_t(jv_q.read());
   sum.write(s);
   ovf_o.write(active_i.read() && carry(s, cap_i.read()));
-  jv_nz_o.write(jv_q.read() != 0);
+  can_o.write(active_i.read() && jv_q.read() != 0);
 }
 
 void dda_integrator::seq() {
@@ -18,10 +18,10 @@ void dda_integrator::seq() {
     return;
   }
   if (load_i.read()) {
-    jv_q.write(cmd_jv_i.read());
-    jr_q.write(cmd_jr_i.read());
-    inc_on_x_q.write(cmd_inc_on_x_i.read());
-    inc_on_y_q.write(cmd_inc_on_y_i.read());
+    jv_q.write(jv_i.read());
+    jr_q.write(jr_i.read());
+    inc_on_x_q.write(inc_on_x_i.read());
+    inc_on_y_q.write(inc_on_y_i.read());
     return;
   }
   if (!iterate_i.read()) return;

@@ -12,10 +12,10 @@ SC_MODULE(dda_integrator) {
   sc_core::sc_in<bool> iterate_i;  // one iteration on this edge
   sc_core::sc_in<bool> active_i;   // this axis' counter is non-zero
   sc_core::sc_in<acc_t> cap_i;
-  sc_core::sc_in<acc_t> cmd_jv_i, cmd_jr_i, cmd_inc_on_x_i, cmd_inc_on_y_i;
+  sc_core::sc_in<acc_t> jv_i, jr_i, inc_on_x_i, inc_on_y_i;  // command fields
   sc_core::sc_in<bool> ovf_x_i, ovf_y_i;  // both axes' carries of this iteration
   sc_core::sc_out<bool> ovf_o;            // this axis carries
-  sc_core::sc_out<bool> jv_nz_o;          // jv_q != 0
+  sc_core::sc_out<bool> can_o;            // active and jv_q != 0: can still carry
 
   // Architectural registers.
   sc_core::sc_signal<acc_t> jv_q{"jv_q"}, jr_q{"jr_q"}, inc_on_x_q{"inc_on_x_q"}, inc_on_y_q{"inc_on_y_q"};

@@ -4,6 +4,7 @@
 
 #include "core_driver.hpp"
 #include "dda/hw_command.hpp"
+#include "rtl_harness.hpp"
 #include "sc_harness.hpp"
 
 namespace dda::cli {
@@ -24,9 +25,18 @@ std::vector<Iteration> systemc_engine(const Plan& plan, const EngineOptions& opt
   return drive_arc(h, plan).records;
 }
 
+// The RTL under Verilator (--cc), driven and checked the same way.
+std::vector<Iteration> rtl_engine(const Plan& plan, const EngineOptions& opt) {
+  hw::pack_command(plan.cmd);
+  rtl::RtlHarness h(opt.vcd);
+  reset_core(h);
+  return drive_arc(h, plan).records;
+}
+
 constexpr std::pair<const char*, EngineFn> kEngines[] = {
     {"golden", &golden_engine},
     {"systemc", &systemc_engine},
+    {"rtl", &rtl_engine},
 };
 
 }  // namespace

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Verilator lint of the RTL with every warning on; fails on any %Warning or %Error.
+#   usage: scripts/rtl-lint.sh        (ctest: rtl.lint)
+# Waivers, each with its reason, live in rtl/lint.vlt.
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+verilator=${VERILATOR:-verilator}
+cd "$root"
+out=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt rtl/dda_*.v --top-module dda_core 2>&1)
+rc=$?
+[ -n "$out" ] && echo "$out"
+if [ $rc -ne 0 ] || echo "$out" | grep -Eq '%(Warning|Error)'; then
+  echo "rtl-lint: FAIL (verilator exit $rc)" >&2
+  exit 1
+fi
+echo "rtl-lint: PASS: verilator --lint-only -Wall, no warning"

@@ -1,0 +1,9 @@
+// Regression of the RTL (Verilator --cc) against the golden model (scripts/regress.sh).
+//   usage: rtl_regress [--arcs N] [--seed S]
+#include "regress.hpp"
+#include "rtl_harness.hpp"
+
+int main(int argc, char* argv[]) {
+  dda::rtl::RtlHarness h;
+  return dda::regress_main(h, argc, argv);
+}

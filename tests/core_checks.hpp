@@ -1,0 +1,175 @@
+// Checks shared by the SystemC-model and RTL test programs: the same stimulus and the
+// same expectations (all from the golden model) for every engine.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "core_driver.hpp"
+#include "dda/hw_command.hpp"
+#include "dda/report.hpp"
+#include "dda_random.hpp"
+
+namespace dda::checks {
+
+inline Plan paper_plan(Preload p = Preload::Zero) {
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.preload = p;
+  return plan_arc(s);
+}
+
+inline bool same(const Iteration& a, const Iteration& b) {
+  return a.iter == b.iter && a.active_x == b.active_x && a.active_y == b.active_y &&
+         a.jv_x == b.jv_x && a.jv_y == b.jv_y && a.sum_x == b.sum_x && a.sum_y == b.sum_y &&
+         a.step_x == b.step_x && a.step_y == b.step_y && a.after == b.after && a.pos == b.pos;
+}
+
+inline void records_equal(const std::vector<Iteration>& got, const std::vector<Iteration>& want) {
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    INFO("iteration " << i + 1);
+    CHECK(same(got[i], want[i]));
+  }
+}
+
+inline std::string trace_csv(const Plan& plan, const std::vector<Iteration>& recs) {
+  std::ostringstream os;
+  write_trace(os, plan, recs, TraceFormat::Csv);
+  return os.str();
+}
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// The paper's example: every register after every iteration equals the golden record.
+inline void paper_example(CoreHarness& h) {
+  reset_core(h);
+  const Plan plan = paper_plan();
+  const auto got = drive_arc(h, plan).records;  // the scoreboard checks each iteration
+  records_equal(got, run_records(plan));
+  CHECK(trace_csv(plan, got) == trace_csv(plan, run_records(plan)));
+}
+
+// Random arcs back to back, each in lockstep with the golden model.
+inline void random_arcs(CoreHarness& h, std::uint64_t seed, int count) {
+  RandomArcs gen(seed, 4096);
+  reset_core(h);
+  std::uint64_t iters = 0;
+  for (int arcs = 0; arcs < count;) {
+    const auto plan = gen.next();
+    if (!plan) continue;
+    INFO("seed " << seed << ", arc " << arcs << ": dda trace " << describe(*plan));
+    DriveOptions opt;
+    opt.keep_records = false;
+    const DriveResult r = drive_arc(h, *plan, opt);
+    REQUIRE(r.end == plan->to);
+    iters += r.iterations;
+    ++arcs;
+  }
+  CHECK(iters > std::uint64_t(count));
+}
+
+// A random ce_i pattern (long stalls included) gives the same records, stretched.
+inline void ce_stretch(CoreHarness& h, std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  RandomArcs gen(seed, 512);
+  reset_core(h);
+  for (int arcs = 0; arcs < count;) {
+    const auto plan = gen.next();
+    if (!plan) continue;
+    ++arcs;
+    INFO("seed " << seed << ": dda trace " << describe(*plan));
+    const DriveResult ref = drive_arc(h, *plan);
+    DriveOptions opt;
+    std::uint64_t until = 0;
+    bool level = true;
+    opt.ce = [&](std::uint64_t c) {
+      if (c >= until) {
+        level = !level;
+        until = c + (level ? 1 + rng() % 10 : (rng() % 16 == 0 ? 300 : 1 + rng() % 40));
+      }
+      return level;
+    };
+    const DriveResult slow = drive_arc(h, *plan, opt);
+    records_equal(slow.records, ref.records);
+    CHECK(slow.cycles > ref.cycles);
+  }
+}
+
+// Reset in the middle of an arc: idle, no pulse after it; the next command runs.
+inline void reset_midway(CoreHarness& h) {
+  reset_core(h);
+  DriveOptions cut;
+  cut.reset_after = 12;
+  CHECK(drive_arc(h, paper_plan(Preload::Half), cut).iterations == 12);
+  h.set_ce(true);
+  for (int i = 0; i < 50; ++i) {
+    h.tick();
+    const CoreSample s = h.sample();
+    CHECK(s.state == unsigned(hw::State::Idle));
+    CHECK_FALSE(s.step_x);
+    CHECK_FALSE(s.step_y);
+    CHECK_FALSE(s.iter);
+    CHECK_FALSE(s.done);
+    CHECK(s.cnt_x == 0);
+    CHECK(s.cnt_y == 0);
+    CHECK(h.cmd_ready());
+  }
+  const Plan next = paper_plan();
+  records_equal(drive_arc(h, next).records, run_records(next));
+}
+
+// Hands a raw command over and clocks one edge with ce_i high; returns the sample after.
+inline CoreSample load_and_clock(CoreHarness& h, const Command& c) {
+  h.set_command(true, hw::pack_command(c));
+  h.set_ce(false);
+  REQUIRE(h.cmd_ready());
+  h.tick();
+  h.set_command(false, {});
+  h.set_ce(true);
+  h.tick();
+  return h.sample();
+}
+
+// The control paths the driver never uses: a command with nothing to do finishes
+// without an iteration; a command that can never carry raises err_o and returns to
+// idle, and the core then runs the next command normally.
+inline void finished_and_stalled(CoreHarness& h) {
+  reset_core(h);
+  Command empty = paper_plan().cmd;
+  empty.cnt_x = empty.cnt_y = 0;
+  REQUIRE(Datapath(empty, Point{}).done());
+  CoreSample s = load_and_clock(h, empty);
+  CHECK(s.done);
+  CHECK_FALSE(s.iter);
+  CHECK_FALSE(s.err);
+  CHECK(s.state == unsigned(hw::State::Idle));
+
+  Command stuck = paper_plan().cmd;  // X owes 10 steps, Y none: the X integrand stays 0
+  stuck.cnt_y = 0;
+  REQUIRE(Datapath(stuck, Point{}).stalled());
+  s = load_and_clock(h, stuck);
+  CHECK(s.err);
+  CHECK_FALSE(s.iter);
+  CHECK_FALSE(s.done);
+  CHECK(s.state == unsigned(hw::State::Idle));
+  CHECK(s.jr_x == std::uint64_t(stuck.jr_x));  // no iteration happened
+  h.tick();
+  CHECK_FALSE(h.sample().err);  // one-cycle pulse
+
+  const Plan next = paper_plan();
+  records_equal(drive_arc(h, next).records, run_records(next));
+}
+
+}  // namespace dda::checks
