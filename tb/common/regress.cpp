@@ -10,6 +10,39 @@
 
 namespace dda {
 
+MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
+  RandomArcs gen(seed, 4096);
+  std::mt19937_64 rng(seed ^ 0x5eedULL);
+  reset_core(h);
+  MixedStats st;
+  while (st.arcs < arcs) {
+    const auto plan = gen.next();
+    if (!plan) continue;
+    DriveOptions opt;
+    opt.keep_records = false;
+    const unsigned kind = unsigned(rng() % 8);
+    if (kind == 0) {  // random ce_i stalls
+      opt.ce = [&](std::uint64_t) { return rng() % 4 != 0; };
+      ++st.ce_stalled;
+    } else if (kind == 1 && plan->cmd.cnt_x + plan->cmd.cnt_y > 4) {  // reset halfway
+      opt.reset_after = 1 + rng() % 8;
+      ++st.reset_halfway;
+    }
+    try {
+      const DriveResult r = drive_arc(h, *plan, opt);
+      st.iterations += r.iterations;
+      st.cycles += r.cycles;
+    } catch (const GuardError& e) {
+      const std::string where = "arc " + std::to_string(st.arcs) + " (dda trace " + describe(*plan) +
+                                " --engine " + h.name() + "): " + e.what();
+      if (dynamic_cast<const MismatchError*>(&e)) throw MismatchError(where);
+      throw GuardError(where);
+    }
+    ++st.arcs;
+  }
+  return st;
+}
+
 int regress_main(CoreHarness& h, int argc, char* argv[]) {
   long arcs = 2000;
   std::uint64_t seed = 1;
@@ -23,42 +56,19 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
       return 2;
     }
   }
-  RandomArcs gen(seed, 4096);
-  std::mt19937_64 rng(seed ^ 0x5eedULL);
-  reset_core(h);
-  std::uint64_t iters = 0, cycles = 0, stalled = 0, resets = 0;
-  long done = 0;
-  std::string current;
   try {
-    while (done < arcs) {
-      const auto plan = gen.next();
-      if (!plan) continue;
-      current = describe(*plan);
-      DriveOptions opt;
-      opt.keep_records = false;
-      const unsigned kind = unsigned(rng() % 8);
-      if (kind == 0) {  // random ce_i stalls
-        opt.ce = [&](std::uint64_t) { return rng() % 4 != 0; };
-        ++stalled;
-      } else if (kind == 1 && plan->cmd.cnt_x + plan->cmd.cnt_y > 4) {  // reset halfway
-        opt.reset_after = 1 + rng() % 8;
-        ++resets;
-      }
-      const DriveResult r = drive_arc(h, *plan, opt);
-      iters += r.iterations;
-      cycles += r.cycles;
-      ++done;
-    }
+    const MixedStats st = run_mixed(h, seed, arcs);
+    std::printf("%s regression: seed %llu: %ld arcs (%llu with ce stalls, %llu reset halfway), "
+                "%llu iterations and %llu cycles compared, 0 mismatches\n",
+                h.name(), static_cast<unsigned long long>(seed), st.arcs,
+                static_cast<unsigned long long>(st.ce_stalled),
+                static_cast<unsigned long long>(st.reset_halfway),
+                static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s regression: FAIL (seed %llu, arc %ld: dda trace %s --engine %s): %s\n",
-                 h.name(), static_cast<unsigned long long>(seed), done, current.c_str(), h.name(), e.what());
+    std::fprintf(stderr, "%s regression: FAIL (seed %llu): %s\n", h.name(),
+                 static_cast<unsigned long long>(seed), e.what());
     return 1;
   }
-  std::printf("%s regression: seed %llu: %ld arcs (%llu with ce stalls, %llu reset halfway), "
-              "%llu iterations and %llu cycles compared, 0 mismatches\n",
-              h.name(), static_cast<unsigned long long>(seed), done, static_cast<unsigned long long>(stalled),
-              static_cast<unsigned long long>(resets), static_cast<unsigned long long>(iters),
-              static_cast<unsigned long long>(cycles));
   return 0;
 }
 

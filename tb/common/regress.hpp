@@ -8,6 +8,16 @@
 
 namespace dda {
 
+struct MixedStats {
+  long arcs = 0;
+  std::uint64_t iterations = 0, cycles = 0, ce_stalled = 0, reset_halfway = 0;
+};
+
+// `arcs` random arcs back to back (a, b log-uniform in [1, 4096]), one in eight with
+// random ce_i stalls and one in eight reset after a few iterations. Throws on the first
+// mismatch, naming the arc's reproducer.
+MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs);
+
 int regress_main(CoreHarness& h, int argc, char* argv[]);
 
 }  // namespace dda

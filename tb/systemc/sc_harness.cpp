@@ -43,16 +43,19 @@ void ScHarness::close_trace() {
   }
 }
 
-void ScHarness::set_command(bool valid, const std::vector<std::uint32_t>& words) {
-  cmd_valid_.write(valid);
-  if (!valid) return;
+cmd_t command_bits(const std::vector<std::uint32_t>& words) {
   cmd_t c;
   for (std::size_t i = 0; i < words.size(); ++i) {
     for (int b = 0; b < 32 && int(i * 32) + b < hw::kCmdWidth; ++b) {
       c[int(i * 32) + b] = bool((words[i] >> b) & 1u);
     }
   }
-  cmd_.write(c);
+  return c;
+}
+
+void ScHarness::set_command(bool valid, const std::vector<std::uint32_t>& words) {
+  cmd_valid_.write(valid);
+  if (valid) cmd_.write(command_bits(words));
 }
 
 bool ScHarness::cmd_ready() {
@@ -72,7 +75,10 @@ void ScHarness::tick() {
 CoreSample ScHarness::sample() {
   // Registers and the adders (which depend on registers only) have settled by the end
   // of tick(); input writes since then cannot change them.
-  const dda_core& c = *core_;
+  return sample_core(*core_);
+}
+
+CoreSample sample_core(const dda_core& c) {
   CoreSample s;
   s.jv_x = c.u_int_x->jv_q.read().to_uint64();
   s.jr_x = c.u_int_x->jr_q.read().to_uint64();

@@ -11,6 +11,12 @@
 
 namespace dda::sc {
 
+// The architectural registers of a SystemC dda_core.
+CoreSample sample_core(const dda_core& c);
+
+// Packs 32-bit command words into the command port's bit vector.
+cmd_t command_bits(const std::vector<std::uint32_t>& words);
+
 class ScHarness : public CoreHarness {
  public:
   // vcd: waveform file name ("" for none); the factory builds the integrators.

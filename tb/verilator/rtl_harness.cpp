@@ -5,7 +5,7 @@
 
 #include "Vdda_core.h"
 #include "Vdda_core___024root.h"
-#include "dda/hw_params.hpp"
+#include "rtl_sample.hpp"
 
 namespace dda::rtl {
 
@@ -65,27 +65,6 @@ void RtlHarness::tick() {
   ++cycle_;
 }
 
-CoreSample RtlHarness::sample() {
-  const auto* r = top_->rootp;
-  CoreSample s;
-  s.jv_x = r->dda_core__DOT__u_int_x__DOT__jv_q;
-  s.jr_x = r->dda_core__DOT__u_int_x__DOT__jr_q;
-  s.sum_x = r->dda_core__DOT__u_int_x__DOT__sum;
-  s.jv_y = r->dda_core__DOT__u_int_y__DOT__jv_q;
-  s.jr_y = r->dda_core__DOT__u_int_y__DOT__jr_q;
-  s.sum_y = r->dda_core__DOT__u_int_y__DOT__sum;
-  s.cnt_x = r->dda_core__DOT__u_cnt_x__DOT__cnt_q;
-  s.cnt_y = r->dda_core__DOT__u_cnt_y__DOT__cnt_q;
-  s.cap = r->dda_core__DOT__cap_q;
-  s.step_x = r->dda_core__DOT__step_x_q;
-  s.step_y = r->dda_core__DOT__step_y_q;
-  s.dir_x = r->dda_core__DOT__dir_x_q;
-  s.dir_y = r->dda_core__DOT__dir_y_q;
-  s.state = r->dda_core__DOT__u_ctrl__DOT__state_q;
-  s.done = r->dda_core__DOT__u_ctrl__DOT__done_q;
-  s.err = r->dda_core__DOT__u_ctrl__DOT__err_q;
-  s.iter = r->dda_core__DOT__u_ctrl__DOT__iter_q;
-  return s;
-}
+CoreSample RtlHarness::sample() { return sample_root(top_->rootp); }
 
 }  // namespace dda::rtl

@@ -1,0 +1,110 @@
+#include "cosim_harness.hpp"
+
+#include <verilated.h>
+
+#include <sstream>
+
+#include "Vdda_core_sc.h"
+#include "Vdda_core_sc___024root.h"
+#include "rtl_sample.hpp"
+#include "sc_harness.hpp"
+
+namespace dda::cosim {
+
+namespace {
+
+template <typename Core>
+void bind_outputs(Core& c, sc_core::sc_signal<bool>& ready, sc_core::sc_signal<bool>& sx,
+                  sc_core::sc_signal<bool>& dx, sc_core::sc_signal<bool>& sy,
+                  sc_core::sc_signal<bool>& dy, sc_core::sc_signal<bool>& busy,
+                  sc_core::sc_signal<bool>& done, sc_core::sc_signal<bool>& err,
+                  sc_core::sc_signal<bool>& iter) {
+  c.cmd_ready_o(ready);
+  c.step_x_o(sx);
+  c.dir_x_o(dx);
+  c.step_y_o(sy);
+  c.dir_y_o(dy);
+  c.busy_o(busy);
+  c.done_o(done);
+  c.err_o(err);
+  c.iter_o(iter);
+}
+
+}  // namespace
+
+CosimHarness::CosimHarness() {
+  sc_ = std::make_unique<sc::dda_core>("sc_dut");
+  rtl_ = std::make_unique<Vdda_core_sc>("rtl_dut");
+  sc_->clk_i(clk_);
+  sc_->rst_ni(rst_n_);
+  sc_->ce_i(ce_);
+  sc_->cmd_valid_i(cmd_valid_);
+  sc_->cmd_i(cmd_);
+  bind_outputs(*sc_, sc_out_.cmd_ready, sc_out_.step_x, sc_out_.dir_x, sc_out_.step_y,
+               sc_out_.dir_y, sc_out_.busy, sc_out_.done, sc_out_.err, sc_out_.iter);
+  rtl_->clk_i(clk_);
+  rtl_->rst_ni(rst_n_);
+  rtl_->ce_i(ce_);
+  rtl_->cmd_valid_i(cmd_valid_);
+  rtl_->cmd_i(cmd_);
+  bind_outputs(*rtl_, rtl_out_.cmd_ready, rtl_out_.step_x, rtl_out_.dir_x, rtl_out_.step_y,
+               rtl_out_.dir_y, rtl_out_.busy, rtl_out_.done, rtl_out_.err, rtl_out_.iter);
+}
+
+CosimHarness::~CosimHarness() {
+  if (rtl_) rtl_->final();
+}
+
+void CosimHarness::set_command(bool valid, const std::vector<std::uint32_t>& words) {
+  cmd_valid_.write(valid);
+  if (valid) cmd_.write(sc::command_bits(words));
+}
+
+bool CosimHarness::cmd_ready() {
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  if (sc_out_.cmd_ready.read() != rtl_out_.cmd_ready.read()) {
+    throw MismatchError("cosim mismatch: output cmd_ready_o at cycle " + std::to_string(cycle_));
+  }
+  return sc_out_.cmd_ready.read();
+}
+
+void CosimHarness::tick() {
+  sc_core::sc_start(10, sc_core::SC_NS);
+  ++cycle_;
+  // Every register and every output, every cycle.
+  const std::string diff = compare_samples(sc_sample(), rtl_sample());
+  const struct {
+    const char* name;
+    bool a, b;
+  } outs[] = {
+      {"cmd_ready_o", sc_out_.cmd_ready.read(), rtl_out_.cmd_ready.read()},
+      {"step_x_o", sc_out_.step_x.read(), rtl_out_.step_x.read()},
+      {"dir_x_o", sc_out_.dir_x.read(), rtl_out_.dir_x.read()},
+      {"step_y_o", sc_out_.step_y.read(), rtl_out_.step_y.read()},
+      {"dir_y_o", sc_out_.dir_y.read(), rtl_out_.dir_y.read()},
+      {"busy_o", sc_out_.busy.read(), rtl_out_.busy.read()},
+      {"done_o", sc_out_.done.read(), rtl_out_.done.read()},
+      {"err_o", sc_out_.err.read(), rtl_out_.err.read()},
+      {"iter_o", sc_out_.iter.read(), rtl_out_.iter.read()},
+  };
+  std::ostringstream m;
+  if (!diff.empty()) {
+    m << "cosim mismatch at cycle " << cycle_ << ": " << diff << " (systemc vs rtl)";
+  } else {
+    for (const auto& o : outs) {
+      if (o.a != o.b) {
+        m << "cosim mismatch at cycle " << cycle_ << ": output " << o.name << ": " << o.a << " vs "
+          << o.b << " (systemc vs rtl)";
+        break;
+      }
+    }
+  }
+  if (!m.str().empty()) throw MismatchError(m.str());
+  ++compared_;
+}
+
+CoreSample CosimHarness::sc_sample() { return sc::sample_core(*sc_); }
+
+CoreSample CosimHarness::rtl_sample() { return rtl::sample_root(rtl_->rootp); }
+
+}  // namespace dda::cosim
