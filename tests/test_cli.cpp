@@ -247,6 +247,8 @@ TEST_CASE("cli: --vcd writes the systemc and rtl waveforms, and is refused for g
     const fs::path vcd = s.dir / (engine + ".vcd");
     const Result r = dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " + vcd.string());
     CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));  // rows only
     const std::string v = slurp(vcd);
     CHECK(v.find("$scope module u_int_x $end") != std::string::npos);
     CHECK(v.find(" jr_q ") != std::string::npos);

@@ -3,6 +3,9 @@
 namespace dda::sc {
 
 ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory) {
+  // SystemC prints informational reports (e.g. the trace time unit) on stdout, which
+  // would mix with the rows a command prints there.
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   core_ = std::make_unique<dda_core>("dut", std::move(factory));
   core_->clk_i(clk_);
   core_->rst_ni(rst_n_);
