@@ -172,12 +172,11 @@ TEST_CASE("cli: bad accumulator width", "[cli][errors]") {
 TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "[cli][errors]") {
   expect_usage_error("trace " + kPaper + " --from 3,0", "from point (3,0) is 5.5621 steps from the ellipse: start and end must lie within 1.0000 step of it");
   expect_usage_error("path " + kPaper + " --to 0,8", "to point (0,8) is 2.0000 steps from the ellipse");
-  expect_usage_error("trace " + kPaper + " --from 0,6 --to 10,0", "to (10,0) comes before from (0,6)");
-  expect_usage_error("trace " + kPaper + " --from 10,0 --to 10,0", "a full ellipse (from == to) is not supported yet");
-  expect_usage_error("trace " + kPaper + " --from -10,0", "outside quadrant I");
   expect_usage_error("trace " + kPaper + " --from 9,3 --to 0,7",
                      "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
-  expect_usage_error("trace " + kPaper + " --from 10,0 --to 9,0", "end point (9,0) is unreachable");
+  expect_usage_error("trace " + kPaper + " --from 10,0 --to 9,0 --dir cw", "end point (9,0) is unreachable");
+  expect_usage_error("trace " + kPaper + " --from 1,2 --from-theta 30", "from and from-theta are both given");
+  expect_usage_error("trace " + kPaper + " --to-theta north", "to-theta = 'north' is invalid: a parametric angle in degrees");
   expect_usage_error("trace " + kPaper + " --from 1,2,3", "from = '1,2,3' is invalid: a point is two integers X,Y");
   expect_usage_error("trace " + kPaper + " --to abc", "to = 'abc' is invalid");
 }
@@ -187,6 +186,14 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
   expect_usage_error("trace " + kPaper + " --format xml", "format = 'xml' is invalid: use one of csv, json, table");
   expect_usage_error("stats " + kPaper + " --format csv", "format = 'csv' is invalid");
   expect_usage_error("trace " + kPaper + " --engine spice", "engine = 'spice' is invalid");
+  expect_usage_error("trace " + kPaper + " --dir left", "dir = 'left' is invalid: use ccw or cw");
+  expect_usage_error("trace " + kPaper + " --angle 30", "angle = 30 is not supported yet");
+  expect_usage_error("trace " + kPaper + " --angle x", "angle = 'x' is invalid");
+  expect_usage_error("trace " + kPaper + " --center 1", "center = '1' is invalid: a point is two integers X,Y");
+  expect_usage_error("trace --a 10 --b 6 --bits 21", "bits = 21 is invalid: at most 16 bits above the smallest valid width (4)");
+  expect_usage_error("stats --a 120000 --b 120000 --bits 17 --engine rtl",
+                     "jv_y = 1728000000000000 does not fit the hardware's 50-bit field");
+  expect_usage_error("--bogus", "option '--bogus' is unknown here");
   expect_usage_error("trace " + kPaper + " --frobnicate 1", "frobnicate");
   expect_usage_error("trace --b 6 --bits 4", "--a is required");
   expect_usage_error("nosuchcommand", "command 'nosuchcommand' is unknown: use one of trace, path, stats");
@@ -254,4 +261,68 @@ TEST_CASE("cli: --vcd writes the systemc and rtl waveforms, and is refused for g
     CHECK(v.find(" jr_q ") != std::string::npos);
   }
   expect_usage_error("trace " + kPaper + " --vcd x.vcd", "--vcd is invalid with engine golden");
+}
+
+TEST_CASE("cli: waveform and output files appear only on success", "[cli][errors]") {
+  Scratch s;
+  // An unwritable waveform path: a one-line error and status 1, before any run.
+  for (const std::string engine : {"systemc", "rtl"}) {
+    const Result r = dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " +
+                                (s.dir / "no" / "w.vcd").string());
+    CHECK(r.status == 1);
+    CHECK(r.err.rfind("dda: error: cannot write", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  // The waveform is not left behind when the output cannot be written.
+  const Result r = dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "w.vcd").string() +
+                              " --out " + (s.dir / "no" / "t.csv").string());
+  CHECK(r.status == 1);
+  CHECK(s.user_files() == 0);
+  // The same file for both: refused.
+  const Result same = dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "x").string() +
+                                 " --out " + (s.dir / "x").string());
+  CHECK(same.status == 2);
+  CHECK(same.err.find("--vcd and --out name the same file") != std::string::npos);
+  CHECK(s.user_files() == 0);
+  // The waveform gets exactly the requested name, whatever its extension.
+  const Result ok = dda(s, "trace " + kPaper + " --engine systemc --vcd " + (s.dir / "w.fst").string());
+  CHECK(ok.status == 0);
+  CHECK(fs::exists(s.dir / "w.fst"));
+  CHECK(s.user_files() == 1);
+}
+
+TEST_CASE("cli: --out to a device writes to it and leaves it a device", "[cli]") {
+  Scratch s;
+  const Result r = dda(s, "stats " + kPaper + " --out /dev/null");
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(fs::is_character_file("/dev/null"));
+}
+
+TEST_CASE("cli: whole ellipses, every quadrant, both directions", "[cli][ellipse]") {
+  Scratch s;
+  // Three quarters counter-clockwise from the top to the right vertex.
+  Result r = dda(s, "path " + kPaper + " --from 0,6 --to 10,0");
+  CHECK(r.status == 0);
+  CHECK(r.out.rfind("point,x,y\n0,0,6\n", 0) == 0);
+  CHECK(r.out.find(",-10,0\n") != std::string::npos);
+  CHECK(r.out.find(",0,-6\n") != std::string::npos);
+  CHECK(r.out.substr(r.out.size() - 6) == ",10,0\n");
+  // A full turn: every X and Y step of the four quarters, back at the start.
+  r = dda(s, "stats " + kPaper + " --from 10,0 --to 10,0 --format json");
+  REQUIRE(r.status == 0);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["pulses_x"] == 40);
+  CHECK(j["pulses_y"] == 24);
+  CHECK(j["points"] == 61);  // 60 moves on a closed path: the start is counted once more
+  // Clockwise from the right vertex down to the bottom, about a moved centre.
+  r = dda(s, "path --a 10 --b 6 --bits 5 --preload half --center 100,-50 --dir cw --from 110,-50 --to 100,-56");
+  CHECK(r.status == 0);
+  CHECK(r.out.rfind("point,x,y\n0,110,-50\n", 0) == 0);
+  CHECK(r.out.substr(r.out.size() - 9) == ",100,-56\n");
+  // Parametric angles and a quarter turn: a = 10 now points along Y.
+  r = dda(s, "path --a 10 --b 6 --bits 5 --angle 90 --from-theta 0 --to-theta 90");
+  CHECK(r.status == 0);
+  CHECK(r.out.rfind("point,x,y\n0,0,10\n", 0) == 0);
+  CHECK(r.out.substr(r.out.size() - 6) == ",-6,0\n");
 }

@@ -149,8 +149,8 @@ TEST_CASE("paper units are rounded exactly, half away from zero", "[golden][form
 
 TEST_CASE("half preload starts both accumulators at half capacity", "[golden]") {
   const Plan plan = paper_plan(Preload::Half);
-  CHECK(plan.cmd.jr_x == plan.cmd.cap / 2);
-  CHECK(plan.cmd.jr_y == plan.cmd.cap / 2);
+  CHECK(plan.cmd().jr_x == plan.cmd().cap / 2);
+  CHECK(plan.cmd().jr_y == plan.cmd().cap / 2);
   const auto r = run(plan);
   CHECK(r.end == Point{0, 6});
   CHECK(r.iterations <= plan.iteration_bound);

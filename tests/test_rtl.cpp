@@ -1,6 +1,8 @@
 // The RTL (Verilator --cc) against the golden model, register by register, iteration by
 // iteration. Each harness has its own VerilatedContext, so tests share one process.
 #define CATCH_CONFIG_MAIN
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "core_checks.hpp"
@@ -10,7 +12,8 @@ using namespace dda;
 using namespace dda::checks;
 
 TEST_CASE("rtl: paper example matches the golden model in every register", "[rtl]") {
-  const auto vcd = std::filesystem::temp_directory_path() / "dda_test_rtl_paper.vcd";
+  const auto vcd = std::filesystem::temp_directory_path() /
+                   ("dda_test_rtl_paper_" + std::to_string(::getpid()) + ".vcd");
   std::filesystem::remove(vcd);
   {
     rtl::RtlHarness h(vcd.string());
@@ -30,6 +33,11 @@ TEST_CASE("rtl: paper example matches the golden model in every register", "[rtl
 TEST_CASE("rtl: 1,000 random arcs back to back in lockstep with the golden model", "[rtl][random]") {
   rtl::RtlHarness h;
   random_arcs(h, test_seed(41), 1000);
+}
+
+TEST_CASE("rtl: 300 random whole-ellipse arcs (every quadrant, both directions) in lockstep", "[rtl][random]") {
+  rtl::RtlHarness h;
+  random_arcs(h, test_seed(43), 300, ArcKind::Whole);
 }
 
 TEST_CASE("rtl: a random ce pattern stretches the same pulse sequence", "[rtl][random]") {

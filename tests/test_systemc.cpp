@@ -1,6 +1,8 @@
 // The SystemC model against the golden model, register by register, iteration by
 // iteration. Every TEST_CASE is its own ctest entry and process (one elaboration each).
 #define CATCH_CONFIG_RUNNER
+#include <unistd.h>
+
 #include <filesystem>
 #include <systemc>
 
@@ -23,7 +25,8 @@ struct FaultyIntegrator : sc::dda_integrator {
 }  // namespace
 
 TEST_CASE("systemc: paper example matches the golden model in every register", "[systemc]") {
-  const auto vcd = std::filesystem::temp_directory_path() / "dda_test_systemc_paper.vcd";
+  const auto vcd = std::filesystem::temp_directory_path() /
+                   ("dda_test_systemc_paper_" + std::to_string(::getpid()) + ".vcd");
   std::filesystem::remove(vcd);
   {
     sc::ScHarness h(vcd.string());
@@ -45,6 +48,11 @@ TEST_CASE("systemc: paper example matches the golden model in every register", "
 TEST_CASE("systemc: 200 random arcs back to back in lockstep with the golden model", "[systemc][random]") {
   sc::ScHarness h;
   random_arcs(h, test_seed(31), 200);
+}
+
+TEST_CASE("systemc: 60 random whole-ellipse arcs in lockstep with the golden model", "[systemc][random]") {
+  sc::ScHarness h;
+  random_arcs(h, test_seed(33), 60, ArcKind::Whole);
 }
 
 TEST_CASE("systemc: a random ce pattern stretches the same pulse sequence", "[systemc][random]") {

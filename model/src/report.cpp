@@ -25,21 +25,25 @@ namespace {
 
 struct Row {
   std::uint64_t iter;
+  std::uint32_t seg;
   std::int64_t jvx, jrx, jvy, jry;
   bool ax, ay;  // axis active (accumulator added) in this row
   bool dx, dy;
   std::int64_t remx, remy;
+  bool negx, negy;
+  Point pos;
 };
 
-std::vector<Row> rows(const Plan& plan, const std::vector<Iteration>& iters) {
+std::vector<Row> rows(const Plan& plan, const RegState& init, const std::vector<Iteration>& iters) {
   std::vector<Row> v;
   v.reserve(iters.size() + 1);
-  const Command& c = plan.cmd;
-  v.push_back({0, c.jv_x, c.jr_x, c.jv_y, c.jr_y, c.cnt_x != 0, c.cnt_y != 0, false, false,
-               c.cnt_x, c.cnt_y});
+  const Command& c = plan.cmd();
+  v.push_back({0, 0, init.jv_x, init.jr_x, init.jv_y, init.jr_y, init.cnt_x != 0, init.cnt_y != 0,
+               false, false, init.cnt_x, init.cnt_y, c.dir_x_neg, c.dir_y_neg, plan.from});
   for (const auto& it : iters) {
-    v.push_back({it.iter, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
-                 it.step_x, it.step_y, it.after.cnt_x, it.after.cnt_y});
+    v.push_back({it.iter, it.seg, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
+                 it.step_x, it.step_y, it.after.cnt_x, it.after.cnt_y, it.dir_x_neg, it.dir_y_neg,
+                 it.pos});
   }
   return v;
 }
@@ -48,35 +52,63 @@ std::string acc_cell(bool active, std::int64_t v, std::int64_t scale) {
   return active ? paper_units(v, scale) : std::string("stopped");
 }
 
+const char* sign(bool neg) { return neg ? "-" : "+"; }
+
 }  // namespace
+
+bool paper_columns(const Plan& plan) {
+  return plan.segs.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
+         !plan.cmd().dir_y_neg;
+}
 
 void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
                  TraceFormat fmt) {
+  write_trace(os, plan, initial_regs(plan.cmd()), iters, fmt);
+}
+
+void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
+                 const std::vector<Iteration>& iters, TraceFormat fmt) {
   const std::int64_t s = plan.scale;
+  const bool paper = paper_columns(plan);
   if (fmt == TraceFormat::Csv) {
-    os << "iter,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y\n";
-    for (const Row& r : rows(plan, iters)) {
-      fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s),
-                 acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s),
-                 acc_cell(r.ay, r.jry, s), r.dy, r.remy);
+    os << (paper ? "iter,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y\n"
+                 : "iter,seg,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y,dir_x,dir_y,x,y\n");
+    for (const Row& r : rows(plan, initial, iters)) {
+      if (paper) {
+        fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s),
+                   acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s),
+                   acc_cell(r.ay, r.jry, s), r.dy, r.remy);
+      } else {
+        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.seg,
+                   paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), r.dx, r.remx,
+                   paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy, r.remy, sign(r.negx),
+                   sign(r.negy), r.pos.x, r.pos.y);
+      }
     }
     return;
   }
   if (fmt == TraceFormat::Table) {
     // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
-    fmt::print(os, "a={} b={} n={} preload={} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
+    fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
                plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload),
-               plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+               to_string(plan.spec.dir), plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
     const auto line = [&](auto... c) {
-      fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |\n",
-                 c...);
+      fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |", c...);
     };
     line("iter", "JVX", "JRX", "dX", "remX", "JVY", "JRY", "dY", "remY");
-    os << "|-------|------------|------------|----|-------|------------|------------|----|-------|\n";
-    for (const Row& r : rows(plan, iters)) {
+    os << (paper ? "\n" : " seg | dirs |      x |      y |\n");
+    os << "|-------|------------|------------|----|-------|------------|------------|----|-------|"
+       << (paper ? "\n" : "-----|------|--------|--------|\n");
+    for (const Row& r : rows(plan, initial, iters)) {
       if (r.iter != 0 && !r.dx && !r.dy) continue;
       line(r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), int(r.dx), r.remx,
            paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), int(r.dy), r.remy);
+      if (paper) {
+        os << '\n';
+      } else {
+        fmt::print(os, " {:>3} | {}{}   | {:>6} | {:>6} |\n", r.seg, sign(r.negx), sign(r.negy),
+                   r.pos.x, r.pos.y);
+      }
     }
     return;
   }
@@ -86,14 +118,49 @@ void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration
   j["b"] = plan.spec.b;
   j["bits"] = plan.spec.bits;
   j["preload"] = to_string(plan.spec.preload);
+  j["dir"] = to_string(plan.spec.dir);
+  j["center"] = {plan.spec.center.x, plan.spec.center.y};
   j["from"] = {plan.from.x, plan.from.y};
   j["to"] = {plan.to.x, plan.to.y};
   j["scale"] = s;
-  j["cap"] = plan.cmd.cap;
+  j["cap"] = plan.cmd().cap;
+  j["iteration_bound"] = plan.iteration_bound;
+  auto& segs = j["segments"] = nlohmann::ordered_json::array();
+  for (const auto& sg : plan.segs) {
+    const Command& c = sg.cmd;
+    nlohmann::ordered_json g;
+    g["from"] = {sg.from.x, sg.from.y};
+    g["to"] = {sg.to.x, sg.to.y};
+    g["quadrant"] = sg.quadrant;
+    g["jv_x"] = c.jv_x;
+    g["jv_y"] = c.jv_y;
+    g["jr_x"] = c.jr_x;
+    g["jr_y"] = c.jr_y;
+    g["cap"] = c.cap;
+    g["cnt_x"] = c.cnt_x;
+    g["cnt_y"] = c.cnt_y;
+    g["dir_x"] = sign(c.dir_x_neg);
+    g["dir_y"] = sign(c.dir_y_neg);
+    g["inc_x_on_x"] = c.inc_x_on_x;
+    g["inc_x_on_y"] = c.inc_x_on_y;
+    g["inc_y_on_x"] = c.inc_y_on_x;
+    g["inc_y_on_y"] = c.inc_y_on_y;
+    g["iteration_bound"] = sg.iteration_bound;
+    segs.push_back(std::move(g));
+  }
+  nlohmann::ordered_json in;
+  in["jv_x"] = initial.jv_x;
+  in["jv_y"] = initial.jv_y;
+  in["jr_x"] = initial.jr_x;
+  in["jr_y"] = initial.jr_y;
+  in["cnt_x"] = initial.cnt_x;
+  in["cnt_y"] = initial.cnt_y;
+  j["initial"] = std::move(in);
   auto& recs = j["iterations"] = nlohmann::ordered_json::array();
   for (const auto& it : iters) {
     nlohmann::ordered_json r;
     r["iter"] = it.iter;
+    r["seg"] = it.seg;
     r["active_x"] = it.active_x;
     r["active_y"] = it.active_y;
     r["jv_x"] = it.jv_x;
@@ -102,6 +169,8 @@ void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration
     r["sum_y"] = it.sum_y;
     r["step_x"] = it.step_x;
     r["step_y"] = it.step_y;
+    r["dir_x"] = sign(it.dir_x_neg);
+    r["dir_y"] = sign(it.dir_y_neg);
     r["jr_x"] = it.after.jr_x;
     r["jr_y"] = it.after.jr_y;
     r["cnt_x"] = it.after.cnt_x;
@@ -148,8 +217,8 @@ Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters) {
   s.points = pts.size();
   double sum = 0;
   for (const auto& p : pts) {
-    const double d = ellipse_distance(double(plan.spec.a), double(plan.spec.b), double(p.x),
-                                      double(p.y));
+    const double d = ellipse_distance(double(plan.ax), double(plan.by),
+                                      double(p.x - plan.spec.center.x), double(p.y - plan.spec.center.y));
     sum += d;
     if (d > s.max_dev) {
       s.max_dev = d;

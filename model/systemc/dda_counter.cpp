@@ -5,7 +5,7 @@ namespace dda::sc {
 void dda_counter::comb() {
   const cnt_t c = cnt_q.read();
   active_o.write(c != 0);
-  last_o.write(c == 0 || (c == 1 && dec_i.read()));
+  last_o.write(c == cnt_t(dec_i.read() ? 1 : 0));  // cnt_q - dec_i == 0
 }
 
 void dda_counter::seq() {

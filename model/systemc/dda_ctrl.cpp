@@ -9,15 +9,15 @@ constexpr unsigned kRun = unsigned(hw::State::Run);
 
 void dda_ctrl::comb() {
   const bool idle = state_q.read() == kIdle;
-  const bool ax = active_x_i.read(), ay = active_y_i.read();
-  const bool fin = !ax && !ay;
-  const bool st = !fin && !can_x_i.read() && !can_y_i.read();
+  const bool run_ce = state_q.read() == kRun && ce_i.read();
+  const bool fin = run_ce && !active_x_i.read() && !active_y_i.read();
+  const bool st = run_ce && !fin && !can_x_i.read() && !can_y_i.read();
   finished.write(fin);
-  stall.write(st);
+  stalled.write(st);
   cmd_ready_o.write(idle);
   busy_o.write(!idle);
   load_o.write(idle && cmd_valid_i.read());
-  iterate_o.write(!idle && ce_i.read() && !fin && !st);
+  iterate_o.write(run_ce && !fin && !st);
   done_o.write(done_q.read());
   err_o.write(err_q.read());
   iter_o.write(iter_q.read());
@@ -39,7 +39,7 @@ void dda_ctrl::seq() {
     if (finished.read()) {
       state = kIdle;
       done = true;
-    } else if (stall.read()) {
+    } else if (stalled.read()) {
       state = kIdle;
       err = true;
     } else {
@@ -62,7 +62,7 @@ void dda_ctrl::trace(sc_core::sc_trace_file* tf, const std::string& p) const {
   sc_core::sc_trace(tf, err_q, p + ".err_q");
   sc_core::sc_trace(tf, iter_q, p + ".iter_q");
   sc_core::sc_trace(tf, finished, p + ".finished");
-  sc_core::sc_trace(tf, stall, p + ".stall");
+  sc_core::sc_trace(tf, stalled, p + ".stalled");
 }
 
 }  // namespace dda::sc

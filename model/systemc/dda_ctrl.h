@@ -18,7 +18,7 @@ SC_MODULE(dda_ctrl) {
   sc_core::sc_signal<sc_dt::sc_uint<hw::kStateWidth>> state_q{"state_q"};
   sc_core::sc_signal<bool> done_q{"done_q"}, err_q{"err_q"}, iter_q{"iter_q"};
   // Combinational decisions of a run cycle.
-  sc_core::sc_signal<bool> finished{"finished"}, stall{"stall"};
+  sc_core::sc_signal<bool> finished{"finished"}, stalled{"stalled"};
 
   SC_CTOR(dda_ctrl) {
     SC_METHOD(comb);

@@ -9,7 +9,9 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -48,20 +50,40 @@ Point parse_point(const std::string& name, const std::string& s) {
   }
 }
 
+double parse_double(const std::string& name, const std::string& s, const char* rule) {
+  // strtod accepts what from_chars<double> would; the whole string must be consumed.
+  char* end = nullptr;
+  errno = 0;
+  const double v = s.empty() ? 0.0 : std::strtod(s.c_str(), &end);
+  if (s.empty() || errno != 0 || end != s.c_str() + s.size() || !std::isfinite(v)) {
+    throw InputError(name + " = '" + s + "' is invalid: " + rule);
+  }
+  return v;
+}
+
 struct ArcOptions {
-  std::string a, b, bits, preload = "zero", from, to, engine = "golden", out, format, vcd;
+  std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw",
+                          angle, engine = "golden", out, format, vcd;
 };
 
 void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
                      const std::string& default_format) {
   o.format = default_format;
-  sub->add_option("--a", o.a, "semi-axis along X (positive integer, steps)")->required();
-  sub->add_option("--b", o.b, "semi-axis along Y (positive integer, steps)")->required();
-  sub->add_option("--bits", o.bits, "accumulator width n: capacity 2^n, needs 2^n >= max(a,b)")
-      ->required();
-  sub->add_option("--preload", o.preload, "accumulator preload: zero (the paper) or half");
-  sub->add_option("--from", o.from, "start lattice point X,Y (default a,0)");
-  sub->add_option("--to", o.to, "end lattice point X,Y (default 0,b)");
+  sub->add_option("--a", o.a, "semi-axis a (positive integer, steps)")->required();
+  sub->add_option("--b", o.b, "semi-axis b (positive integer, steps)")->required();
+  sub->add_option("--bits", o.bits,
+                  "accumulator width n: capacity 2^n, needs 2^n >= max(a,b) "
+                  "(default: smallest valid + 4)");
+  sub->add_option("--preload", o.preload, "accumulator preload: zero (the paper, default) or half");
+  sub->add_option("--center", o.center, "centre lattice point X,Y (default 0,0)");
+  sub->add_option("--angle", o.angle,
+                  "turn the ellipse counter-clockwise by DEG degrees about its centre, so the "
+                  "semi-axis a points in direction DEG (multiples of 90 in this version)");
+  sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
+  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + a along the axis of a)");
+  sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on); equal to --from: a full ellipse");
+  sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG (rounded to the lattice)");
+  sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG (rounded to the lattice)");
   sub->add_option("--engine", o.engine, "engine: " + engine_names());
   sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
   sub->add_option("--out", o.out, "write to FILE (atomically) instead of stdout");
@@ -73,11 +95,13 @@ Plan make_plan(const ArcOptions& o) {
   const char* pos = "a semi-axis must be a positive integer";
   s.a = parse_int("a", o.a, pos);
   s.b = parse_int("b", o.b, pos);
-  const std::int64_t bits = parse_int("bits", o.bits, "n must be an integer with 2^n >= max(a, b)");
-  if (bits < 1 || bits > 61) {
-    throw InputError("bits = " + o.bits + " is invalid: n must be between 1 and 61 and 2^n >= max(a, b)");
+  if (!o.bits.empty()) {
+    const std::int64_t bits = parse_int("bits", o.bits, "n must be an integer with 2^n >= max(a, b)");
+    if (bits < 1 || bits > 61) {
+      throw InputError("bits = " + o.bits + " is invalid: n must be between 1 and 61 and 2^n >= max(a, b)");
+    }
+    s.bits = static_cast<int>(bits);
   }
-  s.bits = static_cast<int>(bits);
   if (o.preload == "zero") {
     s.preload = Preload::Zero;
   } else if (o.preload == "half") {
@@ -85,8 +109,32 @@ Plan make_plan(const ArcOptions& o) {
   } else {
     throw InputError("preload = '" + o.preload + "' is invalid: use zero or half");
   }
+  if (o.dir == "ccw") {
+    s.dir = Direction::Ccw;
+  } else if (o.dir == "cw") {
+    s.dir = Direction::Cw;
+  } else {
+    throw InputError("dir = '" + o.dir + "' is invalid: use ccw or cw");
+  }
+  if (!o.center.empty()) s.center = parse_point("center", o.center);
+  if (!o.angle.empty()) {
+    const double deg = parse_double("angle", o.angle, "an angle in degrees");
+    const double turns = deg / 90.0;
+    if (turns != std::floor(turns) || std::fabs(turns) > 1e9) {
+      throw InputError("angle = " + o.angle +
+                       " is not supported yet: this version turns ellipses by multiples of 90 degrees");
+    }
+    s.quarter_turns = static_cast<int>(((static_cast<long long>(turns) % 4) + 4) % 4);
+  }
+  if (!o.from.empty() && !o.from_theta.empty()) {
+    throw InputError("from and from-theta are both given: choose one");
+  }
+  if (!o.to.empty() && !o.to_theta.empty()) throw InputError("to and to-theta are both given: choose one");
+  const char* deg_rule = "a parametric angle in degrees";
   if (!o.from.empty()) s.from = parse_point("from", o.from);
+  if (!o.from_theta.empty()) s.from = theta_point(s, parse_double("from-theta", o.from_theta, deg_rule));
   if (!o.to.empty()) s.to = parse_point("to", o.to);
+  if (!o.to_theta.empty()) s.to = theta_point(s, parse_double("to-theta", o.to_theta, deg_rule));
   return plan_arc(s);
 }
 
@@ -99,56 +147,103 @@ E parse_enum(const std::string& name, const std::string& v, const std::map<std::
   throw InputError(name + " = '" + v + "' is invalid: use one of " + allowed);
 }
 
-// Writes to stdout, or to a temporary file renamed over FILE only once all went well.
-class Output {
+// A file written atomically: a temporary file beside it, renamed over it only once all
+// went well, and removed on any failure. A path naming an existing non-regular file (a
+// device such as /dev/null or /dev/stdout, a FIFO) is written directly instead, and a
+// symbolic link is followed, so neither is ever replaced by a regular file.
+class AtomicFile {
  public:
-  explicit Output(std::string path) : path_(std::move(path)) {
+  AtomicFile() = default;
+  explicit AtomicFile(const std::string& path) : path_(path) {
     if (path_.empty()) return;
-    tmp_ = path_ + ".tmp." + std::to_string(::getpid());
-    file_.open(tmp_, std::ios::out | std::ios::trunc | std::ios::binary);
-    if (!file_) {
-      throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
-    }
-  }
-  ~Output() {
-    if (!committed_ && !tmp_.empty()) {
-      file_.close();
-      std::remove(tmp_.c_str());
-    }
-  }
-  Output(const Output&) = delete;
-  Output& operator=(const Output&) = delete;
-  std::ostream& stream() { return path_.empty() ? std::cout : file_; }
-  void commit() {
-    if (path_.empty()) {
-      std::cout.flush();
-      if (!std::cout) throw GuardError("error writing to standard output");
+    std::error_code ec;
+    const auto st = std::filesystem::status(path_, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+      if (std::filesystem::is_directory(st)) throw GuardError("cannot write '" + path_ + "': it is a directory");
+      direct_ = true;
+      write_path_ = path_;
       return;
     }
-    file_.flush();
-    file_.close();
-    if (file_.fail()) throw GuardError("error writing '" + path_ + "'");
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(path_, ec))) {
+      target_ = std::filesystem::weakly_canonical(path_, ec).string();
+      if (ec) throw GuardError("cannot resolve '" + path_ + "': " + ec.message());
+    } else {
+      target_ = path_;
+    }
+    write_path_ = target_ + ".tmp." + std::to_string(::getpid());
+    std::ofstream probe(write_path_, std::ios::out | std::ios::trunc | std::ios::binary);
+    if (!probe) throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
+  }
+  ~AtomicFile() {
+    if (!committed_ && !direct_ && !write_path_.empty()) std::remove(write_path_.c_str());
+  }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  const std::string& write_path() const { return write_path_; }  // where to write now
+  const std::string& path() const { return path_; }
+  void commit() {
+    if (write_path_.empty() || direct_) return;
+    if (std::rename(write_path_.c_str(), target_.c_str()) != 0) {
       throw GuardError("cannot rename to '" + path_ + "': " + std::strerror(errno));
     }
     committed_ = true;
   }
 
  private:
-  std::string path_, tmp_;
-  std::ofstream file_;
-  bool committed_ = false;
+  std::string path_, target_, write_path_;
+  bool direct_ = false, committed_ = false;
 };
 
-std::vector<Iteration> run_engine(const ArcOptions& o, const Plan& plan) {
+// The command's text output: stdout, or an AtomicFile.
+class Output {
+ public:
+  explicit Output(const std::string& path) : file_(path) {
+    if (path.empty()) return;
+    stream_.open(file_.write_path(), std::ios::out | std::ios::trunc | std::ios::binary);
+    if (!stream_) throw GuardError("cannot write '" + path + "': " + std::strerror(errno));
+  }
+  std::ostream& stream() { return file_.path().empty() ? std::cout : stream_; }
+  void commit() {
+    if (file_.path().empty()) {
+      std::cout.flush();
+      if (!std::cout) throw GuardError("error writing to standard output");
+      return;
+    }
+    stream_.flush();
+    stream_.close();
+    if (stream_.fail()) throw GuardError("error writing '" + file_.path() + "'");
+    file_.commit();
+  }
+
+ private:
+  AtomicFile file_;
+  std::ofstream stream_;
+};
+
+// Plans the arc, runs it on the chosen engine and writes the output (and the waveform)
+// only once everything succeeded.
+template <typename Writer>
+void run_arc_command(const ArcOptions& o, Writer write) {
   const EngineFn fn = find_engine(o.engine);
   if (!fn) throw InputError("engine = '" + o.engine + "' is invalid: use one of " + engine_names());
-  EngineOptions eo;
-  eo.vcd = o.vcd;
   if (!o.vcd.empty() && o.engine == "golden") {
     throw InputError("--vcd is invalid with engine golden: the golden model has no waveform");
   }
-  return fn(plan, eo);
+  if (!o.vcd.empty() && !o.out.empty()) {
+    std::error_code e1, e2;
+    if (std::filesystem::weakly_canonical(o.vcd, e1) == std::filesystem::weakly_canonical(o.out, e2)) {
+      throw InputError("--vcd and --out name the same file '" + o.out + "': they must differ");
+    }
+  }
+  const Plan plan = make_plan(o);
+  Output out(o.out);        // both files are opened before the run: a bad path fails fast
+  AtomicFile wave(o.vcd);
+  EngineOptions eo;
+  eo.vcd = wave.write_path();
+  const EngineRun run = fn(plan, eo);
+  write(out.stream(), plan, run);
+  out.commit();
+  wave.commit();
 }
 
 }  // namespace
@@ -171,6 +266,11 @@ int main(int argc, char** argv) {
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
 
   try {
+    if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 &&
+        std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--version") != 0) {
+      throw InputError(std::string("option '") + argv[1] +
+                       "' is unknown here: options follow a command (trace, path, stats, gen-params)");
+    }
     if (argc > 1 && argv[1][0] != '-') {
       std::string names;
       bool known = false;
@@ -199,27 +299,21 @@ int main(int argc, char** argv) {
       const auto fmt = parse_enum<TraceFormat>(
           "format", tr.format,
           {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
-      const Plan plan = make_plan(tr);
-      const auto iters = run_engine(tr, plan);
-      Output out(tr.out);
-      write_trace(out.stream(), plan, iters, fmt);
-      out.commit();
+      run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_trace(os, plan, r.initial, r.records, fmt);
+      });
     } else if (path->parsed()) {
       const auto fmt = parse_enum<PathFormat>("format", pa.format,
                                               {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
-      const Plan plan = make_plan(pa);
-      const auto iters = run_engine(pa, plan);
-      Output out(pa.out);
-      write_path(out.stream(), path_points(plan, iters), fmt);
-      out.commit();
+      run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_path(os, path_points(plan, r.records), fmt);
+      });
     } else if (stats->parsed()) {
       const auto fmt = parse_enum<StatsFormat>("format", st.format,
                                                {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
-      const Plan plan = make_plan(st);
-      const auto iters = run_engine(st, plan);
-      Output out(st.out);
-      write_stats(out.stream(), plan, compute_stats(plan, iters), fmt);
-      out.commit();
+      run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_stats(os, plan, compute_stats(plan, r.records), fmt);
+      });
     } else if (gen->parsed()) {
       const bool verilog = parse_enum<bool>("kind", gp_kind, {{"verilog", true}, {"markdown", false}});
       Output out(gp_out);

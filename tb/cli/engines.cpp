@@ -11,26 +11,30 @@ namespace dda::cli {
 
 namespace {
 
-std::vector<Iteration> golden_engine(const Plan& plan, const EngineOptions&) {
-  return run_records(plan);
+EngineRun golden_engine(const Plan& plan, const EngineOptions&) {
+  return EngineRun{initial_regs(plan.cmd()), run_records(plan)};
 }
 
 // The SystemC model, driven over its ports with ce_i high; rows are built from its
 // registers sampled after every edge, and a scoreboard checks them against the golden
 // model as they come (a mismatch is a run-time failure, exit status 1).
-std::vector<Iteration> systemc_engine(const Plan& plan, const EngineOptions& opt) {
-  hw::pack_command(plan.cmd);  // throws InputError if the arc exceeds the hardware widths
+EngineRun systemc_engine(const Plan& plan, const EngineOptions& opt) {
+  for (const auto& sg : plan.segs) hw::pack_command(sg.cmd);  // InputError if too wide for the hardware
   sc::ScHarness h(opt.vcd);
   reset_core(h);
-  return drive_arc(h, plan).records;
+  DriveResult r = drive_arc(h, plan);
+  h.close_trace();
+  return EngineRun{r.initial, std::move(r.records)};
 }
 
 // The RTL under Verilator (--cc), driven and checked the same way.
-std::vector<Iteration> rtl_engine(const Plan& plan, const EngineOptions& opt) {
-  hw::pack_command(plan.cmd);
+EngineRun rtl_engine(const Plan& plan, const EngineOptions& opt) {
+  for (const auto& sg : plan.segs) hw::pack_command(sg.cmd);
   rtl::RtlHarness h(opt.vcd);
   reset_core(h);
-  return drive_arc(h, plan).records;
+  DriveResult r = drive_arc(h, plan);
+  h.close_trace();
+  return EngineRun{r.initial, std::move(r.records)};
 }
 
 constexpr std::pair<const char*, EngineFn> kEngines[] = {

@@ -12,7 +12,11 @@ namespace dda::cli {
 struct EngineOptions {
   std::string vcd;  // waveform file, empty for none
 };
-using EngineFn = std::vector<Iteration> (*)(const Plan&, const EngineOptions&);
+struct EngineRun {
+  RegState initial;                // the registers before the first iteration (trace row 0)
+  std::vector<Iteration> records;  // one per iteration
+};
+using EngineFn = EngineRun (*)(const Plan&, const EngineOptions&);
 
 EngineFn find_engine(const std::string& name);
 std::string engine_names();

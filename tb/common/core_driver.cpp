@@ -19,28 +19,53 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
   const std::uint64_t start = h.cycle();
   const auto ce_at = [&](std::uint64_t c) { return opt.ce ? opt.ce(c) : true; };
   // Watchdog: the golden iteration bound, generously stretched for ce_i stalls.
-  const std::uint64_t limit = 64 + 64 * (plan.iteration_bound + 16);
+  const std::uint64_t limit = 64 + 64 * (plan.iteration_bound + 16 * plan.segs.size());
+  const std::size_t nseg = plan.segs.size();
 
-  // Command handshake: valid until a rising edge where ready was high.
-  h.set_command(true, hw::pack_command(plan.cmd));
-  for (;;) {
-    h.set_ce(ce_at(h.cycle()));
-    const bool ready = h.cmd_ready();
-    h.tick();
-    if (ready) break;
-    if (h.cycle() - start > 1000) throw GuardError("watchdog: command not accepted in 1000 cycles");
-  }
-  h.set_command(false, {});
-
+  // The pieces' commands are presented back to back: the next one as soon as the
+  // previous one was taken (valid/ready: held until a rising edge where ready was high).
+  std::size_t presented = 0, running = 0;
+  h.set_command(true, hw::pack_command(plan.segs[0].cmd));
   Scoreboard sb(plan, h.name());
   RecordBuilder rb(plan.from);
+  bool started = false;  // the first command was taken
   for (;;) {
+    if (opt.reset_at_cycle != 0 && h.cycle() - start + 1 >= opt.reset_at_cycle) {
+      reset_core(h, 1);
+      res.cycles = h.cycle() - start;
+      res.end = rb.pos();
+      res.was_reset = true;
+      return res;
+    }
     h.set_ce(ce_at(h.cycle()));
+    const bool offering = presented < nseg;
+    const bool ready = offering && h.cmd_ready();
     const CoreSample pre = h.sample();
     h.tick();
     const CoreSample post = h.sample();
+    if (ready) {
+      if (!started) {
+        res.initial.jv_x = std::int64_t(post.jv_x);
+        res.initial.jv_y = std::int64_t(post.jv_y);
+        res.initial.jr_x = std::int64_t(post.jr_x);
+        res.initial.jr_y = std::int64_t(post.jr_y);
+        res.initial.cnt_x = std::int64_t(post.cnt_x);
+        res.initial.cnt_y = std::int64_t(post.cnt_y);
+      }
+      started = true;
+      ++presented;
+      if (presented < nseg) {
+        h.set_command(true, hw::pack_command(plan.segs[presented].cmd));
+      } else {
+        h.set_command(false, {});
+      }
+    }
+    if (!started) {
+      if (h.cycle() - start > 1000) throw GuardError("watchdog: command not accepted in 1000 cycles");
+      continue;
+    }
     Iteration rec;
-    if (rb.on_edge(pre, post, rec)) {
+    if (rb.on_edge(pre, post, static_cast<std::uint32_t>(running), rec)) {
       ++res.iterations;
       if (opt.check) sb.on_iteration(post, h.cycle());
       if (opt.keep_records) res.records.push_back(rec);
@@ -48,6 +73,7 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
         reset_core(h, 1);
         res.cycles = h.cycle() - start;
         res.end = rb.pos();
+        res.was_reset = true;
         return res;
       }
     }
@@ -59,7 +85,7 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
     }
     if (post.done) {
       if (opt.check) sb.on_done(h.cycle());
-      break;
+      if (++running == nseg) break;
     }
     if (h.cycle() - start > limit) {
       throw GuardError("watchdog: no done_o within " + std::to_string(limit) + " cycles");
@@ -68,7 +94,7 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
   res.cycles = h.cycle() - start;
   res.end = rb.pos();
   if (opt.check && res.end != plan.to) {
-    throw MismatchError("engine ended at (" + std::to_string(res.end.x) + "," +
+    throw MismatchError(std::string(h.name()) + " ended at (" + std::to_string(res.end.x) + "," +
                         std::to_string(res.end.y) + ") instead of the end point");
   }
   return res;

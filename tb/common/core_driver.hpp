@@ -36,15 +36,20 @@ struct DriveOptions {
   std::function<bool(std::uint64_t cycle)> ce;  // ce_i per cycle; empty: always high
   bool check = true;                            // scoreboard against the golden model
   bool keep_records = true;                     // return the sampled records
-  // Reset the core after this many iterations (0: never) and check it stays idle.
+  // Reset the core after this many iterations (0: never).
   std::uint64_t reset_after = 0;
+  // Reset the core on this clock edge counted from the command's presentation (0:
+  // never): any edge, the load edge and ce_i stalls included.
+  std::uint64_t reset_at_cycle = 0;
 };
 
 struct DriveResult {
+  RegState initial;  // registers sampled right after the first command was loaded
   std::vector<Iteration> records;
   std::uint64_t iterations = 0;
   std::uint64_t cycles = 0;  // from presenting the command to done (or to the reset)
   Point end;
+  bool was_reset = false;
 };
 
 // Holds rst_ni low for `cycles` edges, then releases it.

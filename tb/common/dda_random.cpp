@@ -14,13 +14,16 @@ std::uint64_t test_seed(std::uint64_t default_seed) {
 std::string describe(const Plan& plan) {
   std::ostringstream s;
   s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits
-    << " --preload " << to_string(plan.spec.preload) << " --from " << plan.from.x << ','
-    << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y;
+    << " --preload " << to_string(plan.spec.preload);
+  if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;
+  if (plan.spec.quarter_turns != 0) s << " --angle " << 90 * plan.spec.quarter_turns;
+  if (plan.spec.dir != Direction::Ccw) s << " --dir cw";
+  s << " --from " << plan.from.x << ',' << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y;
   return s.str();
 }
 
-RandomArcs::RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max)
-    : rng_(seed), max_axis_(max_axis), extra_bits_max_(extra_bits_max) {}
+RandomArcs::RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max, ArcKind kind)
+    : rng_(seed), max_axis_(max_axis), extra_bits_max_(extra_bits_max), kind_(kind) {}
 
 std::optional<Plan> RandomArcs::next() {
   // Floating point only shapes the draw (axis lengths, angles); what is drawn is an exact
@@ -37,8 +40,19 @@ std::optional<Plan> RandomArcs::next() {
   s.b = log_axis();
   s.bits = smallest_valid_bits(s.a, s.b) + int(uni(std::uint64_t(extra_bits_max_) + 1));
   s.preload = uni(2) ? Preload::Half : Preload::Zero;
-  // One in eight keeps the default quarter arc; the others draw two parameter angles.
-  if (uni(8) != 0) {
+  if (kind_ == ArcKind::Whole) {
+    if (uni(16) == 0) s.b = s.a;  // circles
+    s.bits = smallest_valid_bits(s.a, s.b) + int(uni(std::uint64_t(extra_bits_max_) + 1));
+    s.center = Point{std::int64_t(uni(2001)) - 1000, std::int64_t(uni(2001)) - 1000};
+    s.dir = uni(2) ? Direction::Cw : Direction::Ccw;
+    s.quarter_turns = int(uni(4));
+    const double turn = 360.0 * double(uni(1u << 20)) / double(1u << 20);
+    s.from = theta_point(s, turn);
+    // One in eight is a full turn, one in eight starts on a vertex.
+    const unsigned shape = unsigned(uni(8));
+    if (shape == 1) s.from = theta_point(s, 90.0 * double(uni(4)));
+    s.to = shape == 0 ? *s.from : theta_point(s, 360.0 * double(uni(1u << 20)) / double(1u << 20));
+  } else if (uni(8) != 0) {  // one in eight keeps the default quarter arc
     const double kQuarter = std::acos(0.0);
     double t0 = kQuarter * double(uni(1u << 20)) / double(1u << 20);
     double t1 = kQuarter * double(uni(1u << 20)) / double(1u << 20);

@@ -18,9 +18,16 @@ std::uint64_t test_seed(std::uint64_t default_seed);
 // Reproducer for a plan: the `dda` options that rebuild it.
 std::string describe(const Plan& plan);
 
+enum class ArcKind {
+  Quarter,  // quadrant I, counter-clockwise, sub-arcs of the quarter (the paper's case)
+  Whole,    // any arc: random centre, start and end anywhere on the ellipse, both
+            // directions, full turns, circles, quarter turns of the axes
+};
+
 class RandomArcs {
  public:
-  RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max = 8);
+  RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max = 8,
+             ArcKind kind = ArcKind::Quarter);
   // The next configuration, or nullopt when the drawn one was rejected by plan_arc
   // (an unreachable end point, for example); rejected() counts those.
   std::optional<Plan> next();
@@ -30,6 +37,7 @@ class RandomArcs {
   std::mt19937_64 rng_;
   std::int64_t max_axis_;
   int extra_bits_max_;
+  ArcKind kind_;
   std::uint64_t rejected_ = 0;
 };
 

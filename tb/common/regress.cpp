@@ -6,35 +6,49 @@
 #include <random>
 #include <string>
 
+#include "dda/hw_params.hpp"
 #include "dda_random.hpp"
 
 namespace dda {
 
 MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
-  RandomArcs gen(seed, 4096);
+  RandomArcs quarter(seed, 4096), whole(seed + 1, 4096, 8, ArcKind::Whole);
   std::mt19937_64 rng(seed ^ 0x5eedULL);
   reset_core(h);
   MixedStats st;
   while (st.arcs < arcs) {
-    const auto plan = gen.next();
+    const auto plan = (st.arcs % 2 ? whole : quarter).next();
     if (!plan) continue;
     DriveOptions opt;
     opt.keep_records = false;
     const unsigned kind = unsigned(rng() % 8);
-    if (kind == 0) {  // random ce_i stalls
+    if (kind == 0 || (kind == 1 && rng() % 2)) {  // random ce_i stalls
       opt.ce = [&](std::uint64_t) { return rng() % 4 != 0; };
       ++st.ce_stalled;
-    } else if (kind == 1 && plan->cmd.cnt_x + plan->cmd.cnt_y > 4) {  // reset halfway
-      opt.reset_after = 1 + rng() % 8;
-      ++st.reset_halfway;
+    }
+    if (kind == 1) {  // a reset on any edge the arc runs through (with ce high)
+      const std::uint64_t span = run(*plan).iterations + 2 * plan->segs.size() + 1;
+      opt.reset_at_cycle = 1 + rng() % span;
     }
     try {
       const DriveResult r = drive_arc(h, *plan, opt);
       st.iterations += r.iterations;
       st.cycles += r.cycles;
+      st.pieces += plan->segs.size();
+      if (r.was_reset) {
+        ++st.resets;
+        // Idle, no pulse, ready for the next command.
+        h.set_ce(true);
+        h.tick();
+        const CoreSample s = h.sample();
+        if (s.state != unsigned(hw::State::Idle) || s.step_x || s.step_y || s.iter || s.done ||
+            !h.cmd_ready()) {
+          throw MismatchError(std::string(h.name()) + " not idle after a reset");
+        }
+      }
     } catch (const GuardError& e) {
-      const std::string where = "arc " + std::to_string(st.arcs) + " (dda trace " + describe(*plan) +
-                                " --engine " + h.name() + "): " + e.what();
+      const std::string where = "arc " + std::to_string(st.arcs) + " (" + describe(*plan) +
+                                "): " + e.what();
       if (dynamic_cast<const MismatchError*>(&e)) throw MismatchError(where);
       throw GuardError(where);
     }
@@ -47,10 +61,19 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
   long arcs = 2000;
   std::uint64_t seed = 1;
   for (int i = 1; i < argc; i += 2) {
+    char* end = nullptr;
     if (i + 1 < argc && !std::strcmp(argv[i], "--arcs")) {
-      arcs = std::atol(argv[i + 1]);
+      arcs = std::strtol(argv[i + 1], &end, 10);
+      if (*end != '\0' || arcs < 1) {
+        std::fprintf(stderr, "%s: --arcs '%s' is invalid: a positive integer\n", argv[0], argv[i + 1]);
+        return 2;
+      }
     } else if (i + 1 < argc && !std::strcmp(argv[i], "--seed")) {
-      seed = std::strtoull(argv[i + 1], nullptr, 0);
+      seed = std::strtoull(argv[i + 1], &end, 0);
+      if (*end != '\0' || argv[i + 1][0] == '-' || argv[i + 1][0] == '\0') {
+        std::fprintf(stderr, "%s: --seed '%s' is invalid: a non-negative integer\n", argv[0], argv[i + 1]);
+        return 2;
+      }
     } else {
       std::fprintf(stderr, "usage: %s [--arcs N] [--seed S]\n", argv[0]);
       return 2;
@@ -58,15 +81,15 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
   }
   try {
     const MixedStats st = run_mixed(h, seed, arcs);
-    std::printf("%s regression: seed %llu: %ld arcs (%llu with ce stalls, %llu reset halfway), "
-                "%llu iterations and %llu cycles compared, 0 mismatches\n",
+    std::printf("%s regression: seed %llu: %ld arcs in %llu pieces (%llu with ce stalls, %llu reset "
+                "mid-arc), %llu iterations and %llu cycles compared, 0 mismatches\n",
                 h.name(), static_cast<unsigned long long>(seed), st.arcs,
-                static_cast<unsigned long long>(st.ce_stalled),
-                static_cast<unsigned long long>(st.reset_halfway),
+                static_cast<unsigned long long>(st.pieces), static_cast<unsigned long long>(st.ce_stalled),
+                static_cast<unsigned long long>(st.resets),
                 static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s regression: FAIL (seed %llu): %s\n", h.name(),
-                 static_cast<unsigned long long>(seed), e.what());
+    std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(),
+                 argv[0], static_cast<unsigned long long>(seed), arcs, e.what());
     return 1;
   }
   return 0;

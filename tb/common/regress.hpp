@@ -10,12 +10,14 @@ namespace dda {
 
 struct MixedStats {
   long arcs = 0;
-  std::uint64_t iterations = 0, cycles = 0, ce_stalled = 0, reset_halfway = 0;
+  std::uint64_t iterations = 0, cycles = 0, ce_stalled = 0, resets = 0, pieces = 0;
 };
 
-// `arcs` random arcs back to back (a, b log-uniform in [1, 4096]), one in eight with
-// random ce_i stalls and one in eight reset after a few iterations. Throws on the first
-// mismatch, naming the arc's reproducer.
+// `arcs` random arcs back to back (a, b log-uniform in [1, 4096]; quarter arcs and
+// whole-ellipse arcs alternately), one in eight with random ce_i stalls, one in eight
+// reset on a random clock edge of the arc (the load edge and ce_i stalls included), after
+// which the core must be idle and run the next arc. Throws on the first mismatch, with
+// the seed and the arc.
 MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs);
 
 int regress_main(CoreHarness& h, int argc, char* argv[]);

@@ -12,10 +12,14 @@ std::uint64_t hw_value(std::int64_t v) { return static_cast<std::uint64_t>(v) & 
 
 }  // namespace
 
-bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, Iteration& rec) {
+bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, std::uint32_t seg,
+                            Iteration& rec) {
   if (!post.iter) return false;
   rec = Iteration{};
   rec.iter = ++n_;
+  rec.seg = seg;
+  rec.dir_x_neg = post.dir_x;
+  rec.dir_y_neg = post.dir_y;
   rec.active_x = pre.cnt_x != 0;
   rec.active_y = pre.cnt_y != 0;
   rec.jv_x = static_cast<std::int64_t>(pre.jv_x);
@@ -37,16 +41,18 @@ bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, Itera
 }
 
 Scoreboard::Scoreboard(const Plan& plan, std::string engine)
-    : plan_(plan), engine_(std::move(engine)), dp_(plan.cmd, plan.from) {}
+    : plan_(plan), engine_(std::move(engine)), dp_(plan.segs.front().cmd, plan.segs.front().from) {}
 
 void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
   if (dp_.done()) {
     std::ostringstream m;
-    m << engine_ << ": iteration at cycle " << cycle << " after the golden run ended ("
-      << dp_.iterations() << " iterations)";
+    m << engine_ << " mismatch: iteration at cycle " << cycle << " after the golden run of piece "
+      << seg_ << " ended (" << dp_.iterations() << " iterations)";
     throw MismatchError(m.str());
   }
-  const Iteration g = dp_.iterate();
+  Iteration g = dp_.iterate();
+  g.iter = ++iters_;
+  const Command& cmd = plan_.segs[seg_].cmd;
   struct Cmp {
     const char* name;
     std::uint64_t expect, got;
@@ -60,10 +66,18 @@ void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
       {"u_cnt_y.cnt_q", hw_value(g.after.cnt_y), post.cnt_y},
       {"u_int_x.jv_q", hw_value(g.after.jv_x), post.jv_x},
       {"u_int_y.jv_q", hw_value(g.after.jv_y), post.jv_y},
-      {"dir_x_q", plan_.cmd.dir_x_neg, post.dir_x},
-      {"dir_y_q", plan_.cmd.dir_y_neg, post.dir_y},
-      {"cap_q", hw_value(plan_.cmd.cap), post.cap},
+      {"dir_x_q", cmd.dir_x_neg, post.dir_x},
+      {"dir_y_q", cmd.dir_y_neg, post.dir_y},
+      {"cap_q", hw_value(cmd.cap), post.cap},
+      {"u_int_x.inc_on_x_q", hw_value(cmd.inc_x_on_x), post.inc_x_on_x},
+      {"u_int_x.inc_on_y_q", hw_value(cmd.inc_x_on_y), post.inc_x_on_y},
+      {"u_int_y.inc_on_x_q", hw_value(cmd.inc_y_on_x), post.inc_y_on_x},
+      {"u_int_y.inc_on_y_q", hw_value(cmd.inc_y_on_y), post.inc_y_on_y},
       {"u_ctrl.done_q", dp_.done(), post.done},
+      {"u_ctrl.err_q", 0, post.err},
+      {"u_ctrl.iter_q", 1, post.iter},
+      // Still running unless this iteration ended the command.
+      {"u_ctrl.state_q", dp_.done() ? post.state : unsigned(hw::State::Run), post.state},
   };
   for (const auto& r : regs) {
     if (r.expect != r.got) {
@@ -79,10 +93,11 @@ void Scoreboard::on_done(std::uint64_t cycle) {
   if (!dp_.done()) {
     std::ostringstream m;
     m << engine_ << " mismatch: done at cycle " << cycle << " after " << dp_.iterations()
-      << " iterations, but the golden run owes (" << dp_.regs().cnt_x << ", " << dp_.regs().cnt_y
-      << ") steps";
+      << " iterations of piece " << seg_ << ", but the golden run owes (" << dp_.regs().cnt_x
+      << ", " << dp_.regs().cnt_y << ") steps";
     throw MismatchError(m.str());
   }
+  if (++seg_ < plan_.segs.size()) dp_ = Datapath(plan_.segs[seg_].cmd, plan_.segs[seg_].from);
 }
 
 std::string compare_samples(const CoreSample& a, const CoreSample& b) {
@@ -96,6 +111,10 @@ std::string compare_samples(const CoreSample& a, const CoreSample& b) {
       {"u_int_x.sum", a.sum_x, b.sum_x},  {"u_int_y.sum", a.sum_y, b.sum_y},
       {"u_cnt_x.cnt_q", a.cnt_x, b.cnt_x}, {"u_cnt_y.cnt_q", a.cnt_y, b.cnt_y},
       {"cap_q", a.cap, b.cap},            {"step_x_q", a.step_x, b.step_x},
+      {"u_int_x.inc_on_x_q", a.inc_x_on_x, b.inc_x_on_x},
+      {"u_int_x.inc_on_y_q", a.inc_x_on_y, b.inc_x_on_y},
+      {"u_int_y.inc_on_x_q", a.inc_y_on_x, b.inc_y_on_x},
+      {"u_int_y.inc_on_y_q", a.inc_y_on_y, b.inc_y_on_y},
       {"step_y_q", a.step_y, b.step_y},   {"dir_x_q", a.dir_x, b.dir_x},
       {"dir_y_q", a.dir_y, b.dir_y},      {"u_ctrl.state_q", a.state, b.state},
       {"u_ctrl.done_q", a.done, b.done},  {"u_ctrl.err_q", a.err, b.err},

@@ -20,6 +20,8 @@ struct CoreSample {
   std::uint64_t sum_x = 0, sum_y = 0;                    // u_int_*.sum (adder, combinational)
   std::uint64_t cnt_x = 0, cnt_y = 0;                    // u_cnt_*.cnt_q
   std::uint64_t cap = 0;                                 // cap_q
+  std::uint64_t inc_x_on_x = 0, inc_x_on_y = 0;          // u_int_x.inc_on_x_q, inc_on_y_q
+  std::uint64_t inc_y_on_x = 0, inc_y_on_y = 0;          // u_int_y.inc_on_x_q, inc_on_y_q
   bool step_x = false, step_y = false, dir_x = false, dir_y = false;  // *_q
   unsigned state = 0;                                   // u_ctrl.state_q
   bool done = false, err = false, iter = false;          // u_ctrl.*_q
@@ -37,7 +39,7 @@ class RecordBuilder {
   explicit RecordBuilder(Point start) : pos_(start) {}
   // pre: sampled before the edge, post: after it. Returns true (and fills rec) if an
   // iteration happened on this edge (post.iter).
-  bool on_edge(const CoreSample& pre, const CoreSample& post, Iteration& rec);
+  bool on_edge(const CoreSample& pre, const CoreSample& post, std::uint32_t seg, Iteration& rec);
   Point pos() const { return pos_; }
 
  private:
@@ -52,15 +54,18 @@ class Scoreboard {
   // After an edge with an iteration: throws MismatchError naming the first register
   // that differs, the iteration, the cycle and both values.
   void on_iteration(const CoreSample& post, std::uint64_t cycle);
-  // After the edge that raised done: the golden run must be complete too.
+  // After an edge that raised done (the end of a command): the golden run of that
+  // piece must be complete too; the next iteration belongs to the next piece.
   void on_done(std::uint64_t cycle);
-  std::uint64_t iterations() const { return dp_.iterations(); }
-  bool golden_done() const { return dp_.done(); }
+  std::uint64_t iterations() const { return iters_; }
+  std::size_t segment() const { return seg_; }
 
  private:
   Plan plan_;
   std::string engine_;
+  std::size_t seg_ = 0;
   Datapath dp_;
+  std::uint64_t iters_ = 0;
 };
 
 // Compares two samples register by register (e.g. SystemC against RTL, every cycle).

@@ -1,5 +1,7 @@
 #include "sc_harness.hpp"
 
+#include <cstdio>
+
 namespace dda::sc {
 
 ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory) {
@@ -22,9 +24,10 @@ ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory
   core_->err_o(err_);
   core_->iter_o(iter_);
   if (!vcd.empty()) {
-    std::string base = vcd;
-    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0) base.resize(base.size() - 4);
-    tf_ = sc_core::sc_create_vcd_trace_file(base.c_str());
+    // SystemC appends ".vcd" to the name it is given; close_trace() moves the file to
+    // exactly the requested name.
+    vcd_ = vcd;
+    tf_ = sc_core::sc_create_vcd_trace_file(vcd.c_str());
     tf_->set_time_unit(1, sc_core::SC_NS);
     core_->trace(tf_);
     sc_core::sc_trace(tf_, step_x_, "step_x_o");
@@ -37,12 +40,22 @@ ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory
   }
 }
 
-ScHarness::~ScHarness() { close_trace(); }
+ScHarness::~ScHarness() {
+  try {
+    close_trace();
+  } catch (const std::exception&) {
+    // Destructors do not throw; the engine calls close_trace() itself to report it.
+  }
+}
 
 void ScHarness::close_trace() {
   if (tf_) {
     sc_core::sc_close_vcd_trace_file(tf_);
     tf_ = nullptr;
+    const std::string written = vcd_ + ".vcd";
+    if (std::rename(written.c_str(), vcd_.c_str()) != 0) {
+      throw GuardError("cannot write the waveform '" + vcd_ + "'");
+    }
   }
 }
 
@@ -92,6 +105,10 @@ CoreSample sample_core(const dda_core& c) {
   s.cnt_x = c.u_cnt_x.cnt_q.read().to_uint64();
   s.cnt_y = c.u_cnt_y.cnt_q.read().to_uint64();
   s.cap = c.cap_q.read().to_uint64();
+  s.inc_x_on_x = c.u_int_x->inc_on_x_q.read().to_uint64();
+  s.inc_x_on_y = c.u_int_x->inc_on_y_q.read().to_uint64();
+  s.inc_y_on_x = c.u_int_y->inc_on_x_q.read().to_uint64();
+  s.inc_y_on_y = c.u_int_y->inc_on_y_q.read().to_uint64();
   s.step_x = c.step_x_q.read();
   s.step_y = c.step_y_q.read();
   s.dir_x = c.dir_x_q.read();

@@ -32,7 +32,7 @@ class ScHarness : public CoreHarness {
   const char* name() const override { return "systemc"; }
 
   dda_core& core() { return *core_; }
-  // Finish the waveform file (also done by the destructor).
+  // Finish the waveform file (also done by the destructor, which cannot report a failure).
   void close_trace();
 
  private:
@@ -43,6 +43,7 @@ class ScHarness : public CoreHarness {
   sc_core::sc_signal<bool> busy_{"busy"}, done_{"done"}, err_{"err"}, iter_{"iter"};
   std::unique_ptr<dda_core> core_;
   sc_core::sc_trace_file* tf_ = nullptr;
+  std::string vcd_;
   bool started_ = false;
 };
 

@@ -175,7 +175,12 @@ int run_main(int argc, char** argv) {
   if (!to.empty()) spec.to = parse_point("to", to);
 
   const dda::Plan plan = dda::plan_arc(spec);
-  const auto fields = dda::hw::command_fields(plan.cmd);  // throws if a value does not fit
+  if (plan.segs.size() != 1) {
+    std::fprintf(stderr, "gen_core_vectors: the arc has %zu pieces; this bench runs one command\n",
+                 plan.segs.size());
+    return 2;
+  }
+  const auto fields = dda::hw::command_fields(plan.cmd());  // throws if a value does not fit
   const auto records = dda::run_records(plan);
 
   std::ostringstream what;
@@ -186,7 +191,7 @@ int run_main(int argc, char** argv) {
   std::ostringstream cmd;
   cmd << "// cmd.hex: " << what.str() << "; DDA_CMD_WIDTH = " << dda::hw::kCmdWidth
       << " bits, most significant digit first\n"
-      << command_hex(plan.cmd) << '\n';
+      << command_hex(plan.cmd()) << '\n';
 
   std::ostringstream exp;
   exp << "// expect.hex: " << what.str() << "; registers after each iteration, one line each\n"

@@ -22,6 +22,7 @@ RtlHarness::RtlHarness(const std::string& vcd)
     vcd_ = std::make_unique<VerilatedVcdC>();
     top_->trace(vcd_.get(), 99);
     vcd_->open(vcd.c_str());
+    if (!vcd_->isOpen()) throw GuardError("cannot write the waveform '" + vcd + "'");
     vcd_->dump(ctx_->time());
   }
 }

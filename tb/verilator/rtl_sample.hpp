@@ -18,6 +18,10 @@ CoreSample sample_root(const Root* r) {
   s.cnt_x = r->dda_core__DOT__u_cnt_x__DOT__cnt_q;
   s.cnt_y = r->dda_core__DOT__u_cnt_y__DOT__cnt_q;
   s.cap = r->dda_core__DOT__cap_q;
+  s.inc_x_on_x = r->dda_core__DOT__u_int_x__DOT__inc_on_x_q;
+  s.inc_x_on_y = r->dda_core__DOT__u_int_x__DOT__inc_on_y_q;
+  s.inc_y_on_x = r->dda_core__DOT__u_int_y__DOT__inc_on_x_q;
+  s.inc_y_on_y = r->dda_core__DOT__u_int_y__DOT__inc_on_y_q;
   s.step_x = r->dda_core__DOT__step_x_q;
   s.step_y = r->dda_core__DOT__step_y_q;
   s.dir_x = r->dda_core__DOT__dir_x_q;

@@ -29,6 +29,7 @@ struct Point {
   std::int64_t y = 0;
   friend bool operator==(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
   friend bool operator!=(const Point& p, const Point& q) { return !(p == q); }
+  friend Point operator+(const Point& p, const Point& q) { return Point{p.x + q.x, p.y + q.y}; }
 };
 
 // One hardware command: everything the datapath needs to run one arc.
@@ -54,9 +55,14 @@ struct RegState {
   }
 };
 
+// The registers right after a command is loaded.
+RegState initial_regs(const Command& c);
+
 // One iteration: the datapath's inputs, intermediate sums and the registers after it.
 struct Iteration {
-  std::uint64_t iter = 0;           // 1-based
+  std::uint64_t iter = 0;           // 1-based, counted across the pieces of an arc
+  std::uint32_t seg = 0;            // index of the piece (command) it belongs to
+  bool dir_x_neg = false, dir_y_neg = false;  // step directions of that piece
   bool active_x = false, active_y = false;  // counter was non-zero: the axis added
   std::int64_t jv_x = 0, jv_y = 0;  // integrands used in this iteration
   std::int64_t sum_x = 0, sum_y = 0;  // accumulator sums before overflow removal
@@ -77,6 +83,9 @@ class Datapath {
   // An active axis whose integrand is 0 and can no longer change: the arc never ends.
   bool stalled() const;
   Iteration iterate();
+  // The same iteration without building its record (the fast path for validation,
+  // cross-checks and benchmarks).
+  void step();
 
  private:
   Command cmd_;
@@ -88,34 +97,67 @@ class Datapath {
 enum class Preload { Zero, Half };
 const char* to_string(Preload p);
 
-// User-level description of a quadrant-I counter-clockwise arc (the paper's case).
+enum class Direction { Ccw, Cw };
+const char* to_string(Direction d);
+
+// An arc of the ellipse with semi-axes a, b, turned counter-clockwise by quarter_turns
+// * 90 degrees about its centre (so the semi-axis a points along X for 0 and 2 turns,
+// along Y for 1 and 3).
 struct ArcSpec {
   std::int64_t a = 0, b = 0;
-  int bits = 0;                   // n: capacity 2^n in the paper's units
+  int quarter_turns = 0;          // 0..3
+  int bits = 0;                   // n: capacity 2^n in the paper's units; 0 = default_bits()
   Preload preload = Preload::Zero;
-  std::optional<Point> from, to;  // defaults (a,0) and (0,b)
+  Point center;                   // lattice point
+  Direction dir = Direction::Ccw;
+  std::optional<Point> from, to;  // absolute lattice points; defaults: the quarter arc
+                                  // center + (ax,0) to center + (0,by)
 };
 
-// A validated arc: the resolved points, the hardware command and the guard bound.
-struct Plan {
-  ArcSpec spec;
+// One monotone piece of an arc (each axis moves one way): one hardware command.
+// Pieces meet at the ellipse's vertices, which are lattice points.
+struct Segment {
   Point from, to;
-  std::int64_t scale = 1;          // a*b: divide register values by it for paper units
+  int quadrant = 1;                   // 1..4: the quadrant (about the centre) it runs in
   Command cmd;
-  std::uint64_t iteration_bound = 0;  // a run that passes it is stopped (GuardError)
+  std::uint64_t iteration_bound = 0;  // a run of this piece that passes it is stopped
+};
+
+// A validated arc: resolved points and bits, its pieces, and the guard bound.
+struct Plan {
+  ArcSpec spec;                    // with bits resolved
+  Point from, to;
+  bool full = false;               // from == to: one full turn
+  std::int64_t ax = 0, by = 0;     // semi-axes along X and Y (a, b swapped by odd turns)
+  std::int64_t scale = 1;          // a*b: divide register values by it for paper units
+  std::vector<Segment> segs;
+  std::uint64_t iteration_bound = 0;  // sum of the pieces' bounds
+  const Command& cmd() const { return segs.front().cmd; }
 };
 
 // Smallest valid n for the semi-axes: smallest n >= 1 with 2^n >= max(a, b).
 int smallest_valid_bits(std::int64_t a, std::int64_t b);
+// Widths above smallest_valid_bits + kMaxExtraBits are refused: past +4 more bits
+// change nothing (spec, accuracy table) and each bit doubles the run's length.
+inline constexpr int kMaxExtraBits = 16;
+// The width used when none is given: four bits above the smallest valid width, where
+// half preload does its best (spec: more bits change nothing).
+int default_bits(std::int64_t a, std::int64_t b);
 
 // Validate and plan. Throws InputError naming the value and the rule it breaks.
 Plan plan_arc(const ArcSpec& spec);
 
+// Lattice point of the parametric angle theta (degrees): center + (a cos, b sin),
+// each coordinate rounded to the nearest integer, halves away from zero. Multiples of
+// 90 degrees use exact cosines and sines.
+Point theta_point(const ArcSpec& spec, double theta_deg);
+
 // Largest distance (in steps) a start or end point may lie from the ellipse.
 inline constexpr double kPointTolerance = 1.0;
 
-// Run a plan to the end. Calls on_iter for each iteration if given.
-// Throws GuardError if the iteration bound is passed or the datapath stalls.
+// Run a plan to the end, piece after piece. Calls on_iter for each iteration if given.
+// Throws GuardError if a piece passes its iteration bound, stalls, or ends anywhere but
+// its end point.
 struct RunSummary {
   std::uint64_t iterations = 0;
   Point end;
@@ -125,12 +167,16 @@ RunSummary run(const Plan& plan, const std::function<void(const Iteration&)>& on
 std::vector<Iteration> run_records(const Plan& plan);
 
 // Documented bound on the distance of any path point from the ellipse, in steps
-// (docs/design.md, "Deviation bound"): |r - 1| * max(a, b) + E, where r^2 =
-// x0^2/a^2 + y0^2/b^2 at the start (the DDA follows the ellipse through its start
-// point, scaled by r) and E is the DDA's own drift: 2 + cbrt(max(a, b)) / 2 steps with
-// zero preload (the paper's drift grows with size), 1.5 steps with half preload.
-// E is empirical: scripts/deviation-survey prints the measured worst excess by size.
+// (docs/golden-model.md, "Deviation bound"): |r - 1| * max(a, b) + E, where r^2 =
+// u0^2/a^2 + v0^2/b^2 at the start relative to the centre (the DDA follows the ellipse
+// through its start point, scaled by r) and E is the DDA's own drift: 2 + cbrt(max(a,
+// b)) / 2 steps with zero preload (the paper's drift grows with size), 1.5 steps with
+// half preload. E is empirical: build/tb/deviation_survey prints the measured worst
+// drift by size.
 double deviation_bound(const Plan& plan);
+// Its first term, |r - 1| * max(a, b): how far the ellipse through the start point lies
+// from the nominal one.
+double start_offset(const Plan& plan);
 
 // Shortest distance from (px, py) to the ellipse x^2/a^2 + y^2/b^2 = 1 (a, b > 0).
 // Absolute error below 1e-9 * max(a, b). Eberly's bisection method, no sampling.

@@ -18,8 +18,15 @@ namespace dda {
 std::string paper_units(std::int64_t v, std::int64_t scale);
 
 enum class TraceFormat { Csv, Table, Json };
+// Row 0 shows `initial` (the registers after the first command's load; by default the
+// command's own values). The paper's columns are printed for a one-piece
+// counter-clockwise quadrant-I arc about the origin; any other arc adds the piece, the
+// step directions and the position after each iteration.
+void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
+                 const std::vector<Iteration>& iters, TraceFormat fmt);
 void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
                  TraceFormat fmt);
+bool paper_columns(const Plan& plan);
 
 // Lattice points of the path: the start, then the position after every move.
 std::vector<Point> path_points(const Plan& plan, const std::vector<Iteration>& iters);
