@@ -45,12 +45,16 @@ module dda_core (
 
   // Registers of the top.
   reg [AccWidth-1:0] cap_q    /* verilator public_flat_rd */;
-  reg                dir_x_q  /* verilator public_flat_rd */;
+  reg                cdir_x_q /* verilator public_flat_rd */;  // the running command's
+  reg                cdir_y_q /* verilator public_flat_rd */;  // step directions
+  reg                dir_x_q  /* verilator public_flat_rd */;  // direction of the last step
   reg                dir_y_q  /* verilator public_flat_rd */;
   reg                step_x_q /* verilator public_flat_rd */;
   reg                step_y_q /* verilator public_flat_rd */;
 
   reg [AccWidth-1:0] cap_d;
+  reg                cdir_x_d;
+  reg                cdir_y_d;
   reg                dir_x_d;
   reg                dir_y_d;
   reg                step_x_d;
@@ -139,31 +143,37 @@ module dda_core (
     .last_o    (last_y)
   );
 
+  // A step pulse carries the direction of the command that made it: dir_*_q changes
+  // only together with a step, so a command loaded on the edge of the previous one's
+  // last step (back to back) cannot change the direction of that step.
   always @(*) begin
     cap_d    = cap_q;
-    dir_x_d  = dir_x_q;
-    dir_y_d  = dir_y_q;
-    step_x_d = 1'b0;  // pulses: 0 unless this edge iterates
-    step_y_d = 1'b0;
+    cdir_x_d = cdir_x_q;
+    cdir_y_d = cdir_y_q;
     if (load) begin
-      cap_d   = cmd_cap;
-      dir_x_d = cmd_dir_x;
-      dir_y_d = cmd_dir_y;
-    end else if (iterate) begin
-      step_x_d = ovf_x;
-      step_y_d = ovf_y;
+      cap_d    = cmd_cap;
+      cdir_x_d = cmd_dir_x;
+      cdir_y_d = cmd_dir_y;
     end
+    step_x_d = iterate & ovf_x;  // pulses: 0 unless this edge iterates
+    step_y_d = iterate & ovf_y;
+    dir_x_d  = step_x_d ? cdir_x_q : dir_x_q;
+    dir_y_d  = step_y_d ? cdir_y_q : dir_y_q;
   end
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
       cap_q    <= {AccWidth{1'b0}};
+      cdir_x_q <= 1'b0;
+      cdir_y_q <= 1'b0;
       dir_x_q  <= 1'b0;
       dir_y_q  <= 1'b0;
       step_x_q <= 1'b0;
       step_y_q <= 1'b0;
     end else begin
       cap_q    <= cap_d;
+      cdir_x_q <= cdir_x_d;
+      cdir_y_q <= cdir_y_d;
       dir_x_q  <= dir_x_d;
       dir_y_q  <= dir_y_d;
       step_x_q <= step_x_d;

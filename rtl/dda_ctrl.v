@@ -47,9 +47,12 @@ module dda_ctrl (
   wire finished = run_ce & ~active_x_i & ~active_y_i;
   wire stalled  = run_ce & ~finished & ~can_x_i & ~can_y_i;
   wire iterate  = run_ce & ~finished & ~stalled;
+  // The command ends on this edge: the next one may load on the same edge, so
+  // back-to-back commands run with no idle cycle between them.
+  wire finishing = finished | (iterate & last_x_i & last_y_i);
 
-  assign cmd_ready_o = idle;
-  assign load_o      = idle & cmd_valid_i;
+  assign cmd_ready_o = idle | finishing;
+  assign load_o      = cmd_ready_o & cmd_valid_i;
   assign iterate_o   = iterate;
 
   always @(*) begin
@@ -57,20 +60,13 @@ module dda_ctrl (
     done_d  = 1'b0;
     err_d   = 1'b0;
     iter_d  = 1'b0;
+    iter_d = iterate;
+    done_d = finishing;
+    err_d  = stalled;
     if (load_o) begin
       state_d = StRun;
-    end else if (finished) begin
+    end else if (finishing | stalled) begin
       state_d = StIdle;
-      done_d  = 1'b1;
-    end else if (stalled) begin
-      state_d = StIdle;
-      err_d   = 1'b1;
-    end else if (iterate) begin
-      iter_d = 1'b1;
-      if (last_x_i & last_y_i) begin
-        state_d = StIdle;
-        done_d  = 1'b1;
-      end
     end
   end
 

@@ -75,6 +75,9 @@ inline void random_arcs(CoreHarness& h, std::uint64_t seed, int count,
     const DriveResult r = drive_arc(h, *plan, opt);
     REQUIRE(r.end == plan->to);
     REQUIRE(r.iterations == run(*plan).iterations);
+    // Pieces back to back: one edge to load the first command, then one iteration on
+    // every edge to the end (no idle cycle between pieces).
+    REQUIRE(r.cycles == r.iterations + 1);
     ++arcs;
   }
 }

@@ -140,6 +140,9 @@ RunSummary run_segment(const Plan& plan, std::size_t k, std::uint64_t first_iter
       continue;
     }
     Iteration it = dp.iterate();
+    // Back to back, the edge of a piece's last iteration also loads the next piece's
+    // command: the registers after it are that command's.
+    if (dp.done() && k + 1 < plan.segs.size()) it.after = initial_regs(plan.segs[k + 1].cmd);
     it.iter += first_iter;
     it.seg = static_cast<std::uint32_t>(k);
     it.dir_x_neg = sg.cmd.dir_x_neg;

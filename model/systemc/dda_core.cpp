@@ -110,6 +110,8 @@ void dda_core::decode() {
 void dda_core::seq() {
   if (!rst_ni.read()) {
     cap_q.write(0);
+    cdir_x_q.write(false);
+    cdir_y_q.write(false);
     dir_x_q.write(false);
     dir_y_q.write(false);
     step_x_q.write(false);
@@ -118,11 +120,15 @@ void dda_core::seq() {
   }
   if (load.read()) {
     cap_q.write(cmd_cap.read());
-    dir_x_q.write(cmd_dir_x.read());
-    dir_y_q.write(cmd_dir_y.read());
+    cdir_x_q.write(cmd_dir_x.read());
+    cdir_y_q.write(cmd_dir_y.read());
   }
-  step_x_q.write(iterate.read() && ovf_x.read());
-  step_y_q.write(iterate.read() && ovf_y.read());
+  // A step carries the direction of the command that made it (see the RTL).
+  const bool sx = iterate.read() && ovf_x.read(), sy = iterate.read() && ovf_y.read();
+  step_x_q.write(sx);
+  step_y_q.write(sy);
+  if (sx) dir_x_q.write(cdir_x_q.read());
+  if (sy) dir_y_q.write(cdir_y_q.read());
 }
 
 void dda_core::outputs() {
@@ -139,6 +145,8 @@ void dda_core::trace(sc_core::sc_trace_file* tf) const {
   sc_core::sc_trace(tf, cmd_valid_i, "cmd_valid_i");
   sc_core::sc_trace(tf, cmd_ready_o, "cmd_ready_o");
   sc_core::sc_trace(tf, cap_q, "cap_q");
+  sc_core::sc_trace(tf, cdir_x_q, "cdir_x_q");
+  sc_core::sc_trace(tf, cdir_y_q, "cdir_y_q");
   sc_core::sc_trace(tf, dir_x_q, "dir_x_q");
   sc_core::sc_trace(tf, dir_y_q, "dir_y_q");
   sc_core::sc_trace(tf, step_x_q, "step_x_q");

@@ -31,7 +31,8 @@ SC_MODULE(dda_core) {
 
   // Architectural registers of the top.
   sc_core::sc_signal<acc_t> cap_q{"cap_q"};
-  sc_core::sc_signal<bool> dir_x_q{"dir_x_q"}, dir_y_q{"dir_y_q"};
+  sc_core::sc_signal<bool> cdir_x_q{"cdir_x_q"}, cdir_y_q{"cdir_y_q"};  // running command's
+  sc_core::sc_signal<bool> dir_x_q{"dir_x_q"}, dir_y_q{"dir_y_q"};      // last step's
   sc_core::sc_signal<bool> step_x_q{"step_x_q"}, step_y_q{"step_y_q"};
 
   void trace(sc_core::sc_trace_file* tf) const;

@@ -12,12 +12,16 @@ void dda_ctrl::comb() {
   const bool run_ce = state_q.read() == kRun && ce_i.read();
   const bool fin = run_ce && !active_x_i.read() && !active_y_i.read();
   const bool st = run_ce && !fin && !can_x_i.read() && !can_y_i.read();
+  const bool it = run_ce && !fin && !st;
+  // The command ends on this edge: the next one may load on the same edge (back to back).
+  const bool ending = fin || (it && last_x_i.read() && last_y_i.read());
   finished.write(fin);
   stalled.write(st);
-  cmd_ready_o.write(idle);
+  finishing.write(ending);
+  cmd_ready_o.write(idle || ending);
   busy_o.write(!idle);
-  load_o.write(idle && cmd_valid_i.read());
-  iterate_o.write(run_ce && !fin && !st);
+  load_o.write((idle || ending) && cmd_valid_i.read());
+  iterate_o.write(it);
   done_o.write(done_q.read());
   err_o.write(err_q.read());
   iter_o.write(iter_q.read());
@@ -31,29 +35,16 @@ void dda_ctrl::seq() {
     iter_q.write(false);
     return;
   }
-  bool done = false, err = false, iter = false;
   unsigned state = state_q.read();
-  if (state == kIdle) {
-    if (cmd_valid_i.read()) state = kRun;
-  } else if (ce_i.read()) {
-    if (finished.read()) {
-      state = kIdle;
-      done = true;
-    } else if (stalled.read()) {
-      state = kIdle;
-      err = true;
-    } else {
-      iter = true;
-      if (last_x_i.read() && last_y_i.read()) {
-        state = kIdle;
-        done = true;
-      }
-    }
+  if (load_o.read()) {
+    state = kRun;
+  } else if (finishing.read() || stalled.read()) {
+    state = kIdle;
   }
   state_q.write(state);
-  done_q.write(done);
-  err_q.write(err);
-  iter_q.write(iter);
+  done_q.write(finishing.read());
+  err_q.write(stalled.read());
+  iter_q.write(iterate_o.read());
 }
 
 void dda_ctrl::trace(sc_core::sc_trace_file* tf, const std::string& p) const {
@@ -63,6 +54,7 @@ void dda_ctrl::trace(sc_core::sc_trace_file* tf, const std::string& p) const {
   sc_core::sc_trace(tf, iter_q, p + ".iter_q");
   sc_core::sc_trace(tf, finished, p + ".finished");
   sc_core::sc_trace(tf, stalled, p + ".stalled");
+  sc_core::sc_trace(tf, finishing, p + ".finishing");
 }
 
 }  // namespace dda::sc

@@ -18,12 +18,12 @@ SC_MODULE(dda_ctrl) {
   sc_core::sc_signal<sc_dt::sc_uint<hw::kStateWidth>> state_q{"state_q"};
   sc_core::sc_signal<bool> done_q{"done_q"}, err_q{"err_q"}, iter_q{"iter_q"};
   // Combinational decisions of a run cycle.
-  sc_core::sc_signal<bool> finished{"finished"}, stalled{"stalled"};
+  sc_core::sc_signal<bool> finished{"finished"}, stalled{"stalled"}, finishing{"finishing"};
 
   SC_CTOR(dda_ctrl) {
     SC_METHOD(comb);
     sensitive << state_q << cmd_valid_i << ce_i << active_x_i << active_y_i << can_x_i
-              << can_y_i << done_q << err_q << iter_q;
+              << can_y_i << last_x_i << last_y_i << done_q << err_q << iter_q;
     SC_METHOD(seq);
     sensitive << clk_i.pos();
     dont_initialize();

@@ -18,8 +18,10 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
   DriveResult res;
   const std::uint64_t start = h.cycle();
   const auto ce_at = [&](std::uint64_t c) { return opt.ce ? opt.ce(c) : true; };
-  // Watchdog: the golden iteration bound, generously stretched for ce_i stalls.
-  const std::uint64_t limit = 64 + 64 * (plan.iteration_bound + 16 * plan.segs.size());
+  // Watchdog: edges with ce_i high beyond the golden run's own iterations (plus the loads
+  // and a margin) mean the core is not finishing.
+  const std::uint64_t limit = run(plan).iterations + 4 * plan.segs.size() + 64;
+  std::uint64_t ce_edges = 0;
   const std::size_t nseg = plan.segs.size();
 
   // The pieces' commands are presented back to back: the next one as soon as the
@@ -37,7 +39,9 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
       res.was_reset = true;
       return res;
     }
-    h.set_ce(ce_at(h.cycle()));
+    const bool ce = ce_at(h.cycle());
+    ce_edges += ce;
+    h.set_ce(ce);
     const bool offering = presented < nseg;
     const bool ready = offering && h.cmd_ready();
     const CoreSample pre = h.sample();
@@ -87,8 +91,12 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
       if (opt.check) sb.on_done(h.cycle());
       if (++running == nseg) break;
     }
-    if (h.cycle() - start > limit) {
-      throw GuardError("watchdog: no done_o within " + std::to_string(limit) + " cycles");
+    if (ce_edges > limit) {
+      std::ostringstream m;
+      m << h.name() << ": watchdog: no done_o after " << ce_edges << " edges with ce_i high ("
+        << res.iterations << " iterations, piece " << running << " of " << nseg << ", at ("
+        << rb.pos().x << ',' << rb.pos().y << "), cycle " << h.cycle() << ")";
+      throw GuardError(m.str());
     }
   }
   res.cycles = h.cycle() - start;

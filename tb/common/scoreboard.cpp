@@ -18,8 +18,8 @@ bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, std::
   rec = Iteration{};
   rec.iter = ++n_;
   rec.seg = seg;
-  rec.dir_x_neg = post.dir_x;
-  rec.dir_y_neg = post.dir_y;
+  rec.dir_x_neg = pre.cdir_x;  // the command running in this iteration
+  rec.dir_y_neg = pre.cdir_y;
   rec.active_x = pre.cnt_x != 0;
   rec.active_y = pre.cnt_y != 0;
   rec.jv_x = static_cast<std::int64_t>(pre.jv_x);
@@ -53,31 +53,42 @@ void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
   Iteration g = dp_.iterate();
   g.iter = ++iters_;
   const Command& cmd = plan_.segs[seg_].cmd;
+  // Back to back, the edge of a piece's last iteration also loads the next command.
+  const bool ended = dp_.done();
+  const bool next_loaded =
+      ended && seg_ + 1 < plan_.segs.size() && post.state == unsigned(hw::State::Run);
+  const Command& held = next_loaded ? plan_.segs[seg_ + 1].cmd : cmd;
+  const RegState r = next_loaded ? initial_regs(held) : dp_.regs();
+  const bool dir_x = g.step_x ? cmd.dir_x_neg : (have_dir_ ? prev_dir_x_ : post.dir_x);
+  const bool dir_y = g.step_y ? cmd.dir_y_neg : (have_dir_ ? prev_dir_y_ : post.dir_y);
   struct Cmp {
     const char* name;
     std::uint64_t expect, got;
   };
   const Cmp regs[] = {
-      {"u_int_x.jr_q", hw_value(g.after.jr_x), post.jr_x},
-      {"u_int_y.jr_q", hw_value(g.after.jr_y), post.jr_y},
+      {"u_int_x.jr_q", hw_value(r.jr_x), post.jr_x},
+      {"u_int_y.jr_q", hw_value(r.jr_y), post.jr_y},
       {"step_x_q", g.step_x, post.step_x},
       {"step_y_q", g.step_y, post.step_y},
-      {"u_cnt_x.cnt_q", hw_value(g.after.cnt_x), post.cnt_x},
-      {"u_cnt_y.cnt_q", hw_value(g.after.cnt_y), post.cnt_y},
-      {"u_int_x.jv_q", hw_value(g.after.jv_x), post.jv_x},
-      {"u_int_y.jv_q", hw_value(g.after.jv_y), post.jv_y},
-      {"dir_x_q", cmd.dir_x_neg, post.dir_x},
-      {"dir_y_q", cmd.dir_y_neg, post.dir_y},
-      {"cap_q", hw_value(cmd.cap), post.cap},
-      {"u_int_x.inc_on_x_q", hw_value(cmd.inc_x_on_x), post.inc_x_on_x},
-      {"u_int_x.inc_on_y_q", hw_value(cmd.inc_x_on_y), post.inc_x_on_y},
-      {"u_int_y.inc_on_x_q", hw_value(cmd.inc_y_on_x), post.inc_y_on_x},
-      {"u_int_y.inc_on_y_q", hw_value(cmd.inc_y_on_y), post.inc_y_on_y},
-      {"u_ctrl.done_q", dp_.done(), post.done},
+      {"u_cnt_x.cnt_q", hw_value(r.cnt_x), post.cnt_x},
+      {"u_cnt_y.cnt_q", hw_value(r.cnt_y), post.cnt_y},
+      {"u_int_x.jv_q", hw_value(r.jv_x), post.jv_x},
+      {"u_int_y.jv_q", hw_value(r.jv_y), post.jv_y},
+      {"dir_x_q", dir_x, post.dir_x},
+      {"dir_y_q", dir_y, post.dir_y},
+      {"cdir_x_q", held.dir_x_neg, post.cdir_x},
+      {"cdir_y_q", held.dir_y_neg, post.cdir_y},
+      {"cap_q", hw_value(held.cap), post.cap},
+      {"u_int_x.inc_on_x_q", hw_value(held.inc_x_on_x), post.inc_x_on_x},
+      {"u_int_x.inc_on_y_q", hw_value(held.inc_x_on_y), post.inc_x_on_y},
+      {"u_int_y.inc_on_x_q", hw_value(held.inc_y_on_x), post.inc_y_on_x},
+      {"u_int_y.inc_on_y_q", hw_value(held.inc_y_on_y), post.inc_y_on_y},
+      {"u_ctrl.done_q", ended, post.done},
       {"u_ctrl.err_q", 0, post.err},
       {"u_ctrl.iter_q", 1, post.iter},
-      // Still running unless this iteration ended the command.
-      {"u_ctrl.state_q", dp_.done() ? post.state : unsigned(hw::State::Run), post.state},
+      // Running unless this iteration ended the command and none followed on the edge.
+      {"u_ctrl.state_q", (ended && !next_loaded) ? unsigned(hw::State::Idle) : unsigned(hw::State::Run),
+       post.state},
   };
   for (const auto& r : regs) {
     if (r.expect != r.got) {
@@ -87,6 +98,9 @@ void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
       throw MismatchError(m.str());
     }
   }
+  have_dir_ = true;
+  prev_dir_x_ = post.dir_x;
+  prev_dir_y_ = post.dir_y;
 }
 
 void Scoreboard::on_done(std::uint64_t cycle) {
@@ -116,7 +130,8 @@ std::string compare_samples(const CoreSample& a, const CoreSample& b) {
       {"u_int_y.inc_on_x_q", a.inc_y_on_x, b.inc_y_on_x},
       {"u_int_y.inc_on_y_q", a.inc_y_on_y, b.inc_y_on_y},
       {"step_y_q", a.step_y, b.step_y},   {"dir_x_q", a.dir_x, b.dir_x},
-      {"dir_y_q", a.dir_y, b.dir_y},      {"u_ctrl.state_q", a.state, b.state},
+      {"dir_y_q", a.dir_y, b.dir_y},      {"cdir_x_q", a.cdir_x, b.cdir_x},
+      {"cdir_y_q", a.cdir_y, b.cdir_y},      {"u_ctrl.state_q", a.state, b.state},
       {"u_ctrl.done_q", a.done, b.done},  {"u_ctrl.err_q", a.err, b.err},
       {"u_ctrl.iter_q", a.iter, b.iter},
   };

@@ -23,6 +23,7 @@ struct CoreSample {
   std::uint64_t inc_x_on_x = 0, inc_x_on_y = 0;          // u_int_x.inc_on_x_q, inc_on_y_q
   std::uint64_t inc_y_on_x = 0, inc_y_on_y = 0;          // u_int_y.inc_on_x_q, inc_on_y_q
   bool step_x = false, step_y = false, dir_x = false, dir_y = false;  // *_q
+  bool cdir_x = false, cdir_y = false;                                // cdir_*_q
   unsigned state = 0;                                   // u_ctrl.state_q
   bool done = false, err = false, iter = false;          // u_ctrl.*_q
 };
@@ -66,6 +67,7 @@ class Scoreboard {
   std::size_t seg_ = 0;
   Datapath dp_;
   std::uint64_t iters_ = 0;
+  bool have_dir_ = false, prev_dir_x_ = false, prev_dir_y_ = false;  // dir_*_q last seen
 };
 
 // Compares two samples register by register (e.g. SystemC against RTL, every cycle).

@@ -61,7 +61,7 @@ void CosimHarness::set_command(bool valid, const std::vector<std::uint32_t>& wor
 }
 
 bool CosimHarness::cmd_ready() {
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  sc::settle();
   if (sc_out_.cmd_ready.read() != rtl_out_.cmd_ready.read()) {
     throw MismatchError("cosim mismatch: output cmd_ready_o at cycle " + std::to_string(cycle_));
   }

@@ -74,17 +74,22 @@ void ScHarness::set_command(bool valid, const std::vector<std::uint32_t>& words)
   if (valid) cmd_.write(command_bits(words));
 }
 
+void settle() {
+  // sc_start(SC_ZERO_TIME) runs one delta cycle; run them until nothing is pending, so
+  // input writes have reached every combinational output (cmd_ready_o depends on ce_i).
+  do {
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  } while (sc_core::sc_pending_activity_at_current_time());
+}
+
 bool ScHarness::cmd_ready() {
-  // Let pending input writes and the combinational logic settle first.
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  started_ = true;
+  settle();
   return cmd_ready_.read();
 }
 
 void ScHarness::tick() {
   // The clock's rising edges are at 5, 15, 25, ... ns: one period moves over one edge.
   sc_core::sc_start(10, sc_core::SC_NS);
-  started_ = true;
   ++cycle_;
 }
 
@@ -113,6 +118,8 @@ CoreSample sample_core(const dda_core& c) {
   s.step_y = c.step_y_q.read();
   s.dir_x = c.dir_x_q.read();
   s.dir_y = c.dir_y_q.read();
+  s.cdir_x = c.cdir_x_q.read();
+  s.cdir_y = c.cdir_y_q.read();
   s.state = unsigned(c.u_ctrl.state_q.read().to_uint());
   s.done = c.u_ctrl.done_q.read();
   s.err = c.u_ctrl.err_q.read();

@@ -14,6 +14,9 @@ namespace dda::sc {
 // The architectural registers of a SystemC dda_core.
 CoreSample sample_core(const dda_core& c);
 
+// Runs delta cycles until the combinational logic has settled at the current time.
+void settle();
+
 // Packs 32-bit command words into the command port's bit vector.
 cmd_t command_bits(const std::vector<std::uint32_t>& words);
 
@@ -44,7 +47,6 @@ class ScHarness : public CoreHarness {
   std::unique_ptr<dda_core> core_;
   sc_core::sc_trace_file* tf_ = nullptr;
   std::string vcd_;
-  bool started_ = false;
 };
 
 }  // namespace dda::sc

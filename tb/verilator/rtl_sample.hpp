@@ -26,6 +26,8 @@ CoreSample sample_root(const Root* r) {
   s.step_y = r->dda_core__DOT__step_y_q;
   s.dir_x = r->dda_core__DOT__dir_x_q;
   s.dir_y = r->dda_core__DOT__dir_y_q;
+  s.cdir_x = r->dda_core__DOT__cdir_x_q;
+  s.cdir_y = r->dda_core__DOT__cdir_y_q;
   s.state = r->dda_core__DOT__u_ctrl__DOT__state_q;
   s.done = r->dda_core__DOT__u_ctrl__DOT__done_q;
   s.err = r->dda_core__DOT__u_ctrl__DOT__err_q;

@@ -67,7 +67,8 @@ struct Iteration {
   std::int64_t jv_x = 0, jv_y = 0;  // integrands used in this iteration
   std::int64_t sum_x = 0, sum_y = 0;  // accumulator sums before overflow removal
   bool step_x = false, step_y = false;  // overflow pulses
-  RegState after;                   // registers after the iteration (jv corrected)
+  RegState after;                   // registers after the iteration (jv corrected); after a
+                                    // piece's last one, the next piece's loaded command
   Point pos;                        // position after the iteration
 };
 

@@ -76,7 +76,7 @@ struct Reg {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Reg, 19> kRegisters{{
+inline constexpr std::array<Reg, 21> kRegisters{{
     {"u_int_x.jv_q", kAccWidth, "X integrand"},
     {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)"},
     {"u_int_x.inc_on_x_q", kAccWidth, "added to the X integrand after an X step"},
@@ -88,8 +88,10 @@ inline constexpr std::array<Reg, 19> kRegisters{{
     {"u_cnt_x.cnt_q", kCntWidth, "X steps still owed"},
     {"u_cnt_y.cnt_q", kCntWidth, "Y steps still owed"},
     {"cap_q", kAccWidth, "accumulator capacity"},
-    {"dir_x_q", 1, "X direction (drives dir_x_o)"},
-    {"dir_y_q", 1, "Y direction (drives dir_y_o)"},
+    {"cdir_x_q", 1, "X step direction of the running command"},
+    {"cdir_y_q", 1, "Y step direction of the running command"},
+    {"dir_x_q", 1, "direction of the last X step (drives dir_x_o)"},
+    {"dir_y_q", 1, "direction of the last Y step (drives dir_y_o)"},
     {"step_x_q", 1, "X step pulse (drives step_x_o)"},
     {"step_y_q", 1, "Y step pulse (drives step_y_o)"},
     {"u_ctrl.state_q", kStateWidth, "control state: 0 idle, 1 run"},
