@@ -1,11 +1,13 @@
 // Control of the DDA core (docs/design.md, "Control" and "Behaviour, edge by edge"):
 // the state machine state_q (idle, run) and the one-cycle pulses done_q, err_q, iter_q.
 //
-// Idle: cmd_ready_o = 1; cmd_valid_i loads the command (load_o) and the state becomes
-// run. Run with ce_i high does exactly one of
+// Run with ce_i high does exactly one of (in this order)
 //   finished  both counters 0                       -> idle, done_q = 1
 //   stalled   no active axis can carry (can_x/y low) -> idle, err_q = 1
 //   iterate   iterate_o = 1, iter_q = 1; both counters 0 after it -> idle, done_q = 1
+// The command ends (finishing) on a finished edge or on its last iteration's edge.
+// cmd_ready_o is high while idle and while finishing: cmd_valid_i then loads the next
+// command on that edge (load_o) and the state is run, so commands run back to back.
 // Run with ce_i low, and idle: the pulses take 0 and nothing else changes.
 `include "dda_params.vh"
 
@@ -57,12 +59,9 @@ module dda_ctrl (
 
   always @(*) begin
     state_d = state_q;
-    done_d  = 1'b0;
-    err_d   = 1'b0;
-    iter_d  = 1'b0;
-    iter_d = iterate;
-    done_d = finishing;
-    err_d  = stalled;
+    iter_d  = iterate;
+    done_d  = finishing;
+    err_d   = stalled;
     if (load_o) begin
       state_d = StRun;
     end else if (finishing | stalled) begin

@@ -44,6 +44,11 @@ dda_rtl_test(rtl.icarus_paper_example_half NEEDS IVERILOG VVP
 dda_rtl_test(rtl.icarus_paper_example_ce_random NEEDS IVERILOG VVP
              COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero --ce-random 1
                      --out ${_dda_bench_dir}/paper_ce_random ${PROJECT_BINARY_DIR})
+# The same ellipse in the second quadrant: both directions 1 (-X, -Y), so cdir_y_q and
+# dir_y_q (0 until the first Y step) are checked with a value other than their reset 0.
+dda_rtl_test(rtl.icarus_second_quadrant NEEDS IVERILOG VVP
+             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero --from 0,6 --to -10,0
+                     --out ${_dda_bench_dir}/q2_zero ${PROJECT_BINARY_DIR})
 # One expected value corrupted (lowest bit of u_int_x.jr_q after iteration 5): passes only
 # if vvp exits non-zero with exactly that MISMATCH (not on a failure for another reason).
 dda_rtl_test(rtl.icarus_detects_corruption NEEDS IVERILOG VVP

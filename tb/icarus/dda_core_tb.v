@@ -10,26 +10,35 @@
 //   cmd.hex     the command word, DDA_CMD_WIDTH bits.
 //   count.hex   the number of iterations.
 //   expect.hex  one line per iteration: every architectural register after it, as one
-//               wide word. Layout (the same as gen_core_vectors.cpp): the 19 registers
+//               wide word. Layout (the same as gen_core_vectors.cpp): the 21 registers
 //               of the design doc's register table (hw_params.hpp kRegisters) in table
 //               order, the first leftmost (most significant), each zero-padded to whole
 //               hex digits, '_' between fields. Left to right (hex digits):
 //     u_int_x.jv_q(13) u_int_x.jr_q(13) u_int_x.inc_on_x_q(13) u_int_x.inc_on_y_q(13)
 //     u_int_y.jv_q(13) u_int_y.jr_q(13) u_int_y.inc_on_x_q(13) u_int_y.inc_on_y_q(13)
-//     u_cnt_x.cnt_q(5) u_cnt_y.cnt_q(5) cap_q(13) dir_x_q(1) dir_y_q(1) step_x_q(1)
-//     step_y_q(1) u_ctrl.state_q(1) u_ctrl.done_q(1) u_ctrl.err_q(1) u_ctrl.iter_q(1)
+//     u_cnt_x.cnt_q(5) u_cnt_y.cnt_q(5) cap_q(13) cdir_x_q(1) cdir_y_q(1) dir_x_q(1)
+//     dir_y_q(1) step_x_q(1) step_y_q(1) u_ctrl.state_q(1) u_ctrl.done_q(1)
+//     u_ctrl.err_q(1) u_ctrl.iter_q(1)
+//               cdir_*_q are the command's directions; dir_*_q are 0 until the first
+//               step of their axis, then the command's direction (they change only with
+//               a step).
 //
 // Stimulus: reset, then the command with the valid/ready handshake on the first edge
 // after reset (edge 0 of the design doc's timing table) and ce_i high throughout (or, with
-// +ce_random=SEED, ce_i from an LFSR). Inputs change on the falling edge; registers are
-// read through hierarchical references on the falling edge, i.e. after each rising edge.
+// +ce_random=SEED, ce_i from an LFSR). After the transfer cmd_valid_i drops, so no second
+// command loads (cmd_ready_o is also high before the last iteration's edge), and cmd_i
+// takes the inverted command, which the core must ignore. Inputs change on the falling
+// edge; registers are read through hierarchical references on the falling edge, i.e.
+// after each rising edge; cmd_ready_o is taken just before each rising edge.
 //
 // Checks, on every edge after the load:
-//   * iter_o high: all 19 registers equal the next expect.hex line; with ce_i always
+//   * iter_o high: all 21 registers equal the next expect.hex line; with ce_i always
 //     high, iteration k happens on edge load + k (design doc latency).
 //   * iter_o low (an edge with ce_i low): no architectural register changed, pulses 0.
 //   * outputs equal their registers (step_*_o, dir_*_o, done_o, err_o, iter_o,
-//     busy_o = state run, cmd_ready_o = state idle); err_o never rises.
+//     busy_o = state run); err_o never rises.
+//   * on every edge after reset: cmd_ready_o before the edge = state idle before it, or
+//     the edge finishes the command (done_q after it; rtl/dda_ctrl.v "finishing").
 //   * done_o rises once, with the last expected iteration; no iteration after it.
 //   * watchdog: $fatal if done_o has not risen after +max_cycles edges.
 // The first failing check prints what it compared and calls $fatal (vvp exits 1); a
@@ -61,7 +70,9 @@ module dda_core_tb;
   localparam integer OffStepX = OffStepY + P1;
   localparam integer OffDirY  = OffStepX + P1;
   localparam integer OffDirX  = OffDirY + P1;
-  localparam integer OffCap   = OffDirX + P1;
+  localparam integer OffCdirY = OffDirX + P1;
+  localparam integer OffCdirX = OffCdirY + P1;
+  localparam integer OffCap   = OffCdirX + P1;
   localparam integer OffCntY  = OffCap + PA;
   localparam integer OffCntX  = OffCntY + PC;
   localparam integer OffYIncY = OffCntX + PC;
@@ -73,7 +84,7 @@ module dda_core_tb;
   localparam integer OffXJr   = OffXIncX + PA;
   localparam integer OffXJv   = OffXJr + PA;
   localparam integer ExpWidth = OffXJv + PA;
-  // Fields from OffDirY up (dir, cap, cnt, corrections, jr, jv) are state that an edge
+  // Fields from OffDirY up (dir, cdir, cap, cnt, corrections, jr, jv) are state that an edge
   // with ce_i low must not change; below them are the pulses and state_q (checked apart).
   localparam integer PulseHi = OffStepX + P1;
 
@@ -123,6 +134,7 @@ module dda_core_tb;
   integer n_done;          // done_o pulses seen
   integer done_edge;
   reg     ce_at_edge, ready_at_edge, valid_at_edge, rst_at_edge;
+  reg [StWidth-1:0] state_at_edge;
   integer n_bad;
 
   initial clk_i = 1'b0;
@@ -134,6 +146,7 @@ module dda_core_tb;
     ready_at_edge <= cmd_ready_o;
     valid_at_edge <= cmd_valid_i;
     rst_at_edge   <= rst_ni;
+    state_at_edge <= dut.u_ctrl.state_q;
     if (rst_ni) last_edge <= last_edge + 1;
   end
 
@@ -152,6 +165,8 @@ module dda_core_tb;
       got[OffCntX  +: CntWidth] = dut.u_cnt_x.cnt_q;
       got[OffCntY  +: CntWidth] = dut.u_cnt_y.cnt_q;
       got[OffCap   +: AccWidth] = dut.cap_q;
+      got[OffCdirX]             = dut.cdir_x_q;
+      got[OffCdirY]             = dut.cdir_y_q;
       got[OffDirX]              = dut.dir_x_q;
       got[OffDirY]              = dut.dir_y_q;
       got[OffStepX]             = dut.step_x_q;
@@ -193,6 +208,8 @@ module dda_core_tb;
       check_field("u_cnt_x.cnt_q",      OffCntX,  PC, exp, iter);
       check_field("u_cnt_y.cnt_q",      OffCntY,  PC, exp, iter);
       check_field("cap_q",              OffCap,   PA, exp, iter);
+      check_field("cdir_x_q",           OffCdirX, P1, exp, iter);
+      check_field("cdir_y_q",           OffCdirY, P1, exp, iter);
       check_field("dir_x_q",            OffDirX,  P1, exp, iter);
       check_field("dir_y_q",            OffDirY,  P1, exp, iter);
       check_field("step_x_q",           OffStepX, P1, exp, iter);
@@ -204,19 +221,26 @@ module dda_core_tb;
     end
   endtask
 
-  // Outputs must be their registers.
+  // Outputs must be their registers. cmd_ready_o also depends on ce_i, which the
+  // stimulus may change on this falling edge: it is checked with its value just before
+  // the rising edge (ready_at_edge): high iff the state was idle or the edge finished
+  // the command (done_q = finishing of that edge, and done_q is checked on its own).
   task check_ports;
     begin
       if (step_x_o !== dut.step_x_q || step_y_o !== dut.step_y_q ||
           dir_x_o !== dut.dir_x_q || dir_y_o !== dut.dir_y_q ||
           done_o !== dut.u_ctrl.done_q || err_o !== dut.u_ctrl.err_q ||
           iter_o !== dut.u_ctrl.iter_q ||
-          busy_o !== (dut.u_ctrl.state_q == `DDA_STATE_RUN) ||
-          cmd_ready_o !== (dut.u_ctrl.state_q == `DDA_STATE_IDLE)) begin
-        $display("PORTS cycle %0d: step %b%b dir %b%b done %b err %b iter %b busy %b ready %b state %0d",
+          busy_o !== (dut.u_ctrl.state_q == `DDA_STATE_RUN)) begin
+        $display("PORTS cycle %0d: step %b%b dir %b%b done %b err %b iter %b busy %b state %0d",
                  last_edge, step_x_o, step_y_o, dir_x_o, dir_y_o, done_o, err_o, iter_o,
-                 busy_o, cmd_ready_o, dut.u_ctrl.state_q);
+                 busy_o, dut.u_ctrl.state_q);
         $fatal(1, "dda_core_tb: FAIL: an output differs from its register at cycle %0d", last_edge);
+      end
+      if (ready_at_edge !== ((state_at_edge == `DDA_STATE_IDLE) || dut.u_ctrl.done_q)) begin
+        $display("READY cycle %0d: cmd_ready_o %b before the edge, state %0d before, done_q %b after",
+                 last_edge, ready_at_edge, state_at_edge, dut.u_ctrl.done_q);
+        $fatal(1, "dda_core_tb: FAIL: cmd_ready_o is not idle | finishing before cycle %0d", last_edge);
       end
     end
   endtask
@@ -331,7 +355,13 @@ module dda_core_tb;
 
     forever begin
       @(negedge clk_i);
-      if (load_edge >= 0) cmd_valid_i = 1'b0;  // the monitor saw the transfer
+      // The transfer happened on the last edge: drop cmd_valid_i (from the values before
+      // that edge, so not racing the monitor, which runs on this falling edge too), and
+      // invert cmd_i, so a register that reads cmd_i after the load shows a mismatch.
+      if (cmd_valid_i && valid_at_edge && ready_at_edge && rst_at_edge) begin
+        cmd_valid_i = 1'b0;
+        cmd_i       = ~cmd_mem[0];
+      end
       if (ce_random != 0) begin
         lfsr = {lfsr[14:0], lfsr[15] ^ lfsr[13] ^ lfsr[12] ^ lfsr[10]};
         ce_i = lfsr[0];

@@ -10,22 +10,26 @@
 //   DIR/expect.hex  one line per iteration: every architectural register after that
 //                   iteration, as one wide hex number.
 //
-// expect.hex layout: the 19 registers of dda::hw::kRegisters (the design doc's register
+// expect.hex layout: the 21 registers of dda::hw::kRegisters (the design doc's register
 // table) in table order, the first one leftmost (most significant). Each field is
 // zero-padded to a whole number of hex digits (width rounded up to a multiple of 4) and
 // fields are separated by '_' (allowed inside a $readmemh number). With AccWidth = 50 and
 // CntWidth = 17, left to right (digits):
 //   u_int_x.jv_q(13) u_int_x.jr_q(13) u_int_x.inc_on_x_q(13) u_int_x.inc_on_y_q(13)
 //   u_int_y.jv_q(13) u_int_y.jr_q(13) u_int_y.inc_on_x_q(13) u_int_y.inc_on_y_q(13)
-//   u_cnt_x.cnt_q(5) u_cnt_y.cnt_q(5) cap_q(13) dir_x_q(1) dir_y_q(1) step_x_q(1)
-//   step_y_q(1) u_ctrl.state_q(1) u_ctrl.done_q(1) u_ctrl.err_q(1) u_ctrl.iter_q(1)
-// = 147 hex digits, 588 bits. The bench builds the same word from the RTL registers.
+//   u_cnt_x.cnt_q(5) u_cnt_y.cnt_q(5) cap_q(13) cdir_x_q(1) cdir_y_q(1) dir_x_q(1)
+//   dir_y_q(1) step_x_q(1) step_y_q(1) u_ctrl.state_q(1) u_ctrl.done_q(1) u_ctrl.err_q(1)
+//   u_ctrl.iter_q(1)
+// = 149 hex digits, 596 bits. The bench builds the same word from the RTL registers.
 //
 // jv, jr and cnt come from the golden record (Iteration::after), step_* from
-// Iteration::step_*; the constant registers (corrections, cap, dir) from the command
-// fields; the control registers after an iteration follow docs/design.md ("Behaviour,
-// edge by edge", case 3): iter_q = 1, err_q = 0, and done_q = 1 with state_q = idle when
-// both counters are 0 after the iteration, otherwise done_q = 0 with state_q = run.
+// Iteration::step_*; the registers loaded once per command (corrections, cap, cdir_*)
+// from the fields of plan.cmd(). dir_*_q change only with a step of their axis (they
+// take cdir_*_q then) and are 0 from reset: dir_x_q is the command's dir_x once any X
+// step has happened in the run up to and including this iteration, else 0 (Y alike).
+// Control after an iteration (rtl/dda_ctrl.v): iter_q = 1, err_q = 0, and done_q = 1
+// with state_q = idle when both counters are 0 after the iteration (the bench loads no
+// second command), otherwise done_q = 0 with state_q = run.
 //
 // Exit status: 0 success, 1 run-time failure (guard tripped, I/O error), 2 bad input.
 #include <CLI/CLI.hpp>
@@ -94,7 +98,6 @@ std::string command_hex(const dda::Command& c) {
   return s;
 }
 
-// One expect.hex line: the registers after iteration `it`, in kRegisters order.
 using Fields = std::array<std::uint64_t, dda::hw::kCmdFields.size()>;
 
 // The value of command field `name` (kCmdFields order, as command_fields returns them).
@@ -105,7 +108,14 @@ std::uint64_t field(const Fields& f, std::string_view name) {
   throw GuardError("no command field " + std::string(name) + " in hw_params.hpp");
 }
 
-std::string expect_line(const dda::Iteration& it, const Fields& f) {
+// X and Y steps seen so far in the run (this iteration included): dir_*_q is 0 until
+// the first step of its axis.
+struct StepsSeen {
+  bool x = false, y = false;
+};
+
+// One expect.hex line: the registers after iteration `it`, in kRegisters order.
+std::string expect_line(const dda::Iteration& it, const Fields& f, const StepsSeen& seen) {
   using dda::hw::kAccMask;
   const bool last = it.after.cnt_x == 0 && it.after.cnt_y == 0;
   const auto idle = static_cast<std::uint64_t>(dda::hw::State::Idle);
@@ -124,8 +134,10 @@ std::string expect_line(const dda::Iteration& it, const Fields& f) {
       {"u_cnt_x.cnt_q", cnt(it.after.cnt_x)},
       {"u_cnt_y.cnt_q", cnt(it.after.cnt_y)},
       {"cap_q", field(f, "cap")},
-      {"dir_x_q", field(f, "dir_x")},
-      {"dir_y_q", field(f, "dir_y")},
+      {"cdir_x_q", field(f, "dir_x")},
+      {"cdir_y_q", field(f, "dir_y")},
+      {"dir_x_q", seen.x ? field(f, "dir_x") : 0u},
+      {"dir_y_q", seen.y ? field(f, "dir_y") : 0u},
       {"step_x_q", it.step_x ? 1u : 0u},
       {"step_y_q", it.step_y ? 1u : 0u},
       {"u_ctrl.state_q", last ? idle : run},
@@ -198,7 +210,12 @@ int run_main(int argc, char** argv) {
       << "// fields left to right (hex digits):";
   for (const auto& r : dda::hw::kRegisters) exp << ' ' << r.name << '(' << hex_digits(r.width) << ')';
   exp << '\n';
-  for (const auto& it : records) exp << expect_line(it, fields) << '\n';
+  StepsSeen seen;
+  for (const auto& it : records) {
+    seen.x = seen.x || it.step_x;
+    seen.y = seen.y || it.step_y;
+    exp << expect_line(it, fields, seen) << '\n';
+  }
 
   std::ostringstream count;
   count << hex(records.size(), 8) << '\n';
