@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -59,6 +62,40 @@ inline void paper_example(CoreHarness& h) {
   const auto got = drive_arc(h, plan).records;  // the scoreboard checks each iteration
   records_equal(got, run_records(plan));
   CHECK(trace_csv(plan, got) == trace_csv(plan, run_records(plan)));
+}
+
+// The paper's example on a harness of type H writing a waveform: the run checks out and
+// the waveform holds the architectural registers and the whole run.
+template <typename H>
+void paper_example_with_waveform(const std::string& tag) {
+  const auto vcd = std::filesystem::temp_directory_path() /
+                   ("dda_test_" + tag + "_" + std::to_string(::getpid()) + ".vcd");
+  std::filesystem::remove(vcd);
+  {
+    H h(vcd.string());
+    paper_example(h);
+    h.close_trace();
+  }
+  const std::string v = slurp(vcd.string());
+  for (const char* scope : {"u_int_x", "u_int_y", "u_cnt_x", "u_cnt_y", "u_ctrl"}) {
+    CHECK(v.find(std::string("$scope module ") + scope + " $end") != std::string::npos);
+  }
+  for (const char* reg : {" jv_q ", " jr_q ", " cnt_q ", " state_q ", " step_x_q ", " cap_q "}) {
+    CHECK(v.find(reg) != std::string::npos);
+  }
+  CHECK(v.find("\n#300\n") != std::string::npos);  // 30 cycles of 10 ns
+  std::filesystem::remove(vcd);
+}
+
+// Runs a plan on a (deliberately broken) core; returns the mismatch message, or "".
+inline std::string mismatch_message(CoreHarness& h, const Plan& plan) {
+  reset_core(h);
+  try {
+    drive_arc(h, plan);
+  } catch (const MismatchError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 // Random arcs back to back, each in lockstep with the golden model.

@@ -1,10 +1,6 @@
 // The RTL (Verilator --cc) against the golden model, register by register, iteration by
 // iteration. Each harness has its own VerilatedContext, so tests share one process.
 #define CATCH_CONFIG_MAIN
-#include <unistd.h>
-
-#include <filesystem>
-
 #include "core_checks.hpp"
 #include "rtl_harness.hpp"
 
@@ -12,22 +8,7 @@ using namespace dda;
 using namespace dda::checks;
 
 TEST_CASE("rtl: paper example matches the golden model in every register", "[rtl]") {
-  const auto vcd = std::filesystem::temp_directory_path() /
-                   ("dda_test_rtl_paper_" + std::to_string(::getpid()) + ".vcd");
-  std::filesystem::remove(vcd);
-  {
-    rtl::RtlHarness h(vcd.string());
-    paper_example(h);
-    h.close_trace();
-  }
-  const std::string v = slurp(vcd.string());
-  for (const char* scope : {"u_int_x", "u_int_y", "u_cnt_x", "u_cnt_y", "u_ctrl"}) {
-    CHECK(v.find(std::string("$scope module ") + scope + " $end") != std::string::npos);
-  }
-  for (const char* reg : {" jv_q ", " jr_q ", " cnt_q ", " state_q ", " step_x_q ", " cap_q "}) {
-    CHECK(v.find(reg) != std::string::npos);
-  }
-  std::filesystem::remove(vcd);
+  paper_example_with_waveform<rtl::RtlHarness>("rtl_paper");
 }
 
 TEST_CASE("rtl: 1,000 random arcs back to back in lockstep with the golden model", "[rtl][random]") {

@@ -1,9 +1,6 @@
 // The SystemC model against the golden model, register by register, iteration by
 // iteration. Every TEST_CASE is its own ctest entry and process (one elaboration each).
 #define CATCH_CONFIG_RUNNER
-#include <unistd.h>
-
-#include <filesystem>
 #include <systemc>
 
 #include "core_checks.hpp"
@@ -25,24 +22,7 @@ struct FaultyIntegrator : sc::dda_integrator {
 }  // namespace
 
 TEST_CASE("systemc: paper example matches the golden model in every register", "[systemc]") {
-  const auto vcd = std::filesystem::temp_directory_path() /
-                   ("dda_test_systemc_paper_" + std::to_string(::getpid()) + ".vcd");
-  std::filesystem::remove(vcd);
-  {
-    sc::ScHarness h(vcd.string());
-    paper_example(h);
-    h.close_trace();
-  }
-  // The waveform holds the architectural registers and the whole run.
-  const std::string v = slurp(vcd.string());
-  for (const char* scope : {"u_int_x", "u_int_y", "u_cnt_x", "u_cnt_y", "u_ctrl"}) {
-    CHECK(v.find(std::string("$scope module ") + scope + " $end") != std::string::npos);
-  }
-  for (const char* reg : {" jv_q ", " jr_q ", " cnt_q ", " state_q ", " step_x_q ", " cap_q "}) {
-    CHECK(v.find(reg) != std::string::npos);
-  }
-  CHECK(v.find("\n#300\n") != std::string::npos);  // 30 cycles of 10 ns
-  std::filesystem::remove(vcd);
+  paper_example_with_waveform<sc::ScHarness>("systemc_paper");
 }
 
 TEST_CASE("systemc: 200 random arcs back to back in lockstep with the golden model", "[systemc][random]") {
@@ -78,14 +58,8 @@ TEST_CASE("systemc: the scoreboard catches a wrong accumulator (> instead of >=)
     return std::make_unique<sc::dda_integrator>(name);
   };
   sc::ScHarness h("", faulty_y);
-  reset_core(h);
   const Plan plan = paper_plan();
-  std::string message;
-  try {
-    drive_arc(h, plan);
-  } catch (const MismatchError& e) {
-    message = e.what();
-  }
+  const std::string message = mismatch_message(h, plan);
   INFO(message);
   CHECK(message.find("register u_int_y.jr_q at iteration 8") != std::string::npos);
   CHECK(message.find("golden 0, systemc 960") != std::string::npos);
