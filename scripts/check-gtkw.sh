@@ -13,6 +13,7 @@ declared=$(awk '
 missing=0 count=0
 while read -r line; do
   case "$line" in ''|'['*|'@'*|'-'*) continue ;; esac
+  line=${line#+\{*\} }   # an alias "+{name} " before the signal
   sig=${line%%\[*}
   count=$((count + 1))
   if ! grep -qxF "$sig" <<< "$declared"; then

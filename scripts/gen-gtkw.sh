@@ -54,11 +54,11 @@ write() {  # write FILE TOP
         group=$g
       fi
       if [ "$w" = 1 ]; then
-        printf '@28\n%s.%s\n' "$top" "$sig"
+        printf '@28\n+{%s} %s.%s\n' "$sig" "$top" "$sig"
       else
         fmt=24                            # decimal, right-justified
         [ "$signed" = s ] && fmt=424      # signed decimal
-        printf '@%s\n%s.%s[%s:0]\n' "$fmt" "$top" "$sig" "$w"
+        printf '@%s\n+{%s} %s.%s[%s:0]\n' "$fmt" "$sig" "$top" "$sig" "$w"
       fi
     done <<< "$signals"
     printf '@1000200\n-%s\n' "$group"
