@@ -1,5 +1,6 @@
 #include "regress.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +11,14 @@
 #include "dda_random.hpp"
 
 namespace dda {
+
+int MixedStats::pairs_covered() const {
+  int n = 0;
+  for (const auto& s : quadrant_pairs) {
+    for (const auto& e : s) n += (e[0] > 0) + (e[1] > 0);
+  }
+  return n;
+}
 
 MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
   RandomArcs quarter(seed, 4096), whole(seed + 1, 4096, 8, ArcKind::Whole);
@@ -35,6 +44,15 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
       st.iterations += r.iterations;
       st.cycles += r.cycles;
       st.pieces += plan->segs.size();
+      if (!r.was_reset) {
+        const Plan& p = *plan;
+        ++st.quadrant_pairs[p.segs.front().quadrant - 1][p.segs.back().quadrant - 1]
+                           [p.spec.dir == Direction::Cw];
+        st.full += p.full;
+        st.circles += p.spec.a == p.spec.b;
+        st.turned += p.spec.quarter_turns % 2;
+        st.thin += std::max(p.spec.a, p.spec.b) > 100 * std::min(p.spec.a, p.spec.b);
+      }
       if (r.was_reset) {
         ++st.resets;
         // Idle, no pulse, ready for the next command.
@@ -87,6 +105,9 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
                 static_cast<unsigned long long>(st.pieces), static_cast<unsigned long long>(st.ce_stalled),
                 static_cast<unsigned long long>(st.resets),
                 static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
+    std::printf("coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
+                "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld with aspect ratio > 100\n",
+                st.pairs_covered(), st.full, st.circles, st.turned, st.thin);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(),
                  argv[0], static_cast<unsigned long long>(seed), arcs, e.what());

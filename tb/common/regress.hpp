@@ -4,6 +4,8 @@
 // compared; returns the process exit status (0, or 1 on the first mismatch).
 #pragma once
 
+#include <cstdint>
+
 #include "core_driver.hpp"
 
 namespace dda {
@@ -11,6 +13,12 @@ namespace dda {
 struct MixedStats {
   long arcs = 0;
   std::uint64_t iterations = 0, cycles = 0, ce_stalled = 0, resets = 0, pieces = 0;
+  // Coverage of the arcs run to their end: [start quadrant][end quadrant][direction]
+  // (quadrants of the first and last piece), full turns, circles, quarter-turned
+  // ellipses, aspect ratio above 100.
+  long quadrant_pairs[4][4][2] = {};
+  long full = 0, circles = 0, turned = 0, thin = 0;
+  int pairs_covered() const;
 };
 
 // `arcs` random arcs back to back (a, b log-uniform in [1, 4096]; quarter arcs and
