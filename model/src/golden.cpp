@@ -219,10 +219,27 @@ Point theta_point(const ArcSpec& spec, double theta_deg) {
     c = std::cos(rad);
     s = std::sin(rad);
   }
-  // Round in the ellipse's own frame, then turn: a quarter turn maps the lattice onto
-  // itself, so turning and rounding commute.
-  const std::int64_t u = std::llround(double(spec.a) * c), v = std::llround(double(spec.b) * s);
-  Point r{u, v};
+  // Of the four lattice points around the curve point (in the ellipse's own frame), the
+  // one on or outside the curve whose ellipse through it, r times the nominal one, is the
+  // smallest (least r >= 1): a start inside the curve makes the DDA follow a smaller
+  // ellipse, which can stall at a vertex, and the DDA's offset from the nominal curve
+  // grows with r - 1. r^2 a^2 b^2 = u^2 b^2 + v^2 a^2 is compared exactly. Turning comes
+  // after: a quarter turn maps the lattice onto itself.
+  const double fu = double(spec.a) * c, fv = double(spec.b) * s;
+  const __int128 a2 = __int128(spec.a) * spec.a, b2 = __int128(spec.b) * spec.b;
+  Point r{std::llround(fu), std::llround(fv)};
+  __int128 best = -1;
+  for (const double cu : {std::floor(fu), std::ceil(fu)}) {
+    for (const double cv : {std::floor(fv), std::ceil(fv)}) {
+      const std::int64_t u = std::int64_t(cu), v = std::int64_t(cv);
+      const __int128 r2 = __int128(u) * u * b2 + __int128(v) * v * a2;  // r^2 a^2 b^2
+      if (r2 < a2 * b2) continue;  // inside the ellipse
+      if (best < 0 || r2 < best) {
+        best = r2;
+        r = Point{u, v};
+      }
+    }
+  }
   for (int k = 0; k < ((spec.quarter_turns % 4) + 4) % 4; ++k) r = Point{-r.y, r.x};
   return Point{spec.center.x + r.x, spec.center.y + r.y};
 }

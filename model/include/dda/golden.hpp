@@ -148,9 +148,14 @@ int default_bits(std::int64_t a, std::int64_t b);
 // Validate and plan. Throws InputError naming the value and the rule it breaks.
 Plan plan_arc(const ArcSpec& spec);
 
-// Lattice point of the parametric angle theta (degrees): center + (a cos, b sin),
-// each coordinate rounded to the nearest integer, halves away from zero. Multiples of
-// 90 degrees use exact cosines and sines.
+// Lattice point of the parametric angle theta (degrees): of the four lattice points
+// around center + (a cos, b sin) (floor and ceiling of each coordinate, in the
+// ellipse's own frame before any quarter turn), the one with the least r >= 1, where
+// r^2 = u^2/a^2 + v^2/b^2 (tested exactly): on or just outside the curve, so the DDA
+// cannot stall at a vertex and follows the ellipse through it, r times the nominal one,
+// as closely as the lattice allows. Ties go to the first in the order (floor, floor),
+// (floor, ceil), (ceil, floor), (ceil, ceil). Multiples of 90 degrees use exact
+// cosines and sines (so they give the vertices).
 Point theta_point(const ArcSpec& spec, double theta_deg);
 
 // Largest distance (in steps) a start or end point may lie from the ellipse.
