@@ -8,7 +8,7 @@ module dda_counter #(
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,    // synchronous, active low
-  input  wire                load_i,    // load cnt_i (idle and cmd_valid_i)
+  input  wire                load_i,    // load cnt_i (cmd_valid_i && cmd_ready_o; wins over iterate_i)
   input  wire [CntWidth-1:0] cnt_i,
   input  wire                iterate_i, // an iteration happens on this edge
   input  wire                dec_i,     // this axis carried in this iteration

@@ -8,7 +8,7 @@
 // The command ends (finishing) on a finished edge or on its last iteration's edge.
 // cmd_ready_o is high while idle and while finishing: cmd_valid_i then loads the next
 // command on that edge (load_o) and the state is run, so commands run back to back.
-// Run with ce_i low, and idle: the pulses take 0 and nothing else changes.
+// Run with ce_i low, and idle without a load: the pulses take 0 and nothing else changes.
 `include "dda_params.vh"
 
 module dda_ctrl (

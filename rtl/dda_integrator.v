@@ -13,7 +13,8 @@ module dda_integrator #(
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,       // synchronous, active low
-  // load a command (idle and cmd_valid_i)
+  // load a command (cmd_valid_i && cmd_ready_o; may coincide with the last iteration,
+  // and then takes precedence)
   input  wire                load_i,
   input  wire [AccWidth-1:0] jv_i,
   input  wire [AccWidth-1:0] jr_i,

@@ -302,6 +302,16 @@ TEST_CASE("cli: waveform and output files appear only on success", "[cli][errors
   CHECK(s.user_files() == 1);
 }
 
+TEST_CASE("cli: a waveform must go to a regular file", "[cli][errors]") {
+  Scratch s;
+  const fs::path fifo = s.dir / "fifo";
+  REQUIRE(std::system(("mkfifo " + fifo.string()).c_str()) == 0);
+  const Result r = run_dda(s, "stats " + kPaper + " --engine systemc --vcd " + fifo.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("is invalid: a waveform is written to a regular file") != std::string::npos);
+  CHECK(fs::is_fifo(fifo));
+}
+
 TEST_CASE("cli: --out to a device writes to it and leaves it a device", "[cli]") {
   Scratch s;
   const Result r = run_dda(s, "stats " + kPaper + " --out /dev/null");

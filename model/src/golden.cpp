@@ -106,7 +106,12 @@ int smallest_valid_bits(std::int64_t a, std::int64_t b) {
   return n;
 }
 
-int default_bits(std::int64_t a, std::int64_t b) { return smallest_valid_bits(a, b) + 4; }
+int default_bits(std::int64_t a, std::int64_t b) {
+  // Four bits above the smallest valid width, fewer if the capacity would leave range.
+  int n = smallest_valid_bits(a, b) + 4;
+  while (n > smallest_valid_bits(a, b) && (__int128(a) * b << n) >= (__int128(1) << 61)) --n;
+  return n;
+}
 
 const char* to_string(Direction d) { return d == Direction::Ccw ? "ccw" : "cw"; }
 
@@ -203,6 +208,15 @@ bool in_piece(int q, Direction dir, Point s, Point e) {
 }  // namespace
 
 Point theta_point(const ArcSpec& spec, double theta_deg) {
+  const std::int64_t lim = std::int64_t{1} << 30, coord_lim = std::int64_t{1} << 40;
+  if (spec.a < 1 || spec.b < 1 || spec.a > lim || spec.b > lim) {
+    throw InputError("a = " + std::to_string(spec.a) + ", b = " + std::to_string(spec.b) +
+                     " is invalid: semi-axes must be positive integers up to 2^30");
+  }
+  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
+    throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
+  }
+  if (!std::isfinite(theta_deg)) throw InputError("theta is invalid: a finite angle in degrees");
   const double m = std::fmod(theta_deg, 360.0);
   const double t = m < 0 ? m + 360.0 : m;
   double c = 0, s = 0;

@@ -80,7 +80,7 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
                   "turn the ellipse counter-clockwise by DEG degrees about its centre, so the "
                   "semi-axis a points in direction DEG (multiples of 90 in this version)");
   sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
-  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + a along the axis of a)");
+  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + (semi-axis along X, 0))");
   sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on); equal to --from: a full ellipse");
   sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG (rounded to the lattice)");
   sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG (rounded to the lattice)");
@@ -233,6 +233,13 @@ void run_arc_command(const ArcOptions& o, Writer write) {
     std::error_code e1, e2;
     if (std::filesystem::weakly_canonical(o.vcd, e1) == std::filesystem::weakly_canonical(o.out, e2)) {
       throw InputError("--vcd and --out name the same file '" + o.out + "': they must differ");
+    }
+  }
+  if (!o.vcd.empty()) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(o.vcd, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+      throw InputError("vcd = '" + o.vcd + "' is invalid: a waveform is written to a regular file");
     }
   }
   const Plan plan = make_plan(o);

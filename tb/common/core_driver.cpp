@@ -71,7 +71,12 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
     Iteration rec;
     if (rb.on_edge(pre, post, static_cast<std::uint32_t>(running), rec)) {
       ++res.iterations;
-      if (opt.check) sb.on_iteration(post, h.cycle());
+      if (opt.check && sb.on_iteration(pre, post, h.cycle(), ready) && offering && !ready) {
+        // The spec: a command waiting loads on the edge that ends the running one.
+        throw MismatchError(std::string(h.name()) + " mismatch: cmd_ready_o was low in the cycle of the last iteration of piece " +
+                            std::to_string(running) + " (cycle " + std::to_string(h.cycle()) +
+                            "): the next command did not load back to back");
+      }
       if (opt.keep_records) res.records.push_back(rec);
       if (opt.reset_after != 0 && res.iterations == opt.reset_after) {
         reset_core(h, 1);

@@ -22,8 +22,8 @@ struct MixedStats {
 };
 
 // `arcs` random arcs back to back (a, b log-uniform in [1, 4096]; quarter arcs and
-// whole-ellipse arcs alternately), one in eight with random ce_i stalls, one in eight
-// reset on a random clock edge of the arc (the load edge and ce_i stalls included), after
+// whole-ellipse arcs alternately), three in sixteen with random ce_i stalls, one in
+// eight reset on a random clock edge of the arc (half of those during stalls) (the load edge and ce_i stalls included), after
 // which the core must be idle and run the next arc. Throws on the first mismatch, with
 // the seed and the arc.
 MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs);

@@ -43,7 +43,8 @@ bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, std::
 Scoreboard::Scoreboard(const Plan& plan, std::string engine)
     : plan_(plan), engine_(std::move(engine)), dp_(plan.segs.front().cmd, plan.segs.front().from) {}
 
-void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
+bool Scoreboard::on_iteration(const CoreSample& pre, const CoreSample& post, std::uint64_t cycle,
+                              bool loaded) {
   if (dp_.done()) {
     std::ostringstream m;
     m << engine_ << " mismatch: iteration at cycle " << cycle << " after the golden run of piece "
@@ -55,12 +56,12 @@ void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
   const Command& cmd = plan_.segs[seg_].cmd;
   // Back to back, the edge of a piece's last iteration also loads the next command.
   const bool ended = dp_.done();
-  const bool next_loaded =
-      ended && seg_ + 1 < plan_.segs.size() && post.state == unsigned(hw::State::Run);
+  const bool next_loaded = ended && loaded && seg_ + 1 < plan_.segs.size();
   const Command& held = next_loaded ? plan_.segs[seg_ + 1].cmd : cmd;
   const RegState r = next_loaded ? initial_regs(held) : dp_.regs();
-  const bool dir_x = g.step_x ? cmd.dir_x_neg : (have_dir_ ? prev_dir_x_ : post.dir_x);
-  const bool dir_y = g.step_y ? cmd.dir_y_neg : (have_dir_ ? prev_dir_y_ : post.dir_y);
+  // dir_*_q changes only with a step; before the first step it holds what it had.
+  const bool dir_x = g.step_x ? cmd.dir_x_neg : (have_dir_ ? prev_dir_x_ : pre.dir_x);
+  const bool dir_y = g.step_y ? cmd.dir_y_neg : (have_dir_ ? prev_dir_y_ : pre.dir_y);
   struct Cmp {
     const char* name;
     std::uint64_t expect, got;
@@ -101,6 +102,7 @@ void Scoreboard::on_iteration(const CoreSample& post, std::uint64_t cycle) {
   have_dir_ = true;
   prev_dir_x_ = post.dir_x;
   prev_dir_y_ = post.dir_y;
+  return ended;
 }
 
 void Scoreboard::on_done(std::uint64_t cycle) {

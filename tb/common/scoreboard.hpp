@@ -52,9 +52,11 @@ class RecordBuilder {
 class Scoreboard {
  public:
   Scoreboard(const Plan& plan, std::string engine);
-  // After an edge with an iteration: throws MismatchError naming the first register
-  // that differs, the iteration, the cycle and both values.
-  void on_iteration(const CoreSample& post, std::uint64_t cycle);
+  // After an edge with an iteration (pre and post: the samples around the edge; loaded:
+  // the driver handed a command over on this edge): throws MismatchError naming the
+  // first register that differs, the iteration, the cycle and both values. Returns
+  // whether the golden piece ended with this iteration.
+  bool on_iteration(const CoreSample& pre, const CoreSample& post, std::uint64_t cycle, bool loaded);
   // After an edge that raised done (the end of a command): the golden run of that
   // piece must be complete too; the next iteration belongs to the next piece.
   void on_done(std::uint64_t cycle);

@@ -142,7 +142,8 @@ int smallest_valid_bits(std::int64_t a, std::int64_t b);
 // change nothing (spec, accuracy table) and each bit doubles the run's length.
 inline constexpr int kMaxExtraBits = 16;
 // The width used when none is given: four bits above the smallest valid width, where
-// half preload does its best (spec: more bits change nothing).
+// half preload does its best (spec: more bits change nothing), fewer if the capacity
+// 2^n a b would reach 2^61.
 int default_bits(std::int64_t a, std::int64_t b);
 
 // Validate and plan. Throws InputError naming the value and the rule it breaks.

@@ -1,0 +1,23 @@
+// A broken copy of the RTL that takes a command only when idle (tests/CMakeLists.txt):
+// the pieces of an arc then run with an idle cycle between them, which the driver's
+// back-to-back check must catch.
+#define CATCH_CONFIG_MAIN
+#include "core_checks.hpp"
+#include "rtl_harness.hpp"
+
+using namespace dda;
+using namespace dda::checks;
+
+TEST_CASE("rtl mutant: a core that does not load back to back is caught", "[rtl][mutant]") {
+  rtl::RtlHarness h;
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.from = Point{10, 0};
+  s.to = Point{-10, 0};  // two pieces, meeting at (0,6)
+  const std::string message = mismatch_message(h, plan_arc(s));
+  INFO(message);
+  CHECK(message.find("rtl mismatch: cmd_ready_o was low in the cycle of the last iteration of piece 0") !=
+        std::string::npos);
+}
