@@ -2,8 +2,9 @@
 // and the two integrand corrections inc_on_x_q, inc_on_y_q.
 //
 // Combinationally: sum = jr_q + jv_q (AccWidth + 1 bits) and the carry
-// ovf_o = active_i & (sum >= cap_i). On an iteration (iterate_i) the accumulator keeps
-// sum - cap_i if it carried, sum if it did not, and holds if the axis is not active; the
+// ovf_o = add & (sum >= cap_i), where add = active_i and the integrand is not negative
+// (top bit clear). On an iteration (iterate_i) the accumulator keeps sum - cap_i if it
+// carried, sum if it did not, and holds if the axis does not add; the
 // integrand adds the corrections selected by both axes' carries of the same iteration,
 // modulo 2^AccWidth (the corrections are two's complement).
 `include "dda_params.vh"
@@ -47,8 +48,10 @@ module dda_integrator #(
   wire [AccWidth-1:0] corr_x = ovf_x_i ? inc_on_x_q : {AccWidth{1'b0}};
   wire [AccWidth-1:0] corr_y = ovf_y_i ? inc_on_y_q : {AccWidth{1'b0}};
 
-  assign ovf_o = active_i & (sum >= {1'b0, cap_i});
-  assign can_o = active_i & (jv_q != {AccWidth{1'b0}});
+  // A negative integrand (top bit set) holds its axis: no add, no carry.
+  wire add = active_i & ~jv_q[AccWidth-1];
+  assign ovf_o = add & (sum >= {1'b0, cap_i});
+  assign can_o = add & (jv_q != {AccWidth{1'b0}});
 
   always @(*) begin
     jv_d       = jv_q;
@@ -61,7 +64,7 @@ module dda_integrator #(
       inc_on_x_d = inc_on_x_i;
       inc_on_y_d = inc_on_y_i;
     end else if (iterate_i) begin
-      if (active_i) begin
+      if (add) begin
         jr_d = ovf_o ? sum_minus_cap : sum[AccWidth-1:0];
       end
       jv_d = jv_q + corr_x + corr_y;

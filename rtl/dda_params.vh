@@ -3,7 +3,7 @@
 `ifndef DDA_PARAMS_VH
 `define DDA_PARAMS_VH
 
-`define DDA_ACC_WIDTH 50
+`define DDA_ACC_WIDTH 51
 `define DDA_CNT_WIDTH 17
 `define DDA_STATE_WIDTH 1
 `define DDA_STATE_IDLE 1'd0
@@ -12,32 +12,32 @@
 `define DDA_DIR_NEG 1'b1
 
 // Command word, fields packed LSB first.
-`define DDA_CMD_WIDTH 486
-`define DDA_CMD_JV_X_LSB 0  // initial X integrand (scaled)
-`define DDA_CMD_JV_X_WIDTH 50
-`define DDA_CMD_JV_Y_LSB 50  // initial Y integrand (scaled)
-`define DDA_CMD_JV_Y_WIDTH 50
-`define DDA_CMD_JR_X_LSB 100  // initial X accumulator (preload), < cap
-`define DDA_CMD_JR_X_WIDTH 50
-`define DDA_CMD_JR_Y_LSB 150  // initial Y accumulator (preload), < cap
-`define DDA_CMD_JR_Y_WIDTH 50
-`define DDA_CMD_CAP_LSB 200  // accumulator capacity (2^n * a * b), > 0
-`define DDA_CMD_CAP_WIDTH 50
-`define DDA_CMD_CNT_X_LSB 250  // X steps to emit
+`define DDA_CMD_WIDTH 495
+`define DDA_CMD_JV_X_LSB 0  // initial X integrand (scaled, two's complement)
+`define DDA_CMD_JV_X_WIDTH 51
+`define DDA_CMD_JV_Y_LSB 51  // initial Y integrand (scaled, two's complement)
+`define DDA_CMD_JV_Y_WIDTH 51
+`define DDA_CMD_JR_X_LSB 102  // initial X accumulator (preload), < cap
+`define DDA_CMD_JR_X_WIDTH 51
+`define DDA_CMD_JR_Y_LSB 153  // initial Y accumulator (preload), < cap
+`define DDA_CMD_JR_Y_WIDTH 51
+`define DDA_CMD_CAP_LSB 204  // accumulator capacity (2^n * a * b, or 2^49 rotated), 0 < cap < 2^(AccWidth-1)
+`define DDA_CMD_CAP_WIDTH 51
+`define DDA_CMD_CNT_X_LSB 255  // X steps to emit
 `define DDA_CMD_CNT_X_WIDTH 17
-`define DDA_CMD_CNT_Y_LSB 267  // Y steps to emit
+`define DDA_CMD_CNT_Y_LSB 272  // Y steps to emit
 `define DDA_CMD_CNT_Y_WIDTH 17
-`define DDA_CMD_DIR_X_LSB 284  // X step direction (0 = +X, 1 = -X)
+`define DDA_CMD_DIR_X_LSB 289  // X step direction (0 = +X, 1 = -X)
 `define DDA_CMD_DIR_X_WIDTH 1
-`define DDA_CMD_DIR_Y_LSB 285  // Y step direction (0 = +Y, 1 = -Y)
+`define DDA_CMD_DIR_Y_LSB 290  // Y step direction (0 = +Y, 1 = -Y)
 `define DDA_CMD_DIR_Y_WIDTH 1
-`define DDA_CMD_INC_X_ON_X_LSB 286  // added to jv_x after an X step (two's complement)
-`define DDA_CMD_INC_X_ON_X_WIDTH 50
-`define DDA_CMD_INC_X_ON_Y_LSB 336  // added to jv_x after a Y step (two's complement)
-`define DDA_CMD_INC_X_ON_Y_WIDTH 50
-`define DDA_CMD_INC_Y_ON_X_LSB 386  // added to jv_y after an X step (two's complement)
-`define DDA_CMD_INC_Y_ON_X_WIDTH 50
-`define DDA_CMD_INC_Y_ON_Y_LSB 436  // added to jv_y after a Y step (two's complement)
-`define DDA_CMD_INC_Y_ON_Y_WIDTH 50
+`define DDA_CMD_INC_X_ON_X_LSB 291  // added to jv_x after an X step (two's complement)
+`define DDA_CMD_INC_X_ON_X_WIDTH 51
+`define DDA_CMD_INC_X_ON_Y_LSB 342  // added to jv_x after a Y step (two's complement)
+`define DDA_CMD_INC_X_ON_Y_WIDTH 51
+`define DDA_CMD_INC_Y_ON_X_LSB 393  // added to jv_y after an X step (two's complement)
+`define DDA_CMD_INC_Y_ON_X_WIDTH 51
+`define DDA_CMD_INC_Y_ON_Y_LSB 444  // added to jv_y after a Y step (two's complement)
+`define DDA_CMD_INC_Y_ON_Y_WIDTH 51
 
 `endif  // DDA_PARAMS_VH

@@ -187,7 +187,7 @@ TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "
                      "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
   expect_usage_error("trace " + kPaper + " --from 10,0 --to 9,0 --dir cw", "end point (9,0) is unreachable");
   expect_usage_error("trace " + kPaper + " --from 1,2 --from-theta 30", "from and from-theta are both given");
-  expect_usage_error("trace " + kPaper + " --to-theta north", "to-theta = 'north' is invalid: a parametric angle in degrees");
+  expect_usage_error("trace " + kPaper + " --to-theta north", "to-theta = 'north' is invalid: an angle in degrees");
   expect_usage_error("trace " + kPaper + " --from 1,2,3", "from = '1,2,3' is invalid: a point is two integers X,Y");
   expect_usage_error("trace " + kPaper + " --to abc", "to = 'abc' is invalid");
 }
@@ -198,12 +198,17 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
   expect_usage_error("stats " + kPaper + " --format csv", "format = 'csv' is invalid");
   expect_usage_error("trace " + kPaper + " --engine spice", "engine = 'spice' is invalid");
   expect_usage_error("trace " + kPaper + " --dir left", "dir = 'left' is invalid: use ccw or cw");
-  expect_usage_error("trace " + kPaper + " --angle 30", "angle = 30 is not supported yet");
+  expect_usage_error("trace " + kPaper + " --angle 30.1234567", "angle = '30.1234567' is invalid: an angle in degrees, a decimal with at most 6 decimals");
+  expect_usage_error("trace " + kPaper + " --angle 1e3", "angle = '1e3' is invalid");
+  expect_usage_error("trace " + kPaper + " --from-theta 1234567890", "from-theta = '1234567890' is invalid");
+  expect_usage_error("path --a 100 --b 4 --angle 30", "a = 100, b = 4 is too thin to turn by 30 degrees");
+  expect_usage_error("path --a 32768 --b 100 --angle 30 --bits 31", "bits = 31 is too large for this rotated ellipse");
+  expect_usage_error("path --a 500 --b 300 --angle 30 --from-theta 10 --to 0,0", "to point (0,0) is");
   expect_usage_error("trace " + kPaper + " --angle x", "angle = 'x' is invalid");
   expect_usage_error("trace " + kPaper + " --center 1", "center = '1' is invalid: a point is two integers X,Y");
   expect_usage_error("trace --a 10 --b 6 --bits 21", "bits = 21 is invalid: at most 16 bits above the smallest valid width (4)");
   expect_usage_error("stats --a 120000 --b 120000 --bits 17 --engine rtl",
-                     "jv_y = 1728000000000000 does not fit the hardware's 50-bit field");
+                     "cap = 1887436800000000 does not fit the hardware's 51-bit field: it must be in [0, 2^50)");
   expect_usage_error("--bogus", "option '--bogus' is unknown here");
   expect_usage_error("trace " + kPaper + " --frobnicate 1", "frobnicate");
   expect_usage_error("trace --b 6 --bits 4", "--a is required");

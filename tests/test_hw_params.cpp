@@ -49,7 +49,7 @@ TEST_CASE("hw_params: every command field lands at its offset", "[hw_params]") {
   c.jv_x = 0x123456789ab;
   c.jv_y = 0x2fedcba9876;
   c.jr_x = 0x3;
-  c.jr_y = (std::int64_t{1} << dda::hw::kAccWidth) - 1;
+  c.jr_y = (std::int64_t{1} << (dda::hw::kAccWidth - 1)) - 1;  // largest accumulator value
   c.cap = 0x1000000;
   c.cnt_x = 0x1abcd;
   c.cnt_y = 1;
@@ -81,8 +81,12 @@ TEST_CASE("hw_params: every command field lands at its offset", "[hw_params]") {
 
 TEST_CASE("hw_params: values that do not fit the hardware are refused by name", "[hw_params]") {
   dda::Command c;
-  c.cap = std::int64_t{1} << dda::hw::kAccWidth;
-  CHECK_THROWS_WITH(dda::hw::pack_command(c), Catch::Contains("cap = ") && Catch::Contains("50-bit"));
+  // cap must stay below 2^(AccWidth-1): every integrand up to it is then positive.
+  c.cap = std::int64_t{1} << (dda::hw::kAccWidth - 1);
+  CHECK_THROWS_WITH(dda::hw::pack_command(c),
+                    Catch::Contains("cap = ") && Catch::Contains(std::to_string(dda::hw::kAccWidth) + "-bit"));
+  c.cap = (std::int64_t{1} << (dda::hw::kAccWidth - 1)) - 1;
+  CHECK_NOTHROW(dda::hw::pack_command(c));
   c.cap = 10;
   c.cnt_y = std::int64_t{1} << dda::hw::kCntWidth;
   CHECK_THROWS_WITH(dda::hw::pack_command(c), Catch::Contains("cnt_y = "));

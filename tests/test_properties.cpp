@@ -19,12 +19,9 @@ namespace {
 std::string check_run(const Plan& plan) {
   std::ostringstream err;
   Point prev = plan.from;
-  const auto a = double(plan.ax), b = double(plan.by);
   const double bound = deviation_bound(plan);
   const bool check_dev = start_offset(plan) <= 1.0;
-  const auto dev = [&](Point p) {
-    return ellipse_distance(a, b, double(p.x - plan.spec.center.x), double(p.y - plan.spec.center.y));
-  };
+  const auto dev = [&](Point p) { return plan_distance(plan, double(p.x), double(p.y)); };
   if (check_dev && dev(plan.from) > bound) err << "start point deviates " << dev(plan.from);
   try {
     const RunSummary s = run(plan, [&](const Iteration& it) {

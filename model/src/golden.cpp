@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace dda {
 
@@ -53,8 +55,9 @@ Iteration Datapath::iterate() {
   it.jv_y = regs_.jv_y;
   // Both accumulators add the integrands of this iteration; a carry (sum >= cap)
   // is a step and the accumulator keeps sum - cap.
-  it.sum_x = it.active_x ? regs_.jr_x + regs_.jv_x : regs_.jr_x;
-  it.sum_y = it.active_y ? regs_.jr_y + regs_.jv_y : regs_.jr_y;
+  // An axis adds while active with a positive integrand; a negative one holds.
+  it.sum_x = it.active_x && regs_.jv_x > 0 ? regs_.jr_x + regs_.jv_x : regs_.jr_x;
+  it.sum_y = it.active_y && regs_.jv_y > 0 ? regs_.jr_y + regs_.jv_y : regs_.jr_y;
   it.step_x = it.active_x && it.sum_x >= cmd_.cap;
   it.step_y = it.active_y && it.sum_y >= cmd_.cap;
   RegState& r = regs_;
@@ -85,8 +88,8 @@ RegState initial_regs(const Command& c) {
 
 void Datapath::step() {
   const bool ax = regs_.cnt_x != 0, ay = regs_.cnt_y != 0;
-  const std::int64_t sx = ax ? regs_.jr_x + regs_.jv_x : regs_.jr_x;
-  const std::int64_t sy = ay ? regs_.jr_y + regs_.jv_y : regs_.jr_y;
+  const std::int64_t sx = ax && regs_.jv_x > 0 ? regs_.jr_x + regs_.jv_x : regs_.jr_x;
+  const std::int64_t sy = ay && regs_.jv_y > 0 ? regs_.jr_y + regs_.jv_y : regs_.jr_y;
   const bool cx = ax && sx >= cmd_.cap, cy = ay && sy >= cmd_.cap;
   regs_.jr_x = cx ? sx - cmd_.cap : sx;
   regs_.jr_y = cy ? sy - cmd_.cap : sy;
@@ -123,6 +126,19 @@ RunSummary run_segment(const Plan& plan, std::size_t k, std::uint64_t first_iter
   const Segment& sg = plan.segs[k];
   Datapath dp(sg.cmd, sg.from);
   while (!dp.done()) {
+    // An active axis' integrand must stay within [-cap, cap]: above cap an accumulator
+    // could carry twice in one iteration. The planner refuses such an arc.
+    const auto& rg = dp.regs();
+    for (const auto& [axis, active, jv] : {std::tuple{'X', rg.cnt_x != 0, rg.jv_x}, std::tuple{'Y', rg.cnt_y != 0, rg.jv_y}}) {
+      if (active && (jv < -sg.cmd.cap || jv > sg.cmd.cap)) {
+        std::ostringstream m;
+        m << "end point " << pt(plan.to) << " is unreachable from " << pt(plan.from) << ": at " << pt(dp.pos())
+          << " the " << axis << " integrand's magnitude exceeds the capacity with "
+          << (axis == 'X' ? rg.cnt_x : rg.cnt_y) << ' ' << axis << " step(s) still owed";
+        if (for_validation) throw InputError(m.str());
+        throw GuardError("integrand guard: " + m.str());
+      }
+    }
     if (dp.stalled()) {
       const auto& r = dp.regs();
       const char axis = (r.cnt_y != 0 && r.jv_y == 0) ? 'Y' : 'X';
@@ -205,128 +221,13 @@ bool in_piece(int q, Direction dir, Point s, Point e) {
   return (e.x - s.x) * step_sx(q, dir) >= 0 && (e.y - s.y) * step_sy(q, dir) >= 0;
 }
 
-}  // namespace
-
-Point theta_point(const ArcSpec& spec, double theta_deg) {
-  const std::int64_t lim = std::int64_t{1} << 30, coord_lim = std::int64_t{1} << 40;
-  if (spec.a < 1 || spec.b < 1 || spec.a > lim || spec.b > lim) {
-    throw InputError("a = " + std::to_string(spec.a) + ", b = " + std::to_string(spec.b) +
-                     " is invalid: semi-axes must be positive integers up to 2^30");
-  }
-  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
-    throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
-  }
-  if (!std::isfinite(theta_deg)) throw InputError("theta is invalid: a finite angle in degrees");
-  const double m = std::fmod(theta_deg, 360.0);
-  const double t = m < 0 ? m + 360.0 : m;
-  double c = 0, s = 0;
-  if (t == 0.0) {
-    c = 1;
-  } else if (t == 90.0) {
-    s = 1;
-  } else if (t == 180.0) {
-    c = -1;
-  } else if (t == 270.0) {
-    s = -1;
-  } else {
-    const double rad = t * (std::acos(-1.0) / 180.0);
-    c = std::cos(rad);
-    s = std::sin(rad);
-  }
-  // Of the four lattice points around the curve point (in the ellipse's own frame), the
-  // one on or outside the curve whose ellipse through it, r times the nominal one, is the
-  // smallest (least r >= 1): a start inside the curve makes the DDA follow a smaller
-  // ellipse, which can stall at a vertex, and the DDA's offset from the nominal curve
-  // grows with r - 1. r^2 a^2 b^2 = u^2 b^2 + v^2 a^2 is compared exactly. Turning comes
-  // after: a quarter turn maps the lattice onto itself.
-  const double fu = double(spec.a) * c, fv = double(spec.b) * s;
-  const __int128 a2 = __int128(spec.a) * spec.a, b2 = __int128(spec.b) * spec.b;
-  Point r{std::llround(fu), std::llround(fv)};
-  __int128 best = -1;
-  for (const double cu : {std::floor(fu), std::ceil(fu)}) {
-    for (const double cv : {std::floor(fv), std::ceil(fv)}) {
-      const std::int64_t u = std::int64_t(cu), v = std::int64_t(cv);
-      const __int128 r2 = __int128(u) * u * b2 + __int128(v) * v * a2;  // r^2 a^2 b^2
-      if (r2 < a2 * b2) continue;  // inside the ellipse
-      if (best < 0 || r2 < best) {
-        best = r2;
-        r = Point{u, v};
-      }
-    }
-  }
-  for (int k = 0; k < ((spec.quarter_turns % 4) + 4) % 4; ++k) r = Point{-r.y, r.x};
-  return Point{spec.center.x + r.x, spec.center.y + r.y};
-}
-
-Plan plan_arc(const ArcSpec& spec_in) {
-  Plan p;
-  p.spec = spec_in;
-  ArcSpec& spec = p.spec;
-  const std::int64_t a = spec.a, b = spec.b;
-  if (a < 1) throw InputError("a = " + std::to_string(a) + " is invalid: a semi-axis must be a positive integer");
-  if (b < 1) throw InputError("b = " + std::to_string(b) + " is invalid: a semi-axis must be a positive integer");
-  const std::int64_t lim = std::int64_t{1} << 30;
-  if (a > lim || b > lim) {
-    throw InputError((a > lim ? "a = " + std::to_string(a) : "b = " + std::to_string(b)) +
-                     " is out of range: semi-axes must be at most 2^30");
-  }
-  const int nmin = smallest_valid_bits(a, b);
-  if (spec.bits == 0) spec.bits = default_bits(a, b);
-  if (spec.bits < 1 || spec.bits > 61 || (std::int64_t{1} << spec.bits) < std::max(a, b)) {
-    throw InputError("bits = " + std::to_string(spec.bits) +
-                     " is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is " +
-                     std::to_string(nmin) + ")");
-  }
-  if (spec.bits > nmin + kMaxExtraBits) {
-    throw InputError("bits = " + std::to_string(spec.bits) + " is invalid: at most " +
-                     std::to_string(kMaxExtraBits) + " bits above the smallest valid width (" +
-                     std::to_string(nmin) + ") are accepted; each bit doubles the run");
-  }
-  const std::int64_t ab = a * b;
-  const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
-  if (!cap || *cap >= kCapLimit) {
-    throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" +
-                     std::to_string(spec.bits) + " * " + std::to_string(a) + " * " +
-                     std::to_string(b) + " is out of range: it must be below 2^61");
-  }
-  const std::int64_t coord_lim = std::int64_t{1} << 40;
-  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
-    throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
-  }
-  p.scale = ab;
-  if (spec.quarter_turns < 0 || spec.quarter_turns > 3) {
-    throw InputError("quarter_turns = " + std::to_string(spec.quarter_turns) + " is invalid: use 0 to 3");
-  }
-  // A quarter turn swaps the semi-axes along X and Y: from here on the ellipse is the
-  // axis-aligned one with semi-axes ax (along X) and by (along Y).
-  p.ax = spec.quarter_turns % 2 ? b : a;
-  p.by = spec.quarter_turns % 2 ? a : b;
+// Quarter turns: cut the arc into monotone pieces at the vertices (lattice points on
+// the curve; docs/golden-model.md, "Pieces"), each preloaded again.
+void plan_quadrant_pieces(Plan& p, std::int64_t cap) {
+  const ArcSpec& spec = p.spec;
   const std::int64_t ax = p.ax, by = p.by, ax2 = ax * ax, by2 = by * by;
   const Point c = spec.center;
-  p.from = spec.from.value_or(Point{c.x + ax, c.y});
-  p.to = spec.to.value_or(Point{c.x, c.y + by});
   const auto rel = [&](Point q) { return Point{q.x - c.x, q.y - c.y}; };
-
-  const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
-  for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
-    const Point r = rel(q);
-    if (std::llabs(r.x) > 2 * ax + 2 || std::llabs(r.y) > 2 * by + 2) {
-      throw InputError(std::string(name) + " point " + pt(q) +
-                       " is far from the ellipse: start and end must lie within 1 step of it");
-    }
-    const double d = ellipse_distance(double(ax), double(by), double(r.x), double(r.y));
-    if (d > tol) {
-      std::ostringstream m;
-      m.precision(4);
-      m << std::fixed << name << " point " << pt(q) << " is " << d
-        << " steps from the ellipse: start and end must lie within " << kPointTolerance
-        << " step of it";
-      throw InputError(m.str());
-    }
-  }
-  p.full = p.from == p.to;
-
-  // Cut the arc into monotone pieces at the vertices (docs/golden-model.md, "Pieces").
   const Point rt = rel(p.to);
   Point cur = rel(p.from);
   int q = start_quadrant(cur.x, cur.y, spec.dir);
@@ -345,11 +246,11 @@ Plan plan_arc(const ArcSpec& spec_in) {
     sg.to = Point{c.x + end.x, c.y + end.y};
     const int sx = step_sx(q, spec.dir), sy = step_sy(q, spec.dir);
     Command& cm = sg.cmd;
-    cm.cap = *cap;
+    cm.cap = cap;
     // Integrands are magnitudes: |dx| ~ ax^2 |v| and |dy| ~ by^2 |u| (scaled by a*b).
     cm.jv_x = ax2 * std::llabs(cur.y);
     cm.jv_y = by2 * std::llabs(cur.x);
-    cm.jr_x = cm.jr_y = spec.preload == Preload::Half ? *cap / 2 : 0;
+    cm.jr_x = cm.jr_y = spec.preload == Preload::Half ? cap / 2 : 0;
     cm.cnt_x = std::llabs(end.x - cur.x);
     cm.cnt_y = std::llabs(end.y - cur.y);
     cm.dir_x_neg = sx < 0;
@@ -387,6 +288,438 @@ Plan plan_arc(const ArcSpec& spec_in) {
     cur = end;
     q = next_quadrant(q, spec.dir);
   }
+}
+
+}  // namespace
+
+int quarter_turns(const ArcSpec& spec) {
+  const std::int64_t t = normalize_udeg(spec.angle);
+  return t % kQuarterTurn == 0 ? static_cast<int>(t / kQuarterTurn) : -1;
+}
+
+namespace {
+
+using i128 = __int128;
+
+// v / 2^sh rounded to nearest, halves away from zero.
+i128 round_shift(i128 v, int sh) {
+  const i128 half = i128(1) << (sh - 1);
+  return v < 0 ? -((-v + half) >> sh) : (v + half) >> sh;
+}
+// num / den rounded to nearest, halves away from zero (den > 0).
+i128 round_div(i128 num, i128 den) {
+  return num < 0 ? -((-num + den / 2) / den) : (num + den / 2) / den;
+}
+
+void check_axes_and_center(const ArcSpec& spec) {
+  const std::int64_t a = spec.a, b = spec.b;
+  if (a < 1) throw InputError("a = " + std::to_string(a) + " is invalid: a semi-axis must be a positive integer");
+  if (b < 1) throw InputError("b = " + std::to_string(b) + " is invalid: a semi-axis must be a positive integer");
+  const bool rotated = quarter_turns(spec) < 0;
+  const std::int64_t lim = std::int64_t{1} << (rotated ? 20 : 30);
+  if (a > lim || b > lim) {
+    throw InputError((a > lim ? "a = " + std::to_string(a) : "b = " + std::to_string(b)) +
+                     " is out of range: semi-axes must be at most 2^" + (rotated ? "20 for a rotated ellipse" : "30"));
+  }
+  const std::int64_t coord_lim = std::int64_t{1} << 40;
+  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
+    throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
+  }
+}
+
+// The ellipse's quadratic form on lattice points relative to the centre, and its value
+// on the nominal curve: Q(x, y) = qy x^2 - 2 p x y + qx y^2, Q = level on the curve.
+i128 quad_form(const Coefficients& k, std::int64_t x, std::int64_t y) {
+  return i128(k.qy) * x * x - 2 * i128(k.p) * x * y + i128(k.qx) * y * y;
+}
+
+}  // namespace
+
+FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
+  check_axes_and_center(spec);
+  const SinCos t = sincos_udeg(theta);
+  // Frame point (a cos, b sin) in Q(kTrigFrac).
+  const i128 u = i128(spec.a) * t.c, v = i128(spec.b) * t.s;
+  const int qt = quarter_turns(spec);
+  if (qt >= 0) {  // exact quarter turns
+    i128 x = u, y = v;
+    for (int k = 0; k < qt; ++k) std::tie(x, y) = std::pair<i128, i128>{-y, x};
+    return FixedPoint{std::int64_t(round_shift(x, kTrigFrac - kPosFrac)),
+                      std::int64_t(round_shift(y, kTrigFrac - kPosFrac))};
+  }
+  const SinCos f = sincos_udeg(spec.angle);
+  const i128 x = u * f.c - v * f.s, y = u * f.s + v * f.c;  // Q(2 kTrigFrac)
+  return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac - kPosFrac)),
+                    std::int64_t(round_shift(y, 2 * kTrigFrac - kPosFrac))};
+}
+
+namespace {
+
+// The coefficients of a turned ellipse for width n (see Coefficients), exact for
+// quarter turns; the capacity goes with them.
+struct Scaled {
+  Coefficients k;
+  std::int64_t cap = 0;
+  i128 level = 0;  // quad_form on the nominal curve: a^2 b^2 (exact) or a b 2^(K-n)
+};
+
+Scaled scaled_coefficients(const ArcSpec& spec, int n) {
+  Scaled r;
+  const std::int64_t a = spec.a, b = spec.b;
+  const int qt = quarter_turns(spec);
+  if (qt >= 0) {
+    const std::int64_t ax = qt % 2 ? b : a, by = qt % 2 ? a : b;
+    r.k = Coefficients{0, ax * ax, by * by};
+    r.cap = (a * b) << n;  // range checked by the caller
+    r.level = i128(a) * a * b * b;
+    return r;
+  }
+  // Tangent of the counter-clockwise turn times a b: (P x - Qx y, Qy x - P y) with
+  // P = cs (a^2 - b^2), Qx = a^2 c^2 + b^2 s^2, Qy = a^2 s^2 + b^2 c^2; scaled by
+  // 2^K / (a b 2^n) so that the capacity is 2^K, K = kRotCapBits, and rounded to
+  // nearest. c, s are Q(kTrigFrac), so the products are Q(2 kTrigFrac).
+  const SinCos f = sincos_udeg(spec.angle);
+  const i128 a2 = i128(a) * a, b2 = i128(b) * b, cc = i128(f.c) * f.c, ss = i128(f.s) * f.s,
+             cs = i128(f.c) * f.s;
+  const int sh = 2 * kTrigFrac - (kRotCapBits - n);  // n >= 1 keeps it >= 32
+  const i128 den = (i128(a) * b) << sh;
+  r.k.p = std::int64_t(round_div(cs * (a2 - b2), den));
+  r.k.qx = std::int64_t(round_div(a2 * cc + b2 * ss, den));
+  r.k.qy = std::int64_t(round_div(a2 * ss + b2 * cc, den));
+  r.cap = std::int64_t{1} << kRotCapBits;
+  r.level = (i128(a) * b) << (kRotCapBits - n);
+  return r;
+}
+
+}  // namespace
+
+Point theta_point(const ArcSpec& spec, std::int64_t theta) {
+  const FixedPoint f = theta_ideal(spec, theta);
+  const Point c = spec.center;
+  if (spec.preload == Preload::Half) {
+    const auto nearest = [](std::int64_t v) { return std::int64_t(round_shift(v, kPosFrac)); };
+    return Point{c.x + nearest(f.x), c.y + nearest(f.y)};
+  }
+  const int n = spec.bits != 0 ? spec.bits : default_bits(spec.a, spec.b);
+  const Scaled sc = scaled_coefficients(spec, std::clamp(n, 1, kRotCapBits));
+  const std::int64_t fx = f.x >> kPosFrac, fy = f.y >> kPosFrac;  // floors
+  const std::int64_t mask = (std::int64_t{1} << kPosFrac) - 1;
+  const std::int64_t cx = fx + ((f.x & mask) != 0), cy = fy + ((f.y & mask) != 0);
+  Point best{fx, fy};
+  i128 best_q = -1;
+  for (const std::int64_t x : {fx, cx}) {
+    for (const std::int64_t y : {fy, cy}) {
+      const i128 q = quad_form(sc.k, x, y);
+      if (q < sc.level) continue;  // inside the ellipse
+      if (best_q < 0 || q < best_q) {
+        best_q = q;
+        best = Point{x, y};
+      }
+    }
+  }
+  return Point{c.x + best.x, c.y + best.y};
+}
+
+namespace {
+
+// Turns the relative point by -angle into the ellipse's frame (measurement only).
+std::pair<double, double> to_frame(const ArcSpec& spec, double x, double y) {
+  const SinCos f = sincos_udeg(spec.angle);
+  const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
+  return {x * c + y * s, -x * s + y * c};
+}
+
+// A resolved start or end point: lattice point and the fraction of the ideal point.
+struct EndPoint {
+  Point lattice;
+  std::int64_t fx = 0, fy = 0;  // Q(kPosFrac); non-zero only for half preload and theta
+};
+
+EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
+                       const std::optional<std::int64_t>& theta, std::int64_t default_theta,
+                       const std::optional<Point>& default_pnt) {
+  if (pnt) return EndPoint{*pnt};
+  if (!theta && default_pnt) return EndPoint{*default_pnt};
+  const std::int64_t t = theta.value_or(default_theta);
+  EndPoint e{theta_point(spec, t)};
+  if (spec.preload == Preload::Half) {
+    const FixedPoint f = theta_ideal(spec, t);
+    e.fx = f.x - ((e.lattice.x - spec.center.x) << kPosFrac);
+    e.fy = f.y - ((e.lattice.y - spec.center.y) << kPosFrac);
+  }
+  return e;
+}
+
+// Preload of an axis so that the represented position, lattice + s (jr / cap - 1/2),
+// is lattice + frac / 2^kPosFrac (half preload; |frac| <= 1/2).
+std::int64_t fraction_preload(std::int64_t cap, bool dir_neg, std::int64_t frac) {
+  const i128 s_frac = dir_neg ? -i128(frac) : i128(frac);
+  const i128 jr = (i128(cap) * ((i128(1) << (kPosFrac - 1)) + s_frac)) >> kPosFrac;
+  return std::int64_t(std::clamp<i128>(jr, 0, cap - 1));
+}
+
+// The quadrant (about the centre) whose steps, for direction dir, have signs (sx, sy).
+int quadrant_of_steps(int sx, int sy, Direction dir) {
+  for (int q = 1; q <= 4; ++q) {
+    if (step_sx(q, dir) == sx && step_sy(q, dir) == sy) return q;
+  }
+  return 1;
+}
+
+int sign(i128 v) { return (v > 0) - (v < 0); }
+
+// Rotated ellipse: the pieces are found by running the datapath (docs/golden-model.md,
+// "Rotated ellipses"): a piece ends on the iteration after which one integrand has
+// turned negative (its axis must reverse); the next piece starts there with that axis
+// reversed and, with half preload, the accumulators carrying their remainders
+// (mirrored for a reversed axis). The piece that contains the end point gets the exact
+// counts to it.
+// At a tip sharper than the lattice the path can hop between the two turns a few times;
+// past kMaxRotatedTurns turns the arc is refused.
+constexpr int kMaxRotatedTurns = 64;
+//
+// An end given as a parametric angle is where the path first crosses the ray from the
+// centre through that angle's ideal point (with a full turn: after passing the far side),
+// so it is always reached; an end given as a lattice point is reached with exact counts
+// by the piece whose walk spans it, and refused if the path cannot get there.
+void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, const std::optional<FixedPoint>& ray) {
+  const ArcSpec& spec = p.spec;
+  const Coefficients k = sc.k;
+  const int D = spec.dir == Direction::Ccw ? 1 : -1;
+  const Point c = spec.center;
+  const auto tx = [&](Point r) { return D * (i128(k.p) * r.x - i128(k.qx) * r.y); };
+  const auto ty = [&](Point r) { return D * (i128(k.qy) * r.x - i128(k.p) * r.y); };
+  const Point rt{p.to.x - c.x, p.to.y - c.y};
+  Point cur{p.from.x - c.x, p.from.y - c.y};
+  int sx = sign(tx(cur)), sy = sign(ty(cur));
+  if (sx == 0 && sy == 0) {
+    throw InputError("from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there");
+  }
+  // On a turning line the axis takes the direction its integrand will grow in.
+  if (sx == 0) sx = -D * sy;
+  if (sy == 0) sy = D * sx;
+  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
+  // Guard: a piece has at most 4 max(a, b) + 8 steps, and between two steps at most
+  // 2^(n+2) / min(a, b) + 4 iterations (the larger integrand is at least about half the
+  // tangent's length, which is at least a b min(a, b) times the scale).
+  const std::uint64_t guard = std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
+  std::int64_t jr_x = spec.preload == Preload::Half ? sc.cap / 2 : 0, jr_y = jr_x;
+  bool first = true;
+  // Ray end: side(q) > 0 once q is past the ray in the direction of travel.
+  const auto side = [&](Point q) {
+    return D * (i128(ray->x) * q.y - i128(ray->y) * q.x);
+  };
+  const auto ahead = [&](Point q) { return i128(ray->x) * q.x + i128(ray->y) * q.y > 0; };
+  bool far_seen = !p.full;  // a full turn must pass the far side before it can end
+  bool armed = ray && far_seen && side(cur) < 0;
+  char last_turn = 0;  // turns alternate between the axes around a convex curve
+  for (int piece = 0;; ++piece) {
+    if (piece >= kMaxRotatedTurns) {
+      // A convex curve turns four times a turn; far more means the path lost the curve
+      // (a lattice end point was missed) or hops between the turns at a tip sharper
+      // than the lattice (radius of curvature min(a,b)^2 / max(a,b) steps).
+      std::ostringstream m;
+      m.precision(3);
+      m << "the DDA cannot follow this rotated ellipse to " << pt(p.to) << ": its path from " << pt(p.from)
+        << " turned " << piece << " times without reaching it (tip radius of curvature "
+        << double(mn) * double(mn) / double(mx) << " steps: too thin for the lattice at this angle)";
+      throw InputError(m.str());
+    }
+    Command cm;
+    cm.cap = sc.cap;
+    cm.dir_x_neg = sx < 0;
+    cm.dir_y_neg = sy < 0;
+    const i128 jvx = sx * tx(cur), jvy = sy * ty(cur);
+    if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
+      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                       pt(Point{c.x + cur.x, c.y + cur.y}) + " exceeds the capacity (use more bits)");
+    }
+    cm.jv_x = std::int64_t(jvx);
+    cm.jv_y = std::int64_t(jvy);
+    if (piece == 0 && spec.preload == Preload::Half) {
+      jr_x = fraction_preload(cm.cap, cm.dir_x_neg, from.fx);
+      jr_y = fraction_preload(cm.cap, cm.dir_y_neg, from.fy);
+    }
+    cm.jr_x = jr_x;
+    cm.jr_y = jr_y;
+    cm.inc_x_on_x = D * k.p;
+    cm.inc_x_on_y = -D * sx * sy * k.qx;
+    cm.inc_y_on_x = D * sx * sy * k.qy;
+    cm.inc_y_on_y = -D * k.p;
+    // Run the piece with unbounded counts to its turn: an integrand negative while the
+    // other axis' steps drive it further down (the path has crossed the line where the
+    // tangent of that axis is 0). A negative integrand the other axis drives back up is
+    // only a step's overshoot: its axis holds until it is positive again.
+    Command probe = cm;
+    probe.cnt_x = probe.cnt_y = std::int64_t{1} << 40;
+    bool ray_end = false;
+    Datapath dp(probe, Point{c.x + cur.x, c.y + cur.y});
+    const auto turn_x = [&](const RegState& r) { return last_turn != 'X' && r.jv_x < 0 && cm.inc_x_on_y < 0; };
+    const auto turn_y = [&](const RegState& r) { return last_turn != 'Y' && r.jv_y < 0 && cm.inc_y_on_x < 0; };
+    while (!turn_x(dp.regs()) && !turn_y(dp.regs())) {
+      const RegState& r = dp.regs();
+      if (std::max(std::llabs(r.jv_x), std::llabs(r.jv_y)) > cm.cap) {
+        throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                         pt(dp.pos()) + " exceeds the capacity (use more bits)");
+      }
+      if (dp.stalled()) {
+        throw InputError("the DDA cannot follow this rotated ellipse from " + pt(p.from) + ": it stalls at " +
+                         pt(dp.pos()) + " (both integrands <= 0: the lattice is too coarse for so thin an ellipse)");
+      }
+      if (dp.iterations() >= guard) throw GuardError("planner guard: a piece passed " + std::to_string(guard) + " iterations");
+      dp.step();
+      if (ray) {
+        const Point q{dp.pos().x - c.x, dp.pos().y - c.y};
+        if (armed && side(q) >= 0 && ahead(q)) {
+          ray_end = true;
+          break;
+        }
+        far_seen = far_seen || !ahead(q);
+        armed = far_seen && side(q) < 0;
+      }
+    }
+    const Point cut{dp.pos().x - c.x, dp.pos().y - c.y};
+    const auto between = [](std::int64_t lo, std::int64_t v, std::int64_t hi, int s) {
+      return (v - lo) * s >= 0 && (hi - v) * s >= 0;
+    };
+    const bool last = ray ? ray_end
+                          : !(p.full && first) && between(cur.x, rt.x, cut.x, sx) && between(cur.y, rt.y, cut.y, sy);
+    const Point end = last && !ray ? rt : cut;
+    cm.cnt_x = std::llabs(end.x - cur.x);
+    cm.cnt_y = std::llabs(end.y - cur.y);
+    if (last || cm.cnt_x != 0 || cm.cnt_y != 0) {  // a turn without a step adds no piece
+      Segment sg;
+      sg.quadrant = quadrant_of_steps(sx, sy, spec.dir);
+      sg.from = Point{c.x + cur.x, c.y + cur.y};
+      sg.to = Point{c.x + end.x, c.y + end.y};
+      sg.cmd = cm;
+      sg.iteration_bound = guard;
+      p.iteration_bound += guard;
+      p.segs.push_back(sg);
+      first = false;
+    }
+    if (last) break;
+    // Next piece: reverse the axes that turned.
+    const RegState& r = dp.regs();
+    const bool flip_x = turn_x(r), flip_y = turn_y(r);
+    const auto carry = [&](std::int64_t jr, bool flip) {
+      if (spec.preload == Preload::Zero) return std::int64_t{0};
+      return flip ? std::min(cm.cap - jr, cm.cap - 1) : jr;
+    };
+    jr_x = carry(r.jr_x, flip_x);
+    jr_y = carry(r.jr_y, flip_y);
+    if (flip_x) sx = -sx;
+    if (flip_y) sy = -sy;
+    last_turn = flip_y ? 'Y' : 'X';
+    cur = cut;
+  }
+}
+
+}  // namespace
+
+Plan plan_arc(const ArcSpec& spec_in) {
+  Plan p;
+  p.spec = spec_in;
+  ArcSpec& spec = p.spec;
+  spec.angle = normalize_udeg(spec.angle);
+  check_axes_and_center(spec);
+  const std::int64_t a = spec.a, b = spec.b;
+  const int qt = quarter_turns(spec);
+  p.rotated = qt < 0;
+  const int nmin = smallest_valid_bits(a, b);
+  if (spec.bits == 0) spec.bits = default_bits(a, b);
+  if (spec.bits < 1 || spec.bits > 61 || (std::int64_t{1} << spec.bits) < std::max(a, b)) {
+    throw InputError("bits = " + std::to_string(spec.bits) +
+                     " is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is " +
+                     std::to_string(nmin) + ")");
+  }
+  if (spec.bits > nmin + kMaxExtraBits) {
+    throw InputError("bits = " + std::to_string(spec.bits) + " is invalid: at most " +
+                     std::to_string(kMaxExtraBits) + " bits above the smallest valid width (" +
+                     std::to_string(nmin) + ") are accepted; each bit doubles the run");
+  }
+  const std::int64_t ab = a * b;
+  if (!p.rotated) {
+    const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
+    if (!cap || *cap >= kCapLimit) {
+      throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" +
+                       std::to_string(spec.bits) + " * " + std::to_string(a) + " * " +
+                       std::to_string(b) + " is out of range: it must be below 2^61");
+    }
+  } else if (4 * __int128(std::min(a, b)) * std::min(a, b) < std::max(a, b)) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "a = " << a << ", b = " << b << " is too thin to turn by " << format_degrees(spec.angle)
+      << " degrees: the radius of curvature at the tips, min(a,b)^2 / max(a,b) = "
+      << double(std::min(a, b)) * double(std::min(a, b)) / double(std::max(a, b))
+      << " steps, must be at least 1/4 step for a rotated ellipse (the lattice path cannot follow a sharper tip)";
+    throw InputError(m.str());
+  } else if (coefficient_drift_bound(p) > kMaxCoefficientDrift || spec.bits > kRotCapBits) {
+    std::ostringstream m;
+    m << "bits = " << spec.bits << " is too large for this rotated ellipse: its fixed-point coefficients "
+      << "could move the curve by " << coefficient_drift_bound(p) << " steps (at most " << kMaxCoefficientDrift
+      << " allowed: max(a,b)^2 2^n / (2^" << kRotCapBits << " min(a,b)); use fewer bits)";
+    throw InputError(m.str());
+  }
+  p.scale = ab;
+  const Scaled sc = scaled_coefficients(spec, spec.bits);
+  p.coef = sc.k;
+  p.ax = qt >= 0 && qt % 2 ? b : a;
+  p.by = qt >= 0 && qt % 2 ? a : b;
+  if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
+  if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
+  const Point c = spec.center;
+  // Defaults: the quadrant-I quarter arc (quarter turns), parametric 0 to 90 (rotated).
+  const auto dflt = [&](Point q) { return p.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
+  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + p.ax, c.y}));
+  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + p.by}));
+  p.from = from.lattice;
+  p.to = to.lattice;
+  p.frac_x = from.fx;
+  p.frac_y = from.fy;
+
+  const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
+  for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
+    if (p.rotated && spec.to_theta && std::string(name) == "to") continue;  // found by the walk
+    const Point r{q.x - c.x, q.y - c.y};
+    const std::int64_t reach = 2 * std::max(a, b) + 2;
+    if (std::llabs(r.x) > reach || std::llabs(r.y) > reach) {
+      throw InputError(std::string(name) + " point " + pt(q) +
+                       " is far from the ellipse: start and end must lie within 1 step of it");
+    }
+    const double d = plan_distance(p, double(q.x), double(q.y));
+    if (d > tol) {
+      std::ostringstream m;
+      m.precision(4);
+      m << std::fixed << name << " point " << pt(q) << " is " << d
+        << " steps from the ellipse: start and end must lie within " << kPointTolerance
+        << " step of it";
+      throw InputError(m.str());
+    }
+  }
+  p.full = p.from == p.to;
+  const bool ray_end = p.rotated && spec.to_theta.has_value();
+  if (ray_end) {
+    p.full = spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta);
+  } else if (p.full && spec.from_theta && spec.to_theta &&
+      normalize_udeg(*spec.from_theta) != normalize_udeg(*spec.to_theta)) {
+    throw InputError("from-theta " + format_degrees(*spec.from_theta) + " and to-theta " +
+                     format_degrees(*spec.to_theta) + " round to the same lattice point " + pt(p.from) +
+                     ": give equal angles for a full turn");
+  }
+  if (p.rotated) {
+    std::optional<FixedPoint> ray;
+    if (spec.to_theta) ray = theta_ideal(spec, *spec.to_theta);
+    plan_rotated_pieces(p, sc, from, ray);
+    if (ray) p.to = p.segs.back().to;
+  } else {
+    plan_quadrant_pieces(p, sc.cap);
+    if (spec.preload == Preload::Half) {
+      Command& cm = p.segs.front().cmd;
+      cm.jr_x = fraction_preload(cm.cap, cm.dir_x_neg, from.fx);
+      cm.jr_y = fraction_preload(cm.cap, cm.dir_y_neg, from.fy);
+    }
+  }
 
   // Reachability: the exact model decides whether every piece ends (no stall).
   run_impl(p, nullptr, /*for_validation=*/true);
@@ -403,17 +736,43 @@ std::vector<Iteration> run_records(const Plan& plan) {
   return v;
 }
 
+double plan_distance(const Plan& plan, double x, double y) {
+  const double rx = x - double(plan.spec.center.x), ry = y - double(plan.spec.center.y);
+  if (!plan.rotated) return ellipse_distance(double(plan.ax), double(plan.by), rx, ry);
+  const auto [u, v] = to_frame(plan.spec, rx, ry);
+  return ellipse_distance(double(plan.spec.a), double(plan.spec.b), u, v);
+}
+
 double start_offset(const Plan& plan) {
-  const double a = double(plan.ax), b = double(plan.by);
-  const double u0 = double(plan.from.x - plan.spec.center.x) / a;
-  const double v0 = double(plan.from.y - plan.spec.center.y) / b;
-  return std::fabs(std::sqrt(u0 * u0 + v0 * v0) - 1.0) * std::max(a, b);
+  const double fx = std::ldexp(double(plan.frac_x), -kPosFrac), fy = std::ldexp(double(plan.frac_y), -kPosFrac);
+  double u = double(plan.from.x - plan.spec.center.x) + fx, v = double(plan.from.y - plan.spec.center.y) + fy;
+  double a = double(plan.ax), b = double(plan.by);
+  if (plan.rotated) {
+    std::tie(u, v) = to_frame(plan.spec, u, v);
+    a = double(plan.spec.a);
+    b = double(plan.spec.b);
+  }
+  return std::fabs(std::hypot(u / a, v / b) - 1.0) * std::max(a, b);
+}
+
+double coefficient_drift_bound(const Plan& plan) {
+  if (quarter_turns(plan.spec) >= 0) return 0.0;
+  const double mx = double(std::max(plan.spec.a, plan.spec.b)), mn = double(std::min(plan.spec.a, plan.spec.b));
+  return std::ldexp(mx * mx / mn, plan.spec.bits - kRotCapBits);
 }
 
 double deviation_bound(const Plan& plan) {
-  const double m = double(std::max(plan.ax, plan.by));
+  const double m = double(std::max(plan.spec.a, plan.spec.b));
+  if (plan.rotated) {
+    // Measured (build/tb/deviation_survey): half preload at the default width or more
+    // and aspect ratio <= 4 stays within 1 step; elsewhere no bound is documented.
+    const bool covered = plan.spec.preload == Preload::Half &&
+                         plan.spec.bits >= smallest_valid_bits(plan.spec.a, plan.spec.b) + 4 &&
+                         m <= 4.0 * double(std::min(plan.spec.a, plan.spec.b));
+    if (!covered) return std::numeric_limits<double>::infinity();
+  }
   const double drift = plan.spec.preload == Preload::Zero ? 2.0 + std::cbrt(m) / 2.0 : 1.5;
-  return start_offset(plan) + drift;
+  return start_offset(plan) + drift + coefficient_drift_bound(plan);
 }
 
 // ---------------------------------------------------------------------------------

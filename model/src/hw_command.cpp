@@ -8,11 +8,13 @@ namespace dda::hw {
 
 namespace {
 
-std::uint64_t unsigned_field(const char* name, std::int64_t v, int width) {
-  const std::uint64_t max = width >= 64 ? ~0ull : (std::uint64_t{1} << width) - 1;
+// A field of `width` bits whose value must be below 2^value_bits (value_bits <= width).
+std::uint64_t unsigned_field(const char* name, std::int64_t v, int width, int value_bits) {
+  const std::uint64_t max = (std::uint64_t{1} << value_bits) - 1;
   if (v < 0 || static_cast<std::uint64_t>(v) > max) {
     throw InputError(std::string(name) + " = " + std::to_string(v) + " does not fit the hardware's " +
-                     std::to_string(width) + "-bit field (hw_params.hpp)");
+                     std::to_string(width) + "-bit field: it must be in [0, 2^" + std::to_string(value_bits) +
+                     ") (hw_params.hpp)");
   }
   return static_cast<std::uint64_t>(v);
 }
@@ -29,15 +31,18 @@ std::uint64_t signed_field(const char* name, std::int64_t v, int width) {
 }  // namespace
 
 std::array<std::uint64_t, kCmdFields.size()> command_fields(const Command& c) {
-  // The sum jr + jv of an integrator is AccWidth + 1 bits, so cap, jv, jr < 2^AccWidth.
+  // The capacity first: when it is out of range, it is the cause of the rest.
+  unsigned_field("cap", c.cap, kAccWidth, kAccWidth - 1);
+  // cap and jr are below 2^(AccWidth-1) so that every integrand up to cap is positive
+  // in the AccWidth-bit two's complement integrand registers.
   return {
-      unsigned_field("jv_x", c.jv_x, kAccWidth),
-      unsigned_field("jv_y", c.jv_y, kAccWidth),
-      unsigned_field("jr_x", c.jr_x, kAccWidth),
-      unsigned_field("jr_y", c.jr_y, kAccWidth),
-      unsigned_field("cap", c.cap, kAccWidth),
-      unsigned_field("cnt_x", c.cnt_x, kCntWidth),
-      unsigned_field("cnt_y", c.cnt_y, kCntWidth),
+      signed_field("jv_x", c.jv_x, kAccWidth),
+      signed_field("jv_y", c.jv_y, kAccWidth),
+      unsigned_field("jr_x", c.jr_x, kAccWidth, kAccWidth - 1),
+      unsigned_field("jr_y", c.jr_y, kAccWidth, kAccWidth - 1),
+      unsigned_field("cap", c.cap, kAccWidth, kAccWidth - 1),
+      unsigned_field("cnt_x", c.cnt_x, kCntWidth, kCntWidth),
+      unsigned_field("cnt_y", c.cnt_y, kCntWidth, kCntWidth),
       c.dir_x_neg ? kDirNeg : kDirPos,
       c.dir_y_neg ? kDirNeg : kDirPos,
       signed_field("inc_x_on_x", c.inc_x_on_x, kAccWidth),
@@ -60,14 +65,14 @@ std::vector<std::uint32_t> pack_command(const Command& c) {
 }
 
 std::int64_t max_semi_axis(int extra_bits) {
-  // Largest m such that a = b = m (the worst case) fits: cap = 2^n * m^2 < 2^AccWidth
+  // Largest m such that a = b = m (the worst case) fits: cap = 2^n * m^2 < 2^(AccWidth-1)
   // with n = smallest_valid_bits(m) + extra_bits, and a quarter arc's m steps fit the
   // counters. For m in (2^(k-1), 2^k] the smallest valid n is k.
   std::int64_t best = 1;
   for (int k = 1; k < 31; ++k) {
     const int n = k + extra_bits;
-    if (n >= kAccWidth) break;
-    const std::uint64_t room = (std::uint64_t{1} << (kAccWidth - n)) - 1;  // m^2 <= room
+    if (n >= kAccWidth - 1) break;
+    const std::uint64_t room = (std::uint64_t{1} << (kAccWidth - 1 - n)) - 1;  // m^2 <= room
     auto m = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(room)));
     while (m * m > room) --m;
     while ((m + 1) * (m + 1) <= room) ++m;

@@ -217,8 +217,7 @@ Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters) {
   s.points = pts.size();
   double sum = 0;
   for (const auto& p : pts) {
-    const double d = ellipse_distance(double(plan.ax), double(plan.by),
-                                      double(p.x - plan.spec.center.x), double(p.y - plan.spec.center.y));
+    const double d = plan_distance(plan, double(p.x), double(p.y));
     sum += d;
     if (d > s.max_dev) {
       s.max_dev = d;

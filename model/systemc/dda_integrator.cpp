@@ -5,8 +5,10 @@ namespace dda::sc {
 void dda_integrator::comb() {
   const sum_t s = sum_t(jr_q.read()) + sum_t(jv_q.read());
   sum.write(s);
-  ovf_o.write(active_i.read() && carry(s, cap_i.read()));
-  can_o.write(active_i.read() && jv_q.read() != 0);
+  // A negative integrand (top bit set) holds its axis: no add, no carry.
+  const bool add = active_i.read() && !jv_q.read()[hw::kAccWidth - 1];
+  ovf_o.write(add && carry(s, cap_i.read()));
+  can_o.write(add && jv_q.read() != 0);
 }
 
 void dda_integrator::seq() {
@@ -25,7 +27,7 @@ void dda_integrator::seq() {
     return;
   }
   if (!iterate_i.read()) return;
-  if (active_i.read()) {
+  if (active_i.read() && !jv_q.read()[hw::kAccWidth - 1]) {
     const sum_t s = sum.read();
     jr_q.write(acc_t(ovf_o.read() ? sum_t(s - sum_t(cap_i.read())) : s));
   }

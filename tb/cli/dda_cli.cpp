@@ -50,17 +50,6 @@ Point parse_point(const std::string& name, const std::string& s) {
   }
 }
 
-double parse_double(const std::string& name, const std::string& s, const char* rule) {
-  // strtod accepts what from_chars<double> would; the whole string must be consumed.
-  char* end = nullptr;
-  errno = 0;
-  const double v = s.empty() ? 0.0 : std::strtod(s.c_str(), &end);
-  if (s.empty() || errno != 0 || end != s.c_str() + s.size() || !std::isfinite(v)) {
-    throw InputError(name + " = '" + s + "' is invalid: " + rule);
-  }
-  return v;
-}
-
 struct ArcOptions {
   std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw",
                           angle, engine = "golden", out, format, vcd;
@@ -78,12 +67,18 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
   sub->add_option("--center", o.center, "centre lattice point X,Y (default 0,0)");
   sub->add_option("--angle", o.angle,
                   "turn the ellipse counter-clockwise by DEG degrees about its centre, so the "
-                  "semi-axis a points in direction DEG (multiples of 90 in this version)");
+                  "semi-axis a points in direction DEG (decimal, up to 6 decimals; multiples of 90 use "
+                  "the exact integer datapath, other angles fixed-point coefficients)");
   sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
-  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + (semi-axis along X, 0))");
-  sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on); equal to --from: a full ellipse");
-  sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG (rounded to the lattice)");
-  sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG (rounded to the lattice)");
+  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + (semi-axis along X, 0); turned by a "
+                  "non-multiple of 90 degrees: parametric angle 0)");
+  sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on, parametric angle 90 when turned); "
+                  "equal to --from: a full ellipse");
+  sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG: half preload starts on the ideal curve point (nearest "
+                  "lattice point, the rest in the preloads), zero preload at the lattice point just "
+                  "outside it (docs/golden-model.md)");
+  sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG, rounded to the lattice as --from-theta; equal to "
+                  "--from-theta: a full ellipse");
   sub->add_option("--engine", o.engine, "engine: " + engine_names());
   sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
   sub->add_option("--out", o.out, "write to FILE (atomically) instead of stdout");
@@ -117,24 +112,15 @@ Plan make_plan(const ArcOptions& o) {
     throw InputError("dir = '" + o.dir + "' is invalid: use ccw or cw");
   }
   if (!o.center.empty()) s.center = parse_point("center", o.center);
-  if (!o.angle.empty()) {
-    const double deg = parse_double("angle", o.angle, "an angle in degrees");
-    const double turns = deg / 90.0;
-    if (turns != std::floor(turns) || std::fabs(turns) > 1e9) {
-      throw InputError("angle = " + o.angle +
-                       " is not supported yet: this version turns ellipses by multiples of 90 degrees");
-    }
-    s.quarter_turns = static_cast<int>(((static_cast<long long>(turns) % 4) + 4) % 4);
-  }
+  if (!o.angle.empty()) s.angle = parse_degrees("angle", o.angle);
   if (!o.from.empty() && !o.from_theta.empty()) {
     throw InputError("from and from-theta are both given: choose one");
   }
   if (!o.to.empty() && !o.to_theta.empty()) throw InputError("to and to-theta are both given: choose one");
-  const char* deg_rule = "a parametric angle in degrees";
   if (!o.from.empty()) s.from = parse_point("from", o.from);
-  if (!o.from_theta.empty()) s.from = theta_point(s, parse_double("from-theta", o.from_theta, deg_rule));
+  if (!o.from_theta.empty()) s.from_theta = parse_degrees("from-theta", o.from_theta);
   if (!o.to.empty()) s.to = parse_point("to", o.to);
-  if (!o.to_theta.empty()) s.to = theta_point(s, parse_double("to-theta", o.to_theta, deg_rule));
+  if (!o.to_theta.empty()) s.to_theta = parse_degrees("to-theta", o.to_theta);
   return plan_arc(s);
 }
 

@@ -16,9 +16,18 @@ std::string describe(const Plan& plan) {
   s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits
     << " --preload " << to_string(plan.spec.preload);
   if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;
-  if (plan.spec.quarter_turns != 0) s << " --angle " << 90 * plan.spec.quarter_turns;
+  if (plan.spec.angle != 0) s << " --angle " << format_degrees(plan.spec.angle);
   if (plan.spec.dir != Direction::Ccw) s << " --dir cw";
-  s << " --from " << plan.from.x << ',' << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y;
+  if (plan.spec.from_theta) {
+    s << " --from-theta " << format_degrees(*plan.spec.from_theta);
+  } else {
+    s << " --from " << plan.from.x << ',' << plan.from.y;
+  }
+  if (plan.spec.to_theta) {
+    s << " --to-theta " << format_degrees(*plan.spec.to_theta);
+  } else {
+    s << " --to " << plan.to.x << ',' << plan.to.y;
+  }
   return s.str();
 }
 
@@ -45,13 +54,25 @@ std::optional<Plan> RandomArcs::next() {
     s.bits = smallest_valid_bits(s.a, s.b) + int(uni(std::uint64_t(extra_bits_max_) + 1));
     s.center = Point{std::int64_t(uni(2001)) - 1000, std::int64_t(uni(2001)) - 1000};
     s.dir = uni(2) ? Direction::Cw : Direction::Ccw;
-    s.quarter_turns = int(uni(4));
-    const double turn = 360.0 * double(uni(1u << 20)) / double(1u << 20);
-    s.from = theta_point(s, turn);
-    // One in eight is a full turn, one in eight starts on a vertex.
+    // Half the ellipses are turned by a uniform angle (micro-degrees), half by quarter turns.
+    s.angle = uni(2) ? std::int64_t(uni(std::uint64_t(kFullTurn))) : kQuarterTurn * std::int64_t(uni(4));
+    // Ellipses too thin to turn (tip radius of curvature below 1/4 step, refused by the
+    // planner) take a quarter turn instead.
+    if (4 * std::min(s.a, s.b) * std::min(s.a, s.b) < std::max(s.a, s.b)) {
+      s.angle = kQuarterTurn * std::int64_t(s.angle % 4);
+    }
+    const auto theta = [&]() { return std::int64_t(uni(std::uint64_t(kFullTurn))); };
+    s.from_theta = theta();
+    // One in eight is a full turn, one in eight starts on a vertex (parametric 0, 90, 180
+    // or 270 degrees), one in eight starts at a lattice point (the DDA follows the curve
+    // through it).
     const unsigned shape = unsigned(uni(8));
-    if (shape == 1) s.from = theta_point(s, 90.0 * double(uni(4)));
-    s.to = shape == 0 ? *s.from : theta_point(s, 360.0 * double(uni(1u << 20)) / double(1u << 20));
+    if (shape == 1) s.from_theta = kQuarterTurn * std::int64_t(uni(4));
+    s.to_theta = shape == 0 ? *s.from_theta : theta();
+    if (shape == 2) {
+      s.from = theta_point(s, *s.from_theta);
+      s.from_theta.reset();
+    }
   } else if (uni(8) != 0) {  // one in eight keeps the default quarter arc
     const double kQuarter = std::acos(0.0);
     double t0 = kQuarter * double(uni(1u << 20)) / double(1u << 20);

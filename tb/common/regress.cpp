@@ -50,7 +50,8 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
                            [p.spec.dir == Direction::Cw];
         st.full += p.full;
         st.circles += p.spec.a == p.spec.b;
-        st.turned += p.spec.quarter_turns % 2;
+        st.turned += quarter_turns(p.spec) == 1 || quarter_turns(p.spec) == 3;
+        st.rotated += p.rotated;
         st.thin += std::max(p.spec.a, p.spec.b) > 100 * std::min(p.spec.a, p.spec.b);
       }
       if (r.was_reset) {
@@ -106,8 +107,9 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
                 static_cast<unsigned long long>(st.resets),
                 static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
     std::printf("coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
-                "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld with aspect ratio > 100\n",
-                st.pairs_covered(), st.full, st.circles, st.turned, st.thin);
+                "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
+                "with aspect ratio > 100\n",
+                st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(),
                  argv[0], static_cast<unsigned long long>(seed), arcs, e.what());

@@ -17,7 +17,7 @@ struct MixedStats {
   // (quadrants of the first and last piece), full turns, circles, quarter-turned
   // ellipses, aspect ratio above 100.
   long quadrant_pairs[4][4][2] = {};
-  long full = 0, circles = 0, turned = 0, thin = 0;
+  long full = 0, circles = 0, turned = 0, rotated = 0, thin = 0;
   int pairs_covered() const;
 };
 

@@ -10,6 +10,12 @@ namespace {
 
 std::uint64_t hw_value(std::int64_t v) { return static_cast<std::uint64_t>(v) & hw::kAccMask; }
 
+// An integrand register (AccWidth-bit two's complement) as the golden model's value.
+std::int64_t integrand_value(std::uint64_t v) {
+  const std::uint64_t neg = std::uint64_t{1} << (hw::kAccWidth - 1);
+  return static_cast<std::int64_t>(v & hw::kAccMask) - static_cast<std::int64_t>((v & neg) << 1);
+}
+
 }  // namespace
 
 bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, std::uint32_t seg,
@@ -22,14 +28,16 @@ bool RecordBuilder::on_edge(const CoreSample& pre, const CoreSample& post, std::
   rec.dir_y_neg = pre.cdir_y;
   rec.active_x = pre.cnt_x != 0;
   rec.active_y = pre.cnt_y != 0;
-  rec.jv_x = static_cast<std::int64_t>(pre.jv_x);
-  rec.jv_y = static_cast<std::int64_t>(pre.jv_y);
-  rec.sum_x = static_cast<std::int64_t>(rec.active_x ? pre.sum_x : pre.jr_x);
-  rec.sum_y = static_cast<std::int64_t>(rec.active_y ? pre.sum_y : pre.jr_y);
+  rec.jv_x = integrand_value(pre.jv_x);
+  rec.jv_y = integrand_value(pre.jv_y);
+  // The adder's output counts where the axis adds: active, integrand not negative.
+  const std::uint64_t neg = std::uint64_t{1} << (hw::kAccWidth - 1);
+  rec.sum_x = static_cast<std::int64_t>(rec.active_x && !(pre.jv_x & neg) ? pre.sum_x : pre.jr_x);
+  rec.sum_y = static_cast<std::int64_t>(rec.active_y && !(pre.jv_y & neg) ? pre.sum_y : pre.jr_y);
   rec.step_x = post.step_x;
   rec.step_y = post.step_y;
-  rec.after.jv_x = static_cast<std::int64_t>(post.jv_x);
-  rec.after.jv_y = static_cast<std::int64_t>(post.jv_y);
+  rec.after.jv_x = integrand_value(post.jv_x);
+  rec.after.jv_y = integrand_value(post.jv_y);
   rec.after.jr_x = static_cast<std::int64_t>(post.jr_x);
   rec.after.jr_y = static_cast<std::int64_t>(post.jr_y);
   rec.after.cnt_x = static_cast<std::int64_t>(post.cnt_x);

@@ -4,8 +4,10 @@
 //   usage: accuracy_sweep [--arcs N] [--seed S] [--max-axis M]
 // Arcs: a, b log-uniform in [1, M] with aspect ratio at most 1000, random centre, start
 // and end at random parametric angles, both directions, at the default width (smallest
-// valid + 4). Modes: the paper's zero preload and half preload. Rotated ellipses (other
-// than quarter turns) are not implemented yet, so they are not measured here.
+// valid + 4); half of the ellipses are turned by a uniform angle in [0, 360) degrees
+// (micro-degree resolution), the other half are axis-aligned. Every arc runs with both
+// preloads. Rows: the paper's zero preload and half preload (the default mode) on the
+// axis-aligned half, and both preloads on the rotated half.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +16,7 @@
 #include <string>
 
 #include "dda/golden.hpp"
+#include "dda_random.hpp"
 
 using namespace dda;
 
@@ -28,10 +31,7 @@ struct Acc {
 
 // Largest and summed distance of an arc's points (start included) from its ellipse.
 void measure(const Plan& plan, double& worst, double& sum, long& points) {
-  const double ax = double(plan.ax), by = double(plan.by);
-  const auto dev = [&](Point p) {
-    return ellipse_distance(ax, by, double(p.x - plan.spec.center.x), double(p.y - plan.spec.center.y));
-  };
+  const auto dev = [&](Point p) { return plan_distance(plan, double(p.x), double(p.y)); };
   worst = dev(plan.from);
   sum = worst;
   points = 1;
@@ -49,17 +49,6 @@ void measure(const Plan& plan, double& worst, double& sum, long& points) {
       }
     }
   }
-}
-
-std::string options(const Plan& p) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "--a %lld --b %lld --bits %d --preload %s --dir %s --from %lld,%lld --to %lld,%lld%s",
-                (long long)p.spec.a, (long long)p.spec.b, p.spec.bits, to_string(p.spec.preload),
-                to_string(p.spec.dir), (long long)p.from.x, (long long)p.from.y, (long long)p.to.x,
-                (long long)p.to.y,
-                p.spec.center == Point{0, 0} ? "" :
-                (" --center " + std::to_string(p.spec.center.x) + "," + std::to_string(p.spec.center.y)).c_str());
-  return buf;
 }
 
 }  // namespace
@@ -80,17 +69,20 @@ int main(int argc, char** argv) {
   }
   std::mt19937_64 rng(seed);
   const auto unit = [&] { return double(rng() % (1u << 30)) / double(1u << 30); };
-  // [mode][aspect class]
-  Acc acc[2][2];
+  // [row][aspect class]; rows: zero, half (axis-aligned), rotated zero, rotated half.
+  Acc acc[4][2];
   long drawn = 0, rejected = 0;
-  while (acc[0][0].arcs + acc[0][1].arcs < arcs) {
+  while (drawn - rejected < arcs) {
     ArcSpec s;
     s.a = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
     s.b = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
     const double aspect = double(std::max(s.a, s.b)) / double(std::min(s.a, s.b));
-    const double t0 = 360.0 * unit(), t1 = 360.0 * unit();
+    const std::int64_t t0 = std::int64_t(rng() % std::uint64_t(kFullTurn));
+    const std::int64_t t1 = std::int64_t(rng() % std::uint64_t(kFullTurn));
     const bool cw = rng() % 2;
     const Point c{std::int64_t(rng() % 2001) - 1000, std::int64_t(rng() % 2001) - 1000};
+    const bool turned = rng() % 2;
+    const std::int64_t angle = std::int64_t(rng() % std::uint64_t(kFullTurn));
     if (aspect > 1000) continue;
     ++drawn;
     Plan plans[2];
@@ -100,12 +92,14 @@ int main(int argc, char** argv) {
       sm.preload = m == 0 ? Preload::Zero : Preload::Half;
       sm.dir = cw ? Direction::Cw : Direction::Ccw;
       sm.center = c;
-      sm.from = theta_point(sm, t0);
-      sm.to = theta_point(sm, t1);
+      sm.angle = turned ? angle : 0;
+      sm.from_theta = t0;
+      sm.to_theta = t1;
       try {
         plans[m] = plan_arc(sm);
-      } catch (const InputError&) {
+      } catch (const InputError& e) {
         ok = false;  // e.g. an unreachable end point: the same arc is skipped in both modes
+        if (std::getenv("DDA_SWEEP_VERBOSE")) std::fprintf(stderr, "refused: %s\n", e.what());
       }
     }
     if (!ok) {
@@ -117,13 +111,13 @@ int main(int argc, char** argv) {
       double worst = 0, sum = 0;
       long pts = 0;
       measure(plans[m], worst, sum, pts);
-      Acc& a = acc[m][k];
+      Acc& a = acc[(plans[m].rotated ? 2 : 0) + m][k];
       ++a.arcs;
       a.sum += sum;
       a.points += pts;
       if (worst > a.worst) {
         a.worst = worst;
-        a.worst_arc = options(plans[m]);
+        a.worst_arc = describe(plans[m]);
       }
     }
   }
@@ -136,13 +130,15 @@ int main(int argc, char** argv) {
   measure(plan_arc(paper), pw, ps, pp);
 
   std::printf("Sweep: %ld arcs (seed %llu; a, b log-uniform in [1, %lld], aspect ratio <= 1000, random "
-              "centre, start and end angles, both directions, default width = smallest valid + 4; "
-              "%ld drawn arcs were refused by the planner and skipped).\n\n",
-              arcs, (unsigned long long)seed, (long long)max_axis, rejected);
+              "centre, start and end angles, both directions, half of them turned by a uniform angle, "
+              "default width = smallest valid + 4; %ld of %ld drawn arcs were refused by the planner "
+              "and skipped).\n\n",
+              arcs, (unsigned long long)seed, (long long)max_axis, rejected, drawn);
   std::printf("| mode | aspect ratio | arcs | worst distance (steps) | mean distance (steps) | worst arc |\n");
   std::printf("|---|---|---|---|---|---|\n");
-  const char* names[2] = {"zero preload (the paper)", "half preload (default mode)"};
-  for (int m = 0; m < 2; ++m) {
+  const char* names[4] = {"zero preload (the paper), axis-aligned", "half preload (default mode), axis-aligned",
+                          "rotated, zero preload", "rotated, half preload"};
+  for (int m = 0; m < 4; ++m) {
     for (int k = 0; k < 2; ++k) {
       const Acc& a = acc[m][k];
       std::printf("| %s | %s | %ld | %.3f | %.3f | `%s` |\n", names[m], k == 0 ? "<= 4" : "4 to 1000",
@@ -152,6 +148,5 @@ int main(int argc, char** argv) {
   std::printf("| the paper's example (a = 10, b = 6, n = 4, zero preload) | 1.67 | 1 | %.3f | %.3f | "
               "`--a 10 --b 6 --bits 4` |\n",
               pw, ps / double(pp));
-  (void)drawn;
   return 0;
 }

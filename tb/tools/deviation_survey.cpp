@@ -26,10 +26,9 @@ int main(int argc, char** argv) {
     const double a = double(plan->spec.a), b = double(plan->spec.b);
     double worst = 0;
     run(*plan, [&](const Iteration& it) {
-      if (it.step_x || it.step_y) worst = std::max(worst, ellipse_distance(a, b, double(it.pos.x), double(it.pos.y)));
+      if (it.step_x || it.step_y) worst = std::max(worst, plan_distance(*plan, double(it.pos.x), double(it.pos.y)));
     });
-    const double x0 = double(plan->from.x) / a, y0 = double(plan->from.y) / b;
-    const double offset = std::fabs(std::sqrt(x0 * x0 + y0 * y0) - 1.0) * std::max(a, b);
+    const double offset = start_offset(*plan);
     const int k = plan->spec.preload == Preload::Half;
     Bin& bin = bins[int(std::floor(std::log2(std::max(a, b))))];
     bin.worst[k] = std::max(bin.worst[k], worst - offset);

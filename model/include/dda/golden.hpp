@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "dda/fixed_trig.hpp"
+
 namespace dda {
 
 // Bad input: a parameter breaks a documented rule. The CLI exits with status 2.
@@ -101,19 +103,27 @@ const char* to_string(Preload p);
 enum class Direction { Ccw, Cw };
 const char* to_string(Direction d);
 
-// An arc of the ellipse with semi-axes a, b, turned counter-clockwise by quarter_turns
-// * 90 degrees about its centre (so the semi-axis a points along X for 0 and 2 turns,
-// along Y for 1 and 3).
+// An arc of the ellipse with semi-axes a, b, turned counter-clockwise by `angle` about
+// its centre (so the semi-axis a points in direction angle). Angles that are multiples
+// of 90 degrees use the exact integer datapath (integrands a^2 |v|, b^2 |u|); any other
+// angle uses fixed-point coefficients (docs/golden-model.md, "Rotated ellipses") and
+// needs a radius of curvature at the tips, min(a,b)^2 / max(a,b), of at least 1/4 step.
 struct ArcSpec {
   std::int64_t a = 0, b = 0;
-  int quarter_turns = 0;          // 0..3
+  std::int64_t angle = 0;         // micro-degrees (fixed_trig.hpp), reduced modulo a turn
   int bits = 0;                   // n: capacity 2^n in the paper's units; 0 = default_bits()
   Preload preload = Preload::Zero;
   Point center;                   // lattice point
   Direction dir = Direction::Ccw;
-  std::optional<Point> from, to;  // absolute lattice points; defaults: the quarter arc
-                                  // center + (ax,0) to center + (0,by)
+  // Start and end: absolute lattice points, or parametric angles in micro-degrees
+  // (exclusive with the point). Defaults: the quarter arc from the end of the a
+  // semi-axis to the end of the b semi-axis (parametric angles 0 and 90).
+  std::optional<Point> from, to;
+  std::optional<std::int64_t> from_theta, to_theta;
 };
+
+// The angle as a number of quarter turns 0..3, or -1 if it is not a multiple of 90.
+int quarter_turns(const ArcSpec& spec);
 
 // One monotone piece of an arc (each axis moves one way): one hardware command.
 // Pieces meet at the ellipse's vertices, which are lattice points.
@@ -124,13 +134,34 @@ struct Segment {
   std::uint64_t iteration_bound = 0;  // a run of this piece that passes it is stopped
 };
 
+// Fixed-point coefficients of a rotated ellipse (docs/golden-model.md, "Rotated
+// ellipses"): with (x, y) the lattice position relative to the centre, the tangent of
+// the counter-clockwise turn is (p x - qx y, qy x - p y), scaled so that the capacity
+// is 2^kRotCapBits. For angles that are multiples of 90 degrees: p = 0, qx = ax^2,
+// qy = by^2 exactly and the capacity is 2^n a b.
+struct Coefficients {
+  std::int64_t p = 0, qx = 0, qy = 0;
+};
+// Capacity of rotated ellipses: 2^kRotCapBits, the largest power of two the hardware's
+// AccWidth-bit registers hold.
+inline constexpr int kRotCapBits = 49;
+// Fraction bits of the ideal start point (a parametric angle's point on the curve).
+inline constexpr int kPosFrac = 32;
+
 // A validated arc: resolved points and bits, its pieces, and the guard bound.
 struct Plan {
   ArcSpec spec;                    // with bits resolved
-  Point from, to;
+  Point from, to;                  // lattice start and end
+  // The start the DDA represents: from + (frac_x, frac_y) / 2^kPosFrac. With half
+  // preload and a parametric start it is the ideal curve point (the first piece's
+  // accumulator preloads carry the fraction); otherwise 0.
+  std::int64_t frac_x = 0, frac_y = 0;
   bool full = false;               // from == to: one full turn
-  std::int64_t ax = 0, by = 0;     // semi-axes along X and Y (a, b swapped by odd turns)
+  bool rotated = false;            // angle not a multiple of 90 degrees
+  std::int64_t ax = 0, by = 0;     // quarter turns: semi-axes along X and Y (a, b swapped by
+                                   // odd turns); rotated: a and b
   std::int64_t scale = 1;          // a*b: divide register values by it for paper units
+  Coefficients coef;
   std::vector<Segment> segs;
   std::uint64_t iteration_bound = 0;  // sum of the pieces' bounds
   const Command& cmd() const { return segs.front().cmd; }
@@ -149,15 +180,24 @@ int default_bits(std::int64_t a, std::int64_t b);
 // Validate and plan. Throws InputError naming the value and the rule it breaks.
 Plan plan_arc(const ArcSpec& spec);
 
-// Lattice point of the parametric angle theta (degrees): of the four lattice points
-// around center + (a cos, b sin) (floor and ceiling of each coordinate, in the
-// ellipse's own frame before any quarter turn), the one with the least r >= 1, where
-// r^2 = u^2/a^2 + v^2/b^2 (tested exactly): on or just outside the curve, so the DDA
-// cannot stall at a vertex and follows the ellipse through it, r times the nominal one,
-// as closely as the lattice allows. Ties go to the first in the order (floor, floor),
-// (floor, ceil), (ceil, floor), (ceil, ceil). Multiples of 90 degrees use exact
-// cosines and sines (so they give the vertices).
-Point theta_point(const ArcSpec& spec, double theta_deg);
+// The curve point of parametric angle theta (micro-degrees) relative to the centre, in
+// Q(kPosFrac): (a cos theta, b sin theta) turned by the spec's angle, computed with the
+// deterministic fixed-point sines and cosines (the same bits on every machine).
+struct FixedPoint {
+  std::int64_t x = 0, y = 0;  // Q(kPosFrac)
+};
+FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta);
+
+// Lattice point of parametric angle theta (absolute), by the documented rule
+// (docs/golden-model.md, "Parametric angles"): with half preload the nearest lattice
+// point to the ideal point (each coordinate rounded half away from zero; the first
+// piece's preloads carry the rest, so the DDA starts on the curve); with zero preload,
+// of the four lattice points around it (floor and ceiling of each coordinate), the one
+// with the least r >= 1, r^2 = Q(p) / Q(curve) for the ellipse's quadratic form Q (on
+// or just outside the curve: the DDA follows the ellipse through it, r times the
+// nominal one, and cannot stall at a vertex). Ties go to the first in the order
+// (floor, floor), (floor, ceil), (ceil, floor), (ceil, ceil).
+Point theta_point(const ArcSpec& spec, std::int64_t theta);
 
 // Largest distance (in steps) a start or end point may lie from the ellipse.
 inline constexpr double kPointTolerance = 1.0;
@@ -174,16 +214,29 @@ RunSummary run(const Plan& plan, const std::function<void(const Iteration&)>& on
 std::vector<Iteration> run_records(const Plan& plan);
 
 // Documented bound on the distance of any path point from the ellipse, in steps
-// (docs/golden-model.md, "Deviation bound"): |r - 1| * max(a, b) + E, where r^2 =
-// u0^2/a^2 + v0^2/b^2 at the start relative to the centre (the DDA follows the ellipse
-// through its start point, scaled by r) and E is the DDA's own drift: 2 + cbrt(max(a,
-// b)) / 2 steps with zero preload (the paper's drift grows with size), 1.5 steps with
-// half preload. E is empirical: build/tb/deviation_survey prints the measured worst
-// drift by size.
+// (docs/golden-model.md, "Deviation bound"): |r - 1| * max(a, b) + E + F, where r^2 =
+// u0^2/a^2 + v0^2/b^2 at the represented start in the ellipse's frame (the DDA follows
+// the ellipse through its start point, scaled by r), E is the DDA's own drift: 2 +
+// cbrt(max(a, b)) / 2 steps with zero preload (the paper's drift grows with size), 1.5
+// steps with half preload, and F the fixed-point coefficients' drift bound of a rotated
+// ellipse (coefficient_drift_bound; 0 for quarter turns). E is empirical:
+// build/tb/deviation_survey prints the measured worst drift by size. A rotated ellipse
+// has the bound (E = 1.5) only with half preload, at least the default width and aspect
+// ratio <= 4; elsewhere it is infinite (not documented; docs/results.md has measurements).
 double deviation_bound(const Plan& plan);
 // Its first term, |r - 1| * max(a, b): how far the ellipse through the start point lies
 // from the nominal one.
 double start_offset(const Plan& plan);
+// Analytic bound (steps) on how far the rounding of a rotated ellipse's fixed-point
+// coefficients moves the traced curve: max(a,b)^2 2^n / (2^kRotCapBits min(a,b))
+// (docs/golden-model.md, "Rotated ellipses"). 0 for quarter turns (exact coefficients).
+double coefficient_drift_bound(const Plan& plan);
+// Rotated plans are refused when coefficient_drift_bound exceeds this (steps).
+inline constexpr double kMaxCoefficientDrift = 0.125;
+
+// Distance (steps) of absolute point (x, y) from the plan's ideal ellipse (turned and
+// moved). Measurement only (floating point): not used by the datapath.
+double plan_distance(const Plan& plan, double x, double y);
 
 // Shortest distance from (px, py) to the ellipse x^2/a^2 + y^2/b^2 = 1 (a, b > 0).
 // Absolute error below 1e-9 * max(a, b). Eberly's bisection method, no sampling.

@@ -14,9 +14,11 @@
 namespace dda::hw {
 
 // Accumulator, integrand, capacity and increment registers are AccWidth bits.
-// Values are unsigned in [0, 2^AccWidth); increments are two's complement.
-// The adder inside each integrator is AccWidth + 1 bits wide (sum < 2 * capacity).
-inline constexpr int kAccWidth = 50;
+// Integrands and increments are two's complement; an integrand with its top bit set is
+// negative and its axis holds (adds nothing). Capacity and accumulators are unsigned,
+// below 2^(AccWidth-1), so every positive integrand (at most the capacity) has its top
+// bit clear. The adder inside each integrator is AccWidth + 1 bits wide.
+inline constexpr int kAccWidth = 51;
 // Remaining-step counters.
 inline constexpr int kCntWidth = 17;
 
@@ -39,11 +41,11 @@ struct Field {
 };
 
 inline constexpr std::array<Field, 13> kCmdFields{{
-    {"jv_x", kAccWidth, "initial X integrand (scaled)"},
-    {"jv_y", kAccWidth, "initial Y integrand (scaled)"},
+    {"jv_x", kAccWidth, "initial X integrand (scaled, two's complement)"},
+    {"jv_y", kAccWidth, "initial Y integrand (scaled, two's complement)"},
     {"jr_x", kAccWidth, "initial X accumulator (preload), < cap"},
     {"jr_y", kAccWidth, "initial Y accumulator (preload), < cap"},
-    {"cap", kAccWidth, "accumulator capacity (2^n * a * b), > 0"},
+    {"cap", kAccWidth, "accumulator capacity (2^n * a * b, or 2^49 rotated), 0 < cap < 2^(AccWidth-1)"},
     {"cnt_x", kCntWidth, "X steps to emit"},
     {"cnt_y", kCntWidth, "Y steps to emit"},
     {"dir_x", 1, "X step direction (0 = +X, 1 = -X)"},
@@ -77,11 +79,11 @@ struct Reg {
   std::string_view meaning;
 };
 inline constexpr std::array<Reg, 21> kRegisters{{
-    {"u_int_x.jv_q", kAccWidth, "X integrand"},
+    {"u_int_x.jv_q", kAccWidth, "X integrand (negative: the axis holds)"},
     {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)"},
     {"u_int_x.inc_on_x_q", kAccWidth, "added to the X integrand after an X step"},
     {"u_int_x.inc_on_y_q", kAccWidth, "added to the X integrand after a Y step"},
-    {"u_int_y.jv_q", kAccWidth, "Y integrand"},
+    {"u_int_y.jv_q", kAccWidth, "Y integrand (negative: the axis holds)"},
     {"u_int_y.jr_q", kAccWidth, "Y accumulator (after overflow removal)"},
     {"u_int_y.inc_on_x_q", kAccWidth, "added to the Y integrand after an X step"},
     {"u_int_y.inc_on_y_q", kAccWidth, "added to the Y integrand after a Y step"},
