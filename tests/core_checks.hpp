@@ -207,8 +207,46 @@ inline void finished_and_stalled(CoreHarness& h) {
   h.tick();
   CHECK_FALSE(h.sample().err);  // one-cycle pulse
 
+  Command neg = stuck;  // a negative integrand cannot carry either
+  neg.jv_x = -5;
+  REQUIRE(Datapath(neg, Point{}).stalled());
+  s = load_and_clock(h, neg);
+  CHECK(s.err);
+  CHECK_FALSE(s.iter);
+  h.tick();
+
   const Plan next = paper_plan();
   records_equal(drive_arc(h, next).records, run_records(next));
+}
+
+// A negative integrand holds its axis (no add, no carry) until the other axis' steps
+// make it positive: the rotated pieces rely on it at a step's overshoot.
+inline void negative_integrand_holds(CoreHarness& h) {
+  reset_core(h);
+  Plan held = paper_plan();
+  Command& c = held.segs.front().cmd;
+  c = Command{};
+  c.cap = 1000;
+  c.jv_x = -500;       // X starts negative ...
+  c.inc_x_on_y = 240;  // ... and each Y step raises it
+  c.jv_y = 300;
+  c.jr_x = c.jr_y = 500;
+  c.cnt_x = 2;
+  c.cnt_y = 6;
+  Datapath dp(c, held.from);
+  bool held_seen = false;
+  while (!dp.done()) {
+    REQUIRE(dp.iterations() < 1000);
+    held_seen = held_seen || dp.regs().jv_x < 0;
+    dp.step();
+  }
+  REQUIRE(held_seen);
+  held.segs.resize(1);
+  held.segs.front().to = held.to = dp.pos();
+  held.segs.front().iteration_bound = held.iteration_bound = 1000;
+  const auto golden = run_records(held);
+  CHECK(golden.front().sum_x == c.jr_x);  // held: the accumulator did not add
+  records_equal(drive_arc(h, held).records, golden);
 }
 
 }  // namespace dda::checks

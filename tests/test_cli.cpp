@@ -263,6 +263,34 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
   }
 }
 
+// The lathe paper's oblique ellipse (issue 5): 695,000 iterations in 5 pieces through
+// all three engines, the same path, ending exactly on the end point the golden plan
+// names.
+TEST_CASE("cli: the lathe example runs through every engine with the same path", "[cli][engines]") {
+  Scratch s;
+  const std::string arc = "--a 25000 --b 15000 --angle 330 --center -30000,5000 --from-theta 60 --to-theta 136 --dir ccw";
+  for (const std::string pre : {"zero", "half"}) {
+    INFO("preload " << pre);
+    const Result g = run_dda(s, "path " + arc + " --preload " + pre);
+    const Result st = run_dda(s, "stats --format json " + arc + " --preload " + pre);
+    REQUIRE(g.status == 0);
+    REQUIRE(st.status == 0);
+    // The path's last point (rows "index,x,y") is the plan's end point.
+    const auto last = g.out.substr(g.out.rfind('\n', g.out.size() - 2) + 1);
+    const auto j = nlohmann::json::parse(st.out);
+    INFO(last);
+    CHECK(last.substr(last.find(',') + 1) ==
+          std::to_string(j["to"][0].get<long long>()) + "," + std::to_string(j["to"][1].get<long long>()) + "\n");
+    CHECK(j["pieces"].get<int>() >= 2);
+    for (const std::string engine : {"systemc", "rtl"}) {
+      INFO("engine " << engine);
+      const Result e = run_dda(s, "path " + arc + " --preload " + pre + " --engine " + engine);
+      CHECK(e.status == 0);
+      CHECK(e.out == g.out);
+    }
+  }
+}
+
 TEST_CASE("cli: --vcd writes the systemc and rtl waveforms, and is refused for golden", "[cli][engines]") {
   Scratch s;
   for (const std::string engine : {"systemc", "rtl"}) {

@@ -40,3 +40,8 @@ TEST_CASE("cosim: empty and stalled commands end with done and err in both model
   cosim::CosimHarness h;
   finished_and_stalled(h);
 }
+
+TEST_CASE("cosim: a negative integrand holds its axis until it turns positive", "[cosim]") {
+  cosim::CosimHarness h;
+  negative_integrand_holds(h);
+}

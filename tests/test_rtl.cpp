@@ -35,3 +35,8 @@ TEST_CASE("rtl: empty and stalled commands end with done and err", "[rtl]") {
   rtl::RtlHarness h;
   finished_and_stalled(h);
 }
+
+TEST_CASE("rtl: a negative integrand holds its axis until it turns positive", "[rtl]") {
+  rtl::RtlHarness h;
+  negative_integrand_holds(h);
+}

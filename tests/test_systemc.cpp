@@ -50,6 +50,11 @@ TEST_CASE("systemc: empty and stalled commands end with done and err", "[systemc
   finished_and_stalled(h);
 }
 
+TEST_CASE("systemc: a negative integrand holds its axis until it turns positive", "[systemc]") {
+  sc::ScHarness h;
+  negative_integrand_holds(h);
+}
+
 TEST_CASE("systemc: the scoreboard catches a wrong accumulator (> instead of >=)", "[systemc]") {
   // In the paper's example the Y accumulator sums to exactly the capacity at iteration 8
   // (JRY = 16.0), where the wrong variant does not carry.

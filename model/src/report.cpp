@@ -235,6 +235,8 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
     fmt::print(os, "max_dev: {:.6f} at ({},{})\nmean_dev: {:.6f}\n", s.max_dev, s.max_dev_at.x,
                s.max_dev_at.y, s.mean_dev);
     fmt::print(os, "bits: {}\npreload: {}\n", plan.spec.bits, to_string(plan.spec.preload));
+    fmt::print(os, "from: ({},{})\nto: ({},{})\npieces: {}\n", plan.from.x, plan.from.y, plan.to.x, plan.to.y,
+               plan.segs.size());
     return;
   }
   nlohmann::ordered_json j;
@@ -248,6 +250,9 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
   j["mean_dev"] = s.mean_dev;
   j["bits"] = plan.spec.bits;
   j["preload"] = to_string(plan.spec.preload);
+  j["from"] = {plan.from.x, plan.from.y};
+  j["to"] = {plan.to.x, plan.to.y};
+  j["pieces"] = plan.segs.size();
   os << j.dump(1) << '\n';
 }
 
