@@ -221,9 +221,46 @@ bool in_piece(int q, Direction dir, Point s, Point e) {
   return (e.x - s.x) * step_sx(q, dir) >= 0 && (e.y - s.y) * step_sy(q, dir) >= 0;
 }
 
+// A resolved start or end point: lattice point and the fraction of the ideal point.
+struct EndPoint {
+  Point lattice;
+  std::int64_t fx = 0, fy = 0;  // Q(kPosFrac); non-zero only for half preload and theta
+};
+
+// Preload of an axis so that the represented position, lattice + s (jr / cap - 1/2),
+// is lattice + frac / 2^kPosFrac (half preload; |frac| <= 1/2).
+std::int64_t fraction_preload(std::int64_t cap, bool dir_neg, std::int64_t frac) {
+  const __int128 s_frac = dir_neg ? -__int128(frac) : __int128(frac);
+  const __int128 jr = (__int128(cap) * ((__int128(1) << (kPosFrac - 1)) + s_frac)) >> kPosFrac;
+  return std::int64_t(std::clamp<__int128>(jr, 0, cap - 1));
+}
+
+// An end given as a parametric angle: the arc ends where the path first crosses the
+// ray from the centre through that angle's ideal point `e` (relative, Q(kPosFrac)),
+// moving in direction D; a full turn must pass the far side (the half-plane behind the
+// centre) first. crossed() is called with every position after the start.
+struct RayEnd {
+  FixedPoint e;
+  int D = 1;
+  bool far_seen = true;
+  bool armed = false;
+  RayEnd(FixedPoint end, Direction dir, bool full, Point start) : e(end), D(dir == Direction::Ccw ? 1 : -1) {
+    far_seen = !full;
+    armed = far_seen && side(start) < 0;
+  }
+  __int128 side(Point q) const { return D * (__int128(e.x) * q.y - __int128(e.y) * q.x); }
+  bool ahead(Point q) const { return __int128(e.x) * q.x + __int128(e.y) * q.y > 0; }
+  bool crossed(Point q) {
+    if (armed && side(q) >= 0 && ahead(q)) return true;
+    far_seen = far_seen || !ahead(q);
+    armed = far_seen && side(q) < 0;
+    return false;
+  }
+};
+
 // Quarter turns: cut the arc into monotone pieces at the vertices (lattice points on
 // the curve; docs/golden-model.md, "Pieces"), each preloaded again.
-void plan_quadrant_pieces(Plan& p, std::int64_t cap) {
+void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray) {
   const ArcSpec& spec = p.spec;
   const std::int64_t ax = p.ax, by = p.by, ax2 = ax * ax, by2 = by * by;
   const Point c = spec.center;
@@ -231,10 +268,11 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap) {
   const Point rt = rel(p.to);
   Point cur = rel(p.from);
   int q = start_quadrant(cur.x, cur.y, spec.dir);
+  int empty_pieces = 0;
   for (int guard = 0;; ++guard) {
     if (guard > 5) throw GuardError("planner guard: more than 6 pieces");
-    const bool last = !(p.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
-    const Point end = last ? rt : end_vertex(q, spec.dir, ax, by);
+    bool last = !ray && !(p.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
+    Point end = last ? rt : end_vertex(q, spec.dir, ax, by);
     if (!last && !in_piece(q, spec.dir, cur, end)) {
       throw InputError("from point " + pt(p.from) + " lies beyond the vertex " +
                        pt(Point{c.x + end.x, c.y + end.y}) + " it runs to (" + to_string(spec.dir) +
@@ -251,6 +289,10 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap) {
     cm.jv_x = ax2 * std::llabs(cur.y);
     cm.jv_y = by2 * std::llabs(cur.x);
     cm.jr_x = cm.jr_y = spec.preload == Preload::Half ? cap / 2 : 0;
+    if (p.segs.empty() && spec.preload == Preload::Half) {  // the start's fraction
+      cm.jr_x = fraction_preload(cap, sx < 0, from.fx);
+      cm.jr_y = fraction_preload(cap, sy < 0, from.fy);
+    }
     cm.cnt_x = std::llabs(end.x - cur.x);
     cm.cnt_y = std::llabs(end.y - cur.y);
     cm.dir_x_neg = sx < 0;
@@ -282,6 +324,36 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap) {
     const std::int64_t tx_total = *tx + ((cur.y == 0 && cm.cnt_x > 0) ? ky : 0);
     const std::int64_t ty_total = *ty + ((cur.x == 0 && cm.cnt_y > 0) ? kx : 0);
     sg.iteration_bound = static_cast<std::uint64_t>(std::max(tx_total, ty_total));
+    if (!last) {
+      // Walk the piece to its vertex: a parametric end cuts it where the path crosses
+      // the ray; a tip sharper than the lattice (the path reaches the vertex's axis,
+      // where one integrand is 0, with steps still owed on that axis) ends it where it
+      // stalls, and the next piece goes on from there.
+      Datapath dp(cm, sg.from);
+      const auto cut_here = [&] {
+        end = Point{dp.pos().x - c.x, dp.pos().y - c.y};
+        sg.to = dp.pos();
+        cm.cnt_x = std::llabs(end.x - cur.x);
+        cm.cnt_y = std::llabs(end.y - cur.y);
+      };
+      while (!dp.done() && dp.iterations() < sg.iteration_bound) {
+        if (dp.stalled()) {
+          cut_here();
+          break;
+        }
+        dp.step();
+        if (ray && ray->crossed(Point{dp.pos().x - c.x, dp.pos().y - c.y})) {
+          last = true;
+          cut_here();
+          break;
+        }
+      }
+    }
+    if (!last && cm.cnt_x == 0 && cm.cnt_y == 0) {  // stalled on its first iteration: no piece
+      q = next_quadrant(q, spec.dir);
+      if (++empty_pieces > 4) throw GuardError("planner guard: pieces without a step");
+      continue;
+    }
     p.iteration_bound += sg.iteration_bound;
     p.segs.push_back(sg);
     if (last) break;
@@ -429,11 +501,6 @@ std::pair<double, double> to_frame(const ArcSpec& spec, double x, double y) {
   return {x * c + y * s, -x * s + y * c};
 }
 
-// A resolved start or end point: lattice point and the fraction of the ideal point.
-struct EndPoint {
-  Point lattice;
-  std::int64_t fx = 0, fy = 0;  // Q(kPosFrac); non-zero only for half preload and theta
-};
 
 EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
                        const std::optional<std::int64_t>& theta, std::int64_t default_theta,
@@ -450,13 +517,6 @@ EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
   return e;
 }
 
-// Preload of an axis so that the represented position, lattice + s (jr / cap - 1/2),
-// is lattice + frac / 2^kPosFrac (half preload; |frac| <= 1/2).
-std::int64_t fraction_preload(std::int64_t cap, bool dir_neg, std::int64_t frac) {
-  const i128 s_frac = dir_neg ? -i128(frac) : i128(frac);
-  const i128 jr = (i128(cap) * ((i128(1) << (kPosFrac - 1)) + s_frac)) >> kPosFrac;
-  return std::int64_t(std::clamp<i128>(jr, 0, cap - 1));
-}
 
 // The quadrant (about the centre) whose steps, for direction dir, have signs (sx, sy).
 int quadrant_of_steps(int sx, int sy, Direction dir) {
@@ -482,7 +542,7 @@ constexpr int kMaxRotatedTurns = 64;
 // centre through that angle's ideal point (with a full turn: after passing the far side),
 // so it is always reached; an end given as a lattice point is reached with exact counts
 // by the piece whose walk spans it, and refused if the path cannot get there.
-void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, const std::optional<FixedPoint>& ray) {
+void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray) {
   const ArcSpec& spec = p.spec;
   const Coefficients k = sc.k;
   const int D = spec.dir == Direction::Ccw ? 1 : -1;
@@ -505,13 +565,6 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, const 
   const std::uint64_t guard = std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
   std::int64_t jr_x = spec.preload == Preload::Half ? sc.cap / 2 : 0, jr_y = jr_x;
   bool first = true;
-  // Ray end: side(q) > 0 once q is past the ray in the direction of travel.
-  const auto side = [&](Point q) {
-    return D * (i128(ray->x) * q.y - i128(ray->y) * q.x);
-  };
-  const auto ahead = [&](Point q) { return i128(ray->x) * q.x + i128(ray->y) * q.y > 0; };
-  bool far_seen = !p.full;  // a full turn must pass the far side before it can end
-  bool armed = ray && far_seen && side(cur) < 0;
   char last_turn = 0;  // turns alternate between the axes around a convex curve
   for (int piece = 0;; ++piece) {
     if (piece >= kMaxRotatedTurns) {
@@ -568,14 +621,9 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, const 
       }
       if (dp.iterations() >= guard) throw GuardError("planner guard: a piece passed " + std::to_string(guard) + " iterations");
       dp.step();
-      if (ray) {
-        const Point q{dp.pos().x - c.x, dp.pos().y - c.y};
-        if (armed && side(q) >= 0 && ahead(q)) {
-          ray_end = true;
-          break;
-        }
-        far_seen = far_seen || !ahead(q);
-        armed = far_seen && side(q) < 0;
+      if (ray && ray->crossed(Point{dp.pos().x - c.x, dp.pos().y - c.y})) {
+        ray_end = true;
+        break;
       }
     }
     const Point cut{dp.pos().x - c.x, dp.pos().y - c.y};
@@ -680,7 +728,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
 
   const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
   for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
-    if (p.rotated && spec.to_theta && std::string(name) == "to") continue;  // found by the walk
+    if (spec.to_theta && std::string(name) == "to") continue;  // found by the walk
     const Point r{q.x - c.x, q.y - c.y};
     const std::int64_t reach = 2 * std::max(a, b) + 2;
     if (std::llabs(r.x) > reach || std::llabs(r.y) > reach) {
@@ -698,8 +746,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
     }
   }
   p.full = p.from == p.to;
-  const bool ray_end = p.rotated && spec.to_theta.has_value();
-  if (ray_end) {
+  if (spec.to_theta) {
     p.full = spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta);
   } else if (p.full && spec.from_theta && spec.to_theta &&
       normalize_udeg(*spec.from_theta) != normalize_udeg(*spec.to_theta)) {
@@ -707,20 +754,17 @@ Plan plan_arc(const ArcSpec& spec_in) {
                      format_degrees(*spec.to_theta) + " round to the same lattice point " + pt(p.from) +
                      ": give equal angles for a full turn");
   }
+  std::optional<RayEnd> ray;
+  if (spec.to_theta) {
+    ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full, Point{p.from.x - c.x, p.from.y - c.y});
+  }
   if (p.rotated) {
-    std::optional<FixedPoint> ray;
-    if (spec.to_theta) ray = theta_ideal(spec, *spec.to_theta);
     plan_rotated_pieces(p, sc, from, ray);
-    if (ray) p.to = p.segs.back().to;
   } else {
-    plan_quadrant_pieces(p, sc.cap);
-    if (spec.preload == Preload::Half) {
-      Command& cm = p.segs.front().cmd;
-      cm.jr_x = fraction_preload(cm.cap, cm.dir_x_neg, from.fx);
-      cm.jr_y = fraction_preload(cm.cap, cm.dir_y_neg, from.fy);
-    }
+    plan_quadrant_pieces(p, sc.cap, from, ray);
   }
 
+  if (ray) p.to = p.segs.back().to;
   // Reachability: the exact model decides whether every piece ends (no stall).
   run_impl(p, nullptr, /*for_validation=*/true);
   return p;
