@@ -2,8 +2,8 @@
 # Long regressions (not in the default test suite), each in lockstep with the golden
 # model, random arcs back to back, some with random ce_i stalls, some reset halfway:
 #   systemc  the SystemC model                       (default 2,000 arcs)
-#   rtl      the RTL under Verilator (--cc)          (default 10,000 arcs)
-#   cosim    SystemC model and RTL on one sc_clock   (default 1,000 arcs)
+#   rtl      the RTL under Verilator (--cc)          (default 100,000 arcs, about 35 min)
+#   cosim    SystemC model and RTL on one sc_clock   (default 2,000 arcs)
 # usage: scripts/regress.sh [systemc|rtl|cosim|all] [arcs] [seed]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -14,8 +14,8 @@ seed=${3:-1}
 run() { "$build/tb/$1" --arcs "$2" --seed "$seed"; }
 case "$which" in
   systemc) run sc_regress "${2:-2000}" ;;
-  rtl) run rtl_regress "${2:-10000}" ;;
-  cosim) run cosim_regress "${2:-1000}" ;;
-  all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-10000}"; run cosim_regress "${2:-1000}" ;;
+  rtl) run rtl_regress "${2:-100000}" ;;
+  cosim) run cosim_regress "${2:-2000}" ;;
+  all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
   *) echo "usage: $0 [systemc|rtl|cosim|all] [arcs] [seed]" >&2; exit 2 ;;
 esac

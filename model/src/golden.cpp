@@ -745,15 +745,10 @@ Plan plan_arc(const ArcSpec& spec_in) {
       throw InputError(m.str());
     }
   }
-  p.full = p.from == p.to;
-  if (spec.to_theta) {
-    p.full = spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta);
-  } else if (p.full && spec.from_theta && spec.to_theta &&
-      normalize_udeg(*spec.from_theta) != normalize_udeg(*spec.to_theta)) {
-    throw InputError("from-theta " + format_degrees(*spec.from_theta) + " and to-theta " +
-                     format_degrees(*spec.to_theta) + " round to the same lattice point " + pt(p.from) +
-                     ": give equal angles for a full turn");
-  }
+  // A full turn: equal lattice ends, or equal parametric angles (a parametric end is
+  // found by the walk, so its lattice point is not known yet).
+  p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
+                         : p.from == p.to;
   std::optional<RayEnd> ray;
   if (spec.to_theta) {
     ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full, Point{p.from.x - c.x, p.from.y - c.y});
