@@ -6,6 +6,7 @@
 #include "dda_cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include <unistd.h>
 
 #include "dda/golden.hpp"
+#include "dda/hw_command.hpp"
 #include "dda/hw_params.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
@@ -255,7 +257,9 @@ int main(int argc, char** argv) {
   add_arc_options(stats, st, "text or json", "text");
   std::string gp_kind = "verilog", gp_out;
   auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
-  gen->add_option("--kind", gp_kind, "verilog (rtl/dda_params.vh) or markdown (docs/design.md tables)");
+  gen->add_option("--kind", gp_kind,
+                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables) or json (the widths and "
+                  "the largest semi-axis they hold at the default width)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
 
   try {
@@ -308,9 +312,18 @@ int main(int argc, char** argv) {
         write_stats(os, plan, compute_stats(plan, r.records), fmt);
       });
     } else if (gen->parsed()) {
-      const bool verilog = parse_enum<bool>("kind", gp_kind, {{"verilog", true}, {"markdown", false}});
+      const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}});
       Output out(gp_out);
-      out.stream() << (verilog ? hw::verilog_header() : hw::markdown_tables());
+      if (kind == 2) {
+        nlohmann::ordered_json j;
+        j["acc_width"] = hw::kAccWidth;
+        j["cnt_width"] = hw::kCntWidth;
+        j["cmd_width"] = hw::kCmdWidth;
+        j["max_semi_axis"] = hw::max_semi_axis(4);  // default width: smallest valid + 4
+        out.stream() << j.dump(1) << '\n';
+      } else {
+        out.stream() << (kind == 0 ? hw::verilog_header() : hw::markdown_tables());
+      }
       out.commit();
     }
   } catch (const InputError& e) {
