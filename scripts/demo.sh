@@ -43,6 +43,10 @@ else
   status=1
 fi
 echo
+echo "== picture"
+"$dda" plot "${args[@]}" --out "$out/plot.svg"
+echo "path over the ideal ellipse: $out/plot.svg (the same picture: docs/paper_example_plot.png)"
+echo
 echo "== waveforms"
 echo "SystemC model: $out/systemc.vcd   open: gtkwave $out/systemc.vcd $root/docs/dda_systemc.gtkw"
 echo "RTL:           $out/rtl.vcd       open: gtkwave $out/rtl.vcd $root/docs/dda_rtl.gtkw"

@@ -380,3 +380,39 @@ TEST_CASE("cli: whole ellipses, every quadrant, both directions", "[cli][ellipse
   CHECK(r.out.rfind("point,x,y\n0,0,10\n", 0) == 0);
   CHECK(r.out.substr(r.out.size() - 6) == ",-6,0\n");
 }
+
+TEST_CASE("cli: plot draws the paper's example: 16 markers, axes, legend, the largest deviation", "[cli][plot]") {
+  Scratch s;
+  const fs::path svg = s.dir / "paper.svg";
+  const Result r = run_dda(s, "plot " + kPaper + " --out " + svg.string());
+  REQUIRE(r.status == 0);
+  CHECK(r.out.empty());
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto count = [&](const std::string& needle) {
+    std::size_t n = 0;
+    for (auto i = text.find(needle); i != std::string::npos; i = text.find(needle, i + 1)) ++n;
+    return n;
+  };
+  CHECK(text.rfind("<svg ", 0) == 0);
+  CHECK(text.find("</svg>") != std::string::npos);
+  CHECK(count("<circle class=\"pt\"") == 16);  // the 16 points of the spec's path
+  CHECK(count("x (steps)") == 1);
+  CHECK(count("y (steps)") == 1);
+  CHECK(count("<g class=\"legend\">") == 1);
+  CHECK(count("<linearGradient") == 1);
+  CHECK(count("max 1.10 @ (6,6)") == 1);
+  CHECK(count("class=\"ideal\"") == 1);
+  // Every marker's colour and tooltip come from its distance: the worst one is red.
+  CHECK(text.find("<title>(6,6) 1.104</title>") != std::string::npos);
+}
+
+TEST_CASE("cli: plot refuses to write to stdout and names bad formats", "[cli][plot][errors]") {
+  Scratch s;
+  const Result r = run_dda(s, "plot " + kPaper);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == "dda: error: plot needs --out FILE.svg: it writes a picture, not text\n");
+  expect_usage_error("plot " + kPaper + " --format png", "format = 'png' is invalid");
+  expect_usage_error("plot --a 10 --b 6 --bits 2", "bits = 2 is invalid");
+}

@@ -248,13 +248,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
 
-  ArcOptions tr, pa, st;
+  ArcOptions tr, pa, st, pl;
   auto* trace = app.add_subcommand("trace", "per-iteration register trace");
   add_arc_options(trace, tr, "csv, table or json", "csv");
   auto* path = app.add_subcommand("path", "lattice points of the path");
   add_arc_options(path, pa, "csv or json", "csv");
   auto* stats = app.add_subcommand("stats", "counts and deviation from the ideal ellipse");
   add_arc_options(stats, st, "text or json", "text");
+  auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
+  add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
   auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
   gen->add_option("--kind", gp_kind,
@@ -266,7 +268,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 &&
         std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--version") != 0) {
       throw InputError(std::string("option '") + argv[1] +
-                       "' is unknown here: options follow a command (trace, path, stats, gen-params)");
+                       "' is unknown here: options follow a command (trace, path, stats, plot, gen-params)");
     }
     if (argc > 1 && argv[1][0] != '-') {
       std::string names;
@@ -310,6 +312,22 @@ int main(int argc, char** argv) {
                                                {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
       run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
         write_stats(os, plan, compute_stats(plan, r.records), fmt);
+      });
+    } else if (plot->parsed()) {
+      parse_enum<int>("format", pl.format, {{"svg", 0}});
+      if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+      std::string title = "dda";
+      for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--out") == 0) {
+          ++i;  // not part of the arc
+          continue;
+        }
+        title += std::string(" ") + argv[i];
+      }
+      std::string esc;  // the title is XML text
+      for (const char ch : title) esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+      run_arc_command(pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_svg(os, plan, r.records, esc);
       });
     } else if (gen->parsed()) {
       const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}});

@@ -1,0 +1,149 @@
+// SVG picture of a path over its ideal ellipse (dda plot).
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "dda/report.hpp"
+
+namespace dda {
+
+namespace {
+
+// Colour of a distance on a 0..scale ramp: blue, cyan, green, yellow, red.
+std::string ramp(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  static const double stops[5][3] = {{49, 54, 149}, {69, 167, 207}, {102, 189, 99}, {253, 216, 53}, {215, 25, 28}};
+  const double x = t * 4.0;
+  const int i = std::min(3, int(x));
+  const double f = x - i;
+  int c[3];
+  for (int k = 0; k < 3; ++k) c[k] = int(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
+  return fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+}
+
+// A "nice" tick step for a span.
+double tick_step(double span, int target) {
+  const double raw = span / target;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (raw <= m * mag) return m * mag;
+  }
+  return 10 * mag;
+}
+
+}  // namespace
+
+void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, const std::string& title) {
+  const std::vector<Point> pts = path_points(plan, iters);
+  std::vector<double> dist(pts.size());
+  std::size_t imax = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    dist[i] = plan_distance(plan, double(pts[i].x), double(pts[i].y));
+    if (dist[i] > dist[imax]) imax = i;
+  }
+  // View: the path's bounding box with a margin of a tenth (at least one step).
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const Point& p : pts) {
+    x0 = std::min(x0, double(p.x));
+    x1 = std::max(x1, double(p.x));
+    y0 = std::min(y0, double(p.y));
+    y1 = std::max(y1, double(p.y));
+  }
+  const double span = std::max({x1 - x0, y1 - y0, 2.0});
+  const double pad = std::max(1.0, span / 10);
+  x0 -= pad, x1 += pad, y0 -= pad, y1 += pad;
+  const double scale = 600.0 / std::max(x1 - x0, y1 - y0);  // same scale on both axes
+  const double W = (x1 - x0) * scale, H = (y1 - y0) * scale;
+  const double L = 90, T = 60, R = 180, B = 70;  // margins: axis labels left/bottom, legend right
+  const auto sx = [&](double x) { return L + (x - x0) * scale; };
+  const auto sy = [&](double y) { return T + (y1 - y) * scale; };
+  const double dscale = std::max(1.0, dist[imax]);  // colour ramp 0..max(1, worst)
+
+  fmt::print(os, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" "
+                 "font-family=\"sans-serif\" font-size=\"13\">\n", L + W + R, T + H + B);
+  fmt::print(os, "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
+  fmt::print(os, "<text x=\"{:.1f}\" y=\"24\" font-size=\"15\">{}</text>\n", L, title);
+  fmt::print(os, "<clipPath id=\"plot\"><rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\"/></clipPath>\n",
+             L, T, W, H);
+  // Grid and ticks.
+  const double step = tick_step(std::max(x1 - x0, y1 - y0), 8);
+  const auto tick = [&](double v) { return std::fabs(v) < step * 1e-9 ? 0.0 : v; };  // no "-0"
+  fmt::print(os, "<g class=\"axes\" stroke=\"#dddddd\">\n");
+  for (double x = std::ceil(x0 / step) * step; x <= x1; x += step) {
+    fmt::print(os, "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", sx(x), T, T + H);
+    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" stroke=\"none\" fill=\"black\">{}</text>\n",
+               sx(x), T + H + 18, tick(x));
+  }
+  for (double y = std::ceil(y0 / step) * step; y <= y1; y += step) {
+    fmt::print(os, "<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\"/>", sy(y), L, L + W);
+    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" stroke=\"none\" fill=\"black\">{}</text>\n",
+               L - 6, sy(y) + 4, tick(y));
+  }
+  fmt::print(os, "</g>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n",
+             L, T, W, H);
+  fmt::print(os, "<text class=\"axis-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">x (steps)</text>\n",
+             L + W / 2, T + H + 44);
+  fmt::print(os, "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
+                 "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n", T + H / 2, T + H / 2);
+  // The ideal curve: the whole ellipse, sampled finely, clipped to the view.
+  {
+    const SinCos f = sincos_udeg(plan.spec.angle);
+    const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
+    const double a = double(plan.spec.a), b = double(plan.spec.b);
+    const double cx = double(plan.spec.center.x), cy = double(plan.spec.center.y);
+    const int n = 4096;
+    fmt::print(os, "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
+                   "stroke-width=\"1.5\" points=\"");
+    for (int k = 0; k <= n; ++k) {
+      const double t = 2 * M_PI * k / n, u = a * std::cos(t), v = b * std::sin(t);
+      fmt::print(os, "{:.2f},{:.2f} ", sx(cx + u * c - v * s), sy(cy + u * s + v * c));
+    }
+    fmt::print(os, "\"/>\n");
+  }
+  // The path and its point markers (at most 4000 markers: every k-th point beyond that,
+  // always the worst one).
+  fmt::print(os, "<polyline class=\"path\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" points=\"");
+  for (const Point& p : pts) fmt::print(os, "{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
+  fmt::print(os, "\"/>\n");
+  const std::size_t every = (pts.size() + 3999) / 4000;
+  const double r = std::clamp(0.3 * scale, 1.5, 7.0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (i % every != 0 && i != imax) continue;
+    fmt::print(os, "<circle class=\"pt\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"{}\"><title>({},{}) {:.3f}</title></circle>\n",
+               sx(double(pts[i].x)), sy(double(pts[i].y)), r, ramp(dist[i] / dscale), pts[i].x, pts[i].y, dist[i]);
+  }
+  // The largest deviation.
+  const Point& m = pts[imax];
+  fmt::print(os, "<circle class=\"max\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"/>\n",
+             sx(double(m.x)), sy(double(m.y)), r + 5);
+  const bool left = sx(double(m.x)) > L + W * 0.6;
+  fmt::print(os, "<text class=\"max-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"{}\" font-weight=\"bold\">max {:.2f} @ ({},{})</text>\n",
+             sx(double(m.x)) + (left ? -(r + 9) : r + 9), sy(double(m.y)) - (r + 6), left ? "end" : "start", dist[imax],
+             m.x, m.y);
+  // Legend: the colour ramp with its scale.
+  const double lx = L + W + 40, ly = T + 20, lh = 200;
+  fmt::print(os, "<g class=\"legend\">\n<text x=\"{:.1f}\" y=\"{:.1f}\">distance from</text>\n"
+                 "<text x=\"{:.1f}\" y=\"{:.1f}\">the ellipse (steps)</text>\n",
+             lx - 10, ly - 4, lx - 10, ly + 12);
+  fmt::print(os, "<linearGradient id=\"ramp\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">");
+  for (int k = 0; k <= 4; ++k) fmt::print(os, "<stop offset=\"{}\" stop-color=\"{}\"/>", k / 4.0, ramp(k / 4.0));
+  fmt::print(os, "</linearGradient>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"18\" height=\"{:.1f}\" fill=\"url(#ramp)\" stroke=\"black\"/>\n",
+             lx, ly + 24, lh);
+  for (int k = 0; k <= 4; ++k) {
+    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\">{:.2f}</text>\n", lx + 24, ly + 24 + lh - lh * k / 4.0 + 4,
+               dscale * k / 4.0);
+  }
+  fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#888888\">grey: ideal curve</text>\n", lx - 10, ly + lh + 50);
+  if (every > 1) {
+    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\">markers: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} points</text>\n",
+               lx - 10, ly + lh + 70, every, lx - 10, ly + lh + 86, pts.size());
+  }
+  fmt::print(os, "</g>\n</svg>\n");
+}
+
+}  // namespace dda
