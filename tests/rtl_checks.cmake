@@ -55,3 +55,33 @@ dda_rtl_test(rtl.icarus_detects_corruption NEEDS IVERILOG VVP
              COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero
                      --corrupt-iter 5 --corrupt-field u_int_x.jr_q
                      --out ${_dda_bench_dir}/paper_corrupt ${PROJECT_BINARY_DIR})
+
+# Vector sets of `dda vectors` (golden model) through tb/vectors/dda_vec_tb.v on Icarus
+# and on Verilator --binary: the paper's example, the lathe paper's oblique ellipse with
+# ce_i high 80% of the cycles, three arcs back to back (an axis-aligned quarter, a rotated
+# arc, a whole ellipse with half preload), and a corrupted expected value that both
+# simulators must report.
+set(_dda_vec ${CMAKE_CURRENT_BINARY_DIR}/vec_sets)
+set(_dda_lathe --a 25000 --b 15000 --angle 330 --center -30000,5000 --from-theta 60 --to-theta 136 --dir ccw)
+function(dda_vec_set name)
+  add_test(NAME vectors.gen_${name} COMMAND $<TARGET_FILE:dda> vectors --out-dir ${_dda_vec}/${name} ${ARGN})
+  set_tests_properties(vectors.gen_${name} PROPERTIES FIXTURES_SETUP vec_${name} LABELS rtl)
+endfunction()
+dda_vec_set(paper --a 10 --b 6 --bits 4)
+dda_vec_set(lathe ${_dda_lathe} --ce-percent 80 --seed 3)
+dda_vec_set(back_to_back --a 10 --b 6 --bits 4 --ce-percent 90 --seed 7
+            --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
+            --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
+foreach(_set paper lathe back_to_back)
+  dda_rtl_test(vectors.${_set} NEEDS IVERILOG VVP VERILATOR
+               COMMAND ${_dda_scripts}/vector-bench.sh ${_dda_vec}/${_set})
+  set_tests_properties(vectors.${_set} PROPERTIES FIXTURES_REQUIRED vec_${_set}
+                       ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build)
+endforeach()
+dda_rtl_test(vectors.detects_corruption NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/vector-bench.sh --corrupt 12 u_int_y.jr_q ${_dda_vec}/paper)
+set_tests_properties(vectors.detects_corruption PROPERTIES FIXTURES_REQUIRED vec_paper
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build)
+# The bench's field table is generated from hw_params.hpp: the checked-in copy must match.
+add_test(NAME vectors.fields_in_sync
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/vectors/dda_vec_fields.vh")

@@ -25,6 +25,7 @@
 #include "dda/hw_params.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
+#include "vectors.hpp"
 
 namespace dda::cli {
 
@@ -255,20 +256,30 @@ int main(int argc, char** argv) {
   add_arc_options(path, pa, "csv or json", "csv");
   auto* stats = app.add_subcommand("stats", "counts and deviation from the ideal ellipse");
   add_arc_options(stats, st, "text or json", "text");
+  ArcOptions ve;
+  std::string ve_dir, ve_seed = "1", ve_ce = "100";
+  std::vector<std::string> ve_then;
+  auto* vectors = app.add_subcommand("vectors", "test vectors from the golden model (--out-dir DIR; docs/vectors.md)");
+  add_arc_options(vectors, ve, "hex (with CSV and a JSON manifest)", "hex");
+  vectors->add_option("--out-dir", ve_dir, "directory of the vector set (written atomically)");
+  vectors->add_option("--then", ve_then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
+  vectors->add_option("--seed", ve_seed, "seed of the ce pattern (default 1)");
+  vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
   auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
   add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
   auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
   gen->add_option("--kind", gp_kind,
-                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables) or json (the widths and "
-                  "the largest semi-axis they hold at the default width)");
+                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
+                  "the largest semi-axis they hold at the default width) or vector-fields "
+                  "(tb/vectors/dda_vec_fields.vh)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
 
   try {
     if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 &&
         std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--version") != 0) {
       throw InputError(std::string("option '") + argv[1] +
-                       "' is unknown here: options follow a command (trace, path, stats, plot, gen-params)");
+                       "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
     }
     if (argc > 1 && argv[1][0] != '-') {
       std::string names;
@@ -313,6 +324,33 @@ int main(int argc, char** argv) {
       run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
         write_stats(os, plan, compute_stats(plan, r.records), fmt);
       });
+    } else if (vectors->parsed()) {
+      parse_enum<int>("format", ve.format, {{"hex", 0}});
+      if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
+      if (ve.engine != "golden") throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
+      if (!ve.out.empty() || !ve.vcd.empty()) throw InputError("vectors write --out-dir DIR, not --out or --vcd");
+      vec::Options vo;
+      vo.out_dir = ve_dir;
+      vo.seed = std::uint64_t(parse_int("seed", ve_seed, "a non-negative integer"));
+      vo.ce_percent = int(parse_int("ce-percent", ve_ce, "an integer from 1 to 100"));
+      vo.command_line = "dda";
+      for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        vo.command_line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
+      }
+      std::vector<Plan> plans{make_plan(ve)};
+      for (const std::string& then : ve_then) {
+        CLI::App sub{"arc"};
+        ArcOptions o;
+        add_arc_options(&sub, o, "", "");
+        try {
+          sub.parse(then, false);
+        } catch (const CLI::ParseError& e) {
+          throw InputError("then = '" + then + "' is invalid: " + e.what());
+        }
+        plans.push_back(make_plan(o));
+      }
+      vec::write_vector_set(plans, vo);
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
       if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
@@ -330,9 +368,11 @@ int main(int argc, char** argv) {
         write_svg(os, plan, r.records, esc);
       });
     } else if (gen->parsed()) {
-      const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}});
+      const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}, {"vector-fields", 3}});
       Output out(gp_out);
-      if (kind == 2) {
+      if (kind == 3) {
+        out.stream() << vec::verilog_fields();
+      } else if (kind == 2) {
         nlohmann::ordered_json j;
         j["acc_width"] = hw::kAccWidth;
         j["cnt_width"] = hw::kCntWidth;

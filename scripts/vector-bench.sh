@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Runs the self-checking bench tb/vectors/dda_vec_tb.v on a vector set written by
+# `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
+#   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] DIR
+# --corrupt flips the lowest bit of FIELD in the expected word of CYCLE (in a copy of the
+# set) and then passes only if every simulator fails with exactly that MISMATCH.
+# Builds go to $DDA_BUILD_DIR/vec_bench (default build/vec_bench). Registered in ctest
+# (tests/rtl_checks.cmake, vectors.*).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${DDA_BUILD_DIR:-$root/build}
+iverilog=${IVERILOG:-iverilog} vvp=${VVP:-vvp} verilator=${VERILATOR:-verilator}
+corrupt_cycle="" corrupt_field="" sims="icarus verilator"
+while [ $# -gt 1 ]; do
+  case "$1" in
+    --corrupt) corrupt_cycle=$2 corrupt_field=$3; shift 3 ;;
+    --sim) sims=$2; [ "$sims" = both ] && sims="icarus verilator"; shift 2 ;;
+    *) break ;;
+  esac
+done
+[ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] DIR" >&2; exit 2; }
+set_dir=$(cd "$1" && pwd)
+out="$build/vec_bench"
+mkdir -p "$out"
+srcs=("$root/tb/vectors/dda_vec_tb.v" "$root"/rtl/dda_*.v)
+incs=(-I"$root/rtl" -I"$root/tb/vectors")
+newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f" -nt "$t" ] && return 0; done; return 1; }
+deps=("${srcs[@]}" "$root/rtl/dda_params.vh" "$root/tb/vectors/dda_vec_fields.vh")
+
+if [ -n "$corrupt_cycle" ]; then
+  work=$(mktemp -d -t dda-vec-corrupt.XXXXXX)
+  trap 'rm -rf "$work"' EXIT
+  cp "$set_dir"/* "$work/"
+  # The field's bit range from the manifest (layout.cycle_exp), then flip its lowest bit.
+  lsb=$(python3 -c 'import json,sys; m=json.load(open(sys.argv[1]))
+for f in m["layout"]["cycle_exp"]:
+    if f["name"] == sys.argv[2]: print(f["lsb"]); break
+else: sys.exit("no field " + sys.argv[2])' "$set_dir/manifest.json" "$corrupt_field")
+  python3 - "$work/cycle_exp.hex" "$corrupt_cycle" "$lsb" <<'PY'
+import sys
+path, cyc, lsb = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+lines = open(path).read().split("\n")
+w = lines[cyc]
+v = int(w, 16) ^ (1 << lsb)
+lines[cyc] = format(v, "0%dx" % len(w))
+open(path, "w").write("\n".join(lines))
+PY
+  set_dir=$work
+fi
+
+status=0
+for sim in $sims; do
+  case "$sim" in
+    icarus)
+      bin="$out/dda_vec_tb.vvp"
+      if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${incs[@]}" -o "$bin" "${srcs[@]}"; fi
+      run=("$vvp" -n "$bin" +vectors="$set_dir") ;;
+    verilator)
+      bin="$out/obj/dda_vec_tb"
+      if newer "$bin" "${deps[@]}"; then
+        "$verilator" --binary -Wall "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
+          "${srcs[@]}" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
+      fi
+      run=("$bin" +vectors="$set_dir") ;;
+    *) echo "unknown simulator $sim" >&2; exit 2 ;;
+  esac
+  set +e
+  log=$("${run[@]}" 2>&1)
+  rc=$?
+  set -e
+  if [ -z "$corrupt_cycle" ]; then
+    if [ $rc -eq 0 ] && echo "$log" | grep -q "dda_vec_tb: PASS"; then
+      echo "$sim: $(echo "$log" | grep "dda_vec_tb: PASS")"
+    else
+      echo "$sim: FAIL (exit $rc):" >&2; echo "$log" | tail -5 >&2; status=1
+    fi
+  else
+    want="MISMATCH cycle $corrupt_cycle field $corrupt_field:"
+    if [ $rc -ne 0 ] && echo "$log" | grep -qF "$want"; then
+      echo "$sim: failed as it must (exit $rc): $(echo "$log" | grep -F "$want")"
+    else
+      echo "$sim: did NOT report the corrupted value (exit $rc, wanted '$want'):" >&2
+      echo "$log" | tail -5 >&2; status=1
+    fi
+  fi
+done
+exit $status
