@@ -1,0 +1,12 @@
+// scripts/bench: the three-way co-simulation's speed (see bench_main.hpp).
+#include <systemc>
+
+#include "bench_main.hpp"
+#include "cosim_harness.hpp"
+
+int main(int argc, char* argv[]) {
+  dda::cosim::CosimHarness h;
+  return dda::bench_main(&h, argc, argv);
+}
+
+int sc_main(int argc, char* argv[]) { return main(argc, argv); }

@@ -1,0 +1,4 @@
+// scripts/bench: the golden model's speed, records off (see bench_main.hpp).
+#include "bench_main.hpp"
+
+int main(int argc, char* argv[]) { return dda::bench_main(nullptr, argc, argv); }

@@ -1,0 +1,8 @@
+// scripts/bench: the Verilated RTL's speed, tracing off (see bench_main.hpp).
+#include "bench_main.hpp"
+#include "rtl_harness.hpp"
+
+int main(int argc, char* argv[]) {
+  dda::rtl::RtlHarness h;
+  return dda::bench_main(&h, argc, argv);
+}
