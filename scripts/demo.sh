@@ -47,6 +47,11 @@ echo "== picture"
 "$dda" plot "${args[@]}" --out "$out/plot.svg"
 echo "path over the ideal ellipse: $out/plot.svg (the same picture: docs/paper_example_plot.png)"
 echo
+echo "== test vectors"
+"$dda" vectors "${args[@]}" --out-dir "$out/vectors"
+echo "vector set (golden model): $out/vectors (docs/vectors.md)"
+"$root/scripts/vector-bench.sh" "$out/vectors" || status=1
+echo
 echo "== waveforms"
 echo "SystemC model: $out/systemc.vcd   open: gtkwave $out/systemc.vcd $root/docs/dda_systemc.gtkw"
 echo "RTL:           $out/rtl.vcd       open: gtkwave $out/rtl.vcd $root/docs/dda_rtl.gtkw"
