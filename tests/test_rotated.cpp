@@ -140,3 +140,41 @@ TEST_CASE("rotated: quarter-turn angles keep the exact integer datapath", "[gold
   s.angle = 90 * kMicroDeg + 1;  // one micro-degree off: fixed point
   CHECK(plan_arc(s).rotated);
 }
+
+TEST_CASE("parametric ends: the span is judged from the ideal start, not the rounded one", "[golden][rotated]") {
+  // Found in review: (100,1), the start of 0.4 and of 0.6 degrees, lies past the ray of
+  // 0.5 and before that of 0.59 degrees.
+  ArcSpec s;
+  s.a = s.b = 100;
+  s.preload = Preload::Half;
+  s.from_theta = 400'000;  // 0.4 degrees
+  s.to_theta = 500'000;
+  Plan p = plan_arc(s);
+  CHECK(run(p).iterations > 0);
+  CHECK(std::llabs(p.to.x - p.from.x) + std::llabs(p.to.y - p.from.y) <= 1);  // a tenth of a degree: one step
+  s.from_theta = 600'000;
+  s.to_theta = 590'000;  // almost a full turn, not one step
+  p = plan_arc(s);
+  std::uint64_t moves = 0;
+  run(p, [&](const Iteration& it) { moves += it.step_x || it.step_y; });
+  CHECK(moves > 700);  // about 8 * 100 steps around a circle of radius 100
+  CHECK(plan_distance(p, double(p.to.x), double(p.to.y)) < 1.0);
+}
+
+TEST_CASE("refused: a lattice end the path cannot reach, a start at the centre", "[golden][rotated]") {
+  ArcSpec s;
+  s.a = 2;
+  s.b = 6;
+  s.bits = 3;
+  s.from = Point{1, 2};  // far inside the curve: the path stalls short of the vertex
+  s.to = Point{-1, 6};
+  CHECK_THROWS_WITH(plan_arc(s), Catch::Contains("is unreachable"));
+  s.preload = Preload::Half;
+  s.to = Point{-2, 5};
+  CHECK_THROWS_WITH(plan_arc(s), Catch::Contains("is unreachable"));
+  ArcSpec c;
+  c.a = c.b = 1;
+  c.from = Point{0, 0};
+  c.to = Point{0, 1};
+  CHECK_THROWS_WITH(plan_arc(c), Catch::Contains("is the centre of the ellipse"));
+}

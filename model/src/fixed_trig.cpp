@@ -16,7 +16,7 @@ constexpr int kWork = 60;  // working precision: Q60
 constexpr i128 kPiQ60 = i128(3622009729038561421LL);
 
 // sin and cos of x radians in Q60, 0 <= x <= pi/4 (x in Q60). Taylor series; every
-// term is truncated toward zero, about 60 bits are kept; the series stops when a term
+// term is rounded down (>> floors) before its division truncates, about 58 bits are kept; the series stops when a term
 // is 0 (after about 12 terms at pi/4).
 void taylor(i128 x, i128& c, i128& s) {
   const i128 one = i128(1) << kWork;
@@ -81,8 +81,8 @@ std::int64_t parse_degrees(const std::string& name, const std::string& text) {
   std::int64_t whole = 0, frac = 0;
   int int_digits = 0, frac_digits = 0;
   for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, ++int_digits) {
-    if (int_digits >= 9) throw bad(rule);
     whole = whole * 10 + (text[i] - '0');
+    if (whole >= 1'000'000'000) throw bad(rule);  // leading zeros are fine
   }
   if (i < text.size() && text[i] == '.') {
     for (++i; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, ++frac_digits) {

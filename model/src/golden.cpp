@@ -238,22 +238,30 @@ std::int64_t fraction_preload(std::int64_t cap, bool dir_neg, std::int64_t frac)
 // An end given as a parametric angle: the arc ends where the path first crosses the
 // ray from the centre through that angle's ideal point `e` (relative, Q(kPosFrac)),
 // moving in direction D; a full turn must pass the far side (the half-plane behind the
-// centre) first. crossed() is called with every position after the start.
+// centre) first. Whether the ray is still ahead at the start is decided from the
+// represented start (the ideal point of a parametric start, which the lattice point can
+// lie on the other side of). crossed() is called with every position after the start.
 struct RayEnd {
   FixedPoint e;
   int D = 1;
   bool far_seen = true;
   bool armed = false;
-  RayEnd(FixedPoint end, Direction dir, bool full, Point start) : e(end), D(dir == Direction::Ccw ? 1 : -1) {
-    far_seen = !full;
-    armed = far_seen && side(start) < 0;
+  Point last;  // the position last looked at (relative); starts at the lattice start
+  RayEnd(FixedPoint end, Direction dir, bool full, FixedPoint start, Point lattice_start)
+      : e(end), D(dir == Direction::Ccw ? 1 : -1), last(lattice_start) {
+    // side < 0: the end lies less than half a turn ahead, so the path may end as soon as
+    // it crosses the ray; otherwise (and for a full turn) it must pass the far side first.
+    armed = far_seen = !full && side(start.x, start.y) < 0;
   }
-  __int128 side(Point q) const { return D * (__int128(e.x) * q.y - __int128(e.y) * q.x); }
+  __int128 side(__int128 x, __int128 y) const { return D * (e.x * y - e.y * x); }
   bool ahead(Point q) const { return __int128(e.x) * q.x + __int128(e.y) * q.y > 0; }
+  // Only a step can cross the ray: an iteration without one leaves the verdict as it was.
   bool crossed(Point q) {
-    if (armed && side(q) >= 0 && ahead(q)) return true;
+    if (q == last) return false;
+    last = q;
+    if (armed && side(q.x, q.y) >= 0 && ahead(q)) return true;
     far_seen = far_seen || !ahead(q);
-    armed = far_seen && side(q) < 0;
+    armed = far_seen && side(q.x, q.y) < 0;
     return false;
   }
 };
@@ -267,10 +275,16 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
   const auto rel = [&](Point q) { return Point{q.x - c.x, q.y - c.y}; };
   const Point rt = rel(p.to);
   Point cur = rel(p.from);
+  if (cur == Point{0, 0}) {
+    throw InputError("from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there");
+  }
   int q = start_quadrant(cur.x, cur.y, spec.dir);
   int empty_pieces = 0;
   for (int guard = 0;; ++guard) {
-    if (guard > 5) throw GuardError("planner guard: more than 6 pieces");
+    if (guard > 5) {
+      throw InputError("the DDA cannot reach the end from " + pt(p.from) +
+                       ": its path passed six pieces without crossing the end (the start lies far inside the curve?)");
+    }
     bool last = !ray && !(p.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
     Point end = last ? rt : end_vertex(q, spec.dir, ax, by);
     if (!last && !in_piece(q, spec.dir, cur, end)) {
@@ -338,6 +352,8 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
       };
       while (!dp.done() && dp.iterations() < sg.iteration_bound) {
         if (dp.stalled()) {
+          // With a lattice end the skipped stretch could hold it: refuse, as rule 6 says.
+          if (!ray) break;  // the validation run names the stall
           cut_here();
           break;
         }
@@ -351,7 +367,7 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
     }
     if (!last && cm.cnt_x == 0 && cm.cnt_y == 0) {  // stalled on its first iteration: no piece
       q = next_quadrant(q, spec.dir);
-      if (++empty_pieces > 4) throw GuardError("planner guard: pieces without a step");
+      if (++empty_pieces > 4) throw InputError("the DDA cannot leave " + pt(Point{c.x + cur.x, c.y + cur.y}) + ": it stalls in every direction");
       continue;
     }
     p.iteration_bound += sg.iteration_bound;
@@ -442,7 +458,8 @@ Scaled scaled_coefficients(const ArcSpec& spec, int n) {
   if (qt >= 0) {
     const std::int64_t ax = qt % 2 ? b : a, by = qt % 2 ? a : b;
     r.k = Coefficients{0, ax * ax, by * by};
-    r.cap = (a * b) << n;  // range checked by the caller
+    const __int128 cap = __int128(a) * b << n;  // plan_arc refuses capacities from 2^61 up
+    r.cap = cap < (__int128(1) << 62) ? std::int64_t(cap) : 0;
     r.level = i128(a) * a * b * b;
     return r;
   }
@@ -477,11 +494,15 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
   const std::int64_t fx = f.x >> kPosFrac, fy = f.y >> kPosFrac;  // floors
   const std::int64_t mask = (std::int64_t{1} << kPosFrac) - 1;
   const std::int64_t cx = fx + ((f.x & mask) != 0), cy = fy + ((f.y & mask) != 0);
-  Point best{fx, fy};
-  i128 best_q = -1;
+  Point best{fx, fy}, outermost{fx, fy};
+  i128 best_q = -1, out_q = -1;
   for (const std::int64_t x : {fx, cx}) {
     for (const std::int64_t y : {fy, cy}) {
       const i128 q = quad_form(sc.k, x, y);
+      if (q > out_q) {
+        out_q = q;
+        outermost = Point{x, y};
+      }
       if (q < sc.level) continue;  // inside the ellipse
       if (best_q < 0 || q < best_q) {
         best_q = q;
@@ -489,6 +510,9 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
       }
     }
   }
+  // (Rounded coefficients of a rotated ellipse can leave all four just inside: then the
+  // outermost of them.)
+  if (best_q < 0) best = outermost;
   return Point{c.x + best.x, c.y + best.y};
 }
 
@@ -751,7 +775,9 @@ Plan plan_arc(const ArcSpec& spec_in) {
                          : p.from == p.to;
   std::optional<RayEnd> ray;
   if (spec.to_theta) {
-    ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full, Point{p.from.x - c.x, p.from.y - c.y});
+    const FixedPoint start{((p.from.x - c.x) << kPosFrac) + from.fx, ((p.from.y - c.y) << kPosFrac) + from.fy};
+    ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full,
+                spec.from_theta ? theta_ideal(spec, *spec.from_theta) : start, Point{p.from.x - c.x, p.from.y - c.y});
   }
   if (p.rotated) {
     plan_rotated_pieces(p, sc, from, ray);

@@ -23,6 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kIdxWidth = 16;  // command index field of the per-cycle inputs
+constexpr std::size_t kMaxCommands = 4096;  // the bench's command memory (MaxCmds)
 
 // One field of a vector word: name, width, meaning, and (expected words) the Verilog
 // expression the bench compares it with, relative to the core instance `dut`.
@@ -170,8 +171,9 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
       cmds.push_back({plans[a].segs[k].cmd, a, k, k + 1 == plans[a].segs.size()});
     }
   }
-  if (cmds.size() >= (std::size_t{1} << kIdxWidth)) {
-    throw InputError("vectors: " + std::to_string(cmds.size()) + " commands do not fit the 16-bit command index");
+  if (cmds.size() > kMaxCommands) {
+    throw InputError("vectors: " + std::to_string(cmds.size()) + " commands are too many: tb/vectors/dda_vec_tb.v holds " +
+                     std::to_string(kMaxCommands));
   }
   std::uint64_t bound = 16;
   for (const auto& p : plans) bound += p.iteration_bound;

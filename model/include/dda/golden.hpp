@@ -126,7 +126,8 @@ struct ArcSpec {
 int quarter_turns(const ArcSpec& spec);
 
 // One monotone piece of an arc (each axis moves one way): one hardware command.
-// Pieces meet at the ellipse's vertices, which are lattice points.
+// Pieces of an axis-aligned ellipse meet at its vertices (lattice points), or where the
+// path stalled short of one; those of a rotated ellipse where an axis turns.
 struct Segment {
   Point from, to;
   int quadrant = 1;                   // 1..4: the quadrant (about the centre) it runs in
@@ -156,7 +157,7 @@ struct Plan {
   // preload and a parametric start it is the ideal curve point (the first piece's
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
-  bool full = false;               // from == to: one full turn
+  bool full = false;               // one full turn: equal lattice ends or equal angles
   bool rotated = false;            // angle not a multiple of 90 degrees
   std::int64_t ax = 0, by = 0;     // quarter turns: semi-axes along X and Y (a, b swapped by
                                    // odd turns); rotated: a and b
