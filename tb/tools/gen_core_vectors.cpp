@@ -13,7 +13,7 @@
 // expect.hex layout: the 21 registers of dda::hw::kRegisters (the design doc's register
 // table) in table order, the first one leftmost (most significant). Each field is
 // zero-padded to a whole number of hex digits (width rounded up to a multiple of 4) and
-// fields are separated by '_' (allowed inside a $readmemh number). With AccWidth = 50 and
+// fields are separated by '_' (allowed inside a $readmemh number). With AccWidth = 51 and
 // CntWidth = 17, left to right (digits):
 //   u_int_x.jv_q(13) u_int_x.jr_q(13) u_int_x.inc_on_x_q(13) u_int_x.inc_on_y_q(13)
 //   u_int_y.jv_q(13) u_int_y.jr_q(13) u_int_y.inc_on_x_q(13) u_int_y.inc_on_y_q(13)
