@@ -43,5 +43,32 @@ int main(int argc, char** argv) {
     std::printf("| [%d, %d) | %d | %.3f | %.3f | %.3f | %.3f |\n", 1 << k, 2 << k, bin.n,
                 bin.worst[0], bin.bound[0], bin.worst[1], bin.bound[1]);
   }
+
+  // Rotated ellipses (whole-ellipse draws turned by a uniform angle): the worst drift
+  // (distance minus the start offset and the coefficient bound) by bits above the
+  // smallest valid width, half preload, aspect ratio <= 4 and above.
+  RandomArcs whole(seed, 4096, 8, ArcKind::Whole);
+  double rot[2][9] = {};
+  int rot_n[2][9] = {};
+  for (int i = 0; i < arcs;) {
+    const auto plan = whole.next();
+    if (!plan) continue;
+    ++i;
+    if (!plan->rotated || plan->spec.preload != Preload::Half || start_offset(*plan) > 1.0) continue;
+    double worst = 0;
+    run(*plan, [&](const Iteration& it) {
+      if (it.step_x || it.step_y) worst = std::max(worst, plan_distance(*plan, double(it.pos.x), double(it.pos.y)));
+    });
+    const int e = plan->spec.bits - smallest_valid_bits(plan->spec.a, plan->spec.b);
+    const int thin = std::max(plan->spec.a, plan->spec.b) > 4 * std::min(plan->spec.a, plan->spec.b);
+    rot[thin][e] = std::max(rot[thin][e], worst - start_offset(*plan) - coefficient_drift_bound(*plan));
+    ++rot_n[thin][e];
+  }
+  std::printf("\nrotated ellipses, half preload, %d whole-ellipse draws (the property tests' distribution):\n", arcs);
+  std::printf("| bits above the smallest | aspect <= 4: arcs | worst drift | aspect > 4: arcs | worst drift |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for (int e = 0; e <= 8; ++e) {
+    std::printf("| +%d | %d | %.3f | %d | %.3f |\n", e, rot_n[0][e], rot[0][e], rot_n[1][e], rot[1][e]);
+  }
   return 0;
 }
