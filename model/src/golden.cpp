@@ -643,7 +643,12 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
         throw InputError("the DDA cannot follow this rotated ellipse from " + pt(p.from) + ": it stalls at " +
                          pt(dp.pos()) + " (both integrands <= 0: the lattice is too coarse for so thin an ellipse)");
       }
-      if (dp.iterations() >= guard) throw GuardError("planner guard: a piece passed " + std::to_string(guard) + " iterations");
+      if (dp.iterations() >= guard) {  // it circles without turning: refuse, like a thin tip
+        throw InputError("the DDA cannot follow this rotated ellipse: a piece from " + pt(Point{c.x + cur.x, c.y + cur.y}) + " passed " +
+                         std::to_string(guard) + " iterations (a " + std::to_string(spec.a) + ", b " +
+                         std::to_string(spec.b) + ", angle " + format_degrees(spec.angle) + ", bits " +
+                         std::to_string(spec.bits) + ") without turning");
+      }
       dp.step();
       if (ray && ray->crossed(Point{dp.pos().x - c.x, dp.pos().y - c.y})) {
         ray_end = true;
@@ -718,13 +723,13 @@ Plan plan_arc(const ArcSpec& spec_in) {
                        std::to_string(spec.bits) + " * " + std::to_string(a) + " * " +
                        std::to_string(b) + " is out of range: it must be below 2^61");
     }
-  } else if (4 * __int128(std::min(a, b)) * std::min(a, b) < std::max(a, b)) {
+  } else if (4 * __int128(std::min(a, b)) * std::min(a, b) <= std::max(a, b)) {
     std::ostringstream m;
     m.precision(3);
     m << "a = " << a << ", b = " << b << " is too thin to turn by " << format_degrees(spec.angle)
       << " degrees: the radius of curvature at the tips, min(a,b)^2 / max(a,b) = "
       << double(std::min(a, b)) * double(std::min(a, b)) / double(std::max(a, b))
-      << " steps, must be at least 1/4 step for a rotated ellipse (the lattice path cannot follow a sharper tip)";
+      << " steps, must exceed 1/4 step for a rotated ellipse (the lattice path cannot follow a sharper tip)";
     throw InputError(m.str());
   } else if (coefficient_drift_bound(p) > kMaxCoefficientDrift || spec.bits > kRotCapBits) {
     std::ostringstream m;

@@ -107,7 +107,7 @@ const char* to_string(Direction d);
 // its centre (so the semi-axis a points in direction angle). Angles that are multiples
 // of 90 degrees use the exact integer datapath (integrands a^2 |v|, b^2 |u|); any other
 // angle uses fixed-point coefficients (docs/golden-model.md, "Rotated ellipses") and
-// needs a radius of curvature at the tips, min(a,b)^2 / max(a,b), of at least 1/4 step.
+// needs a radius of curvature at the tips, min(a,b)^2 / max(a,b), above 1/4 step.
 struct ArcSpec {
   std::int64_t a = 0, b = 0;
   std::int64_t angle = 0;         // micro-degrees (fixed_trig.hpp), reduced modulo a turn
