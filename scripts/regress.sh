@@ -2,7 +2,7 @@
 # Long regressions (not in the default test suite), each in lockstep with the golden
 # model, random arcs back to back, some with random ce_i stalls, some reset halfway:
 #   systemc  the SystemC model                       (default 2,000 arcs)
-#   rtl      the RTL under Verilator (--cc)          (default 100,000 arcs, about 35 min)
+#   rtl      the RTL under Verilator (--cc)          (default 100,000 arcs, about 40 min)
 #   cosim    SystemC model and RTL on one sc_clock   (default 2,000 arcs)
 # usage: scripts/regress.sh [systemc|rtl|cosim|all] [arcs] [seed]
 set -euo pipefail
