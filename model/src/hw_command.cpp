@@ -6,6 +6,10 @@
 
 namespace dda::hw {
 
+// The golden model's capacity for rotated ellipses must be a value the hardware's
+// capacity register holds below 2^(AccWidth-1) (every integrand up to it positive).
+static_assert(kRotCapBits < kAccWidth - 1, "kRotCapBits (golden.hpp) no longer fits AccWidth (hw_params.hpp)");
+
 namespace {
 
 // A field of `width` bits whose value must be below 2^value_bits (value_bits <= width).

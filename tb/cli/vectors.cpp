@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kIdxWidth = 16;  // command index field of the per-cycle inputs
-constexpr std::size_t kMaxCommands = 4096;  // the bench's command memory (MaxCmds)
+constexpr int kCmdAddrBits = 12;  // the bench's command memory: 2^12 commands
+constexpr std::size_t kMaxCommands = std::size_t{1} << kCmdAddrBits;
 
 // One field of a vector word: name, width, meaning, and (expected words) the Verilog
 // expression the bench compares it with, relative to the core instance `dut`.
@@ -142,6 +143,7 @@ std::string verilog_fields() {
   s << "`define DDA_VEC_IN_WIDTH " << total_width(input_fields()) << "\n";
   s << "`define DDA_VEC_EXP_WIDTH " << w << "\n";
   s << "`define DDA_VEC_IDX_WIDTH " << kIdxWidth << "\n";
+  s << "`define DDA_VEC_CMD_ADDR_BITS " << kCmdAddrBits << "  // the bench holds 2^this commands\n";
   s << "// The word the bench compares after the edge: `ready` is cmd_ready_o sampled before\n"
        "// it, step_x .. iter the wires on the core's outputs, dut.* its registers.\n";
   s << "`define DDA_VEC_GOT(ready) {";

@@ -4,6 +4,7 @@
 `define DDA_VEC_IN_WIDTH 19
 `define DDA_VEC_EXP_WIDTH 512
 `define DDA_VEC_IDX_WIDTH 16
+`define DDA_VEC_CMD_ADDR_BITS 12  // the bench holds 2^this commands
 // The word the bench compares after the edge: `ready` is cmd_ready_o sampled before
 // it, step_x .. iter the wires on the core's outputs, dut.* its registers.
 `define DDA_VEC_GOT(ready) {ready, step_x, step_y, dir_x, dir_y, busy, done, err, iter, dut.u_int_x.jv_q, dut.u_int_x.jr_q, dut.u_int_x.inc_on_x_q, dut.u_int_x.inc_on_y_q, dut.u_int_y.jv_q, dut.u_int_y.jr_q, dut.u_int_y.inc_on_x_q, dut.u_int_y.inc_on_y_q, dut.u_cnt_x.cnt_q, dut.u_cnt_y.cnt_q, dut.cap_q, dut.cdir_x_q, dut.cdir_y_q, dut.dir_x_q, dut.dir_y_q, dut.step_x_q, dut.step_y_q, dut.u_ctrl.state_q, dut.u_ctrl.done_q, dut.u_ctrl.err_q, dut.u_ctrl.iter_q}

@@ -11,7 +11,7 @@
 
 module dda_vec_tb;
 
-  localparam integer MaxCmds = 4096;
+  localparam integer MaxCmds = 1 << `DDA_VEC_CMD_ADDR_BITS;
 
   reg                          clk = 1'b0;
   reg                          rst_n = 1'b0;
@@ -70,7 +70,7 @@ module dda_vec_tb;
       cmd_valid = vin[`DDA_VEC_IDX_WIDTH];
       if ({16'd0, vin[`DDA_VEC_IDX_WIDTH-1:0]} >= ncmds) $fatal(1, "dda_vec_tb: cycle %0d offers command %0d of %0d", cyc,
                                                         vin[`DDA_VEC_IDX_WIDTH-1:0], ncmds);
-      cmd = cmds[vin[11:0]];  // MaxCmds = 2^12
+      cmd = cmds[vin[`DDA_VEC_CMD_ADDR_BITS-1:0]];
       #4;
       // Before the first reset edge the core's state, and so cmd_ready_o, is unknown:
       // cycles with rst_ni low expect 0 (docs/vectors.md).
