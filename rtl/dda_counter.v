@@ -2,6 +2,7 @@
 // the axis' carry on an iteration. active_o = cnt_q != 0 (an axis whose counter is 0
 // stops adding); last_o says the counter is 0 after this iteration.
 `include "dda_params.vh"
+`include "dda_assert.vh"
 
 module dda_counter #(
   parameter integer CntWidth = `DDA_CNT_WIDTH
@@ -40,5 +41,16 @@ module dda_counter #(
       cnt_q <= cnt_d;
     end
   end
+
+`ifndef SYNTHESIS
+  // Assertion (rtl/dda_assert.vh): a counter at 0 never decrements: it stays at 0
+  // until a load.
+  always @(posedge clk_i) begin
+    if (rst_ni) begin
+      `DDA_ASSERT(load_i || cnt_q != {CntWidth{1'b0}} || cnt_d == {CntWidth{1'b0}},
+                  "ASSERTION dda_counter: a decrement at 0")
+    end
+  end
+`endif
 
 endmodule

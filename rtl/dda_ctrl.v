@@ -10,6 +10,7 @@
 // command on that edge (load_o) and the state is run, so commands run back to back.
 // Run with ce_i low, and idle without a load: the pulses take 0 and nothing else changes.
 `include "dda_params.vh"
+`include "dda_assert.vh"
 
 module dda_ctrl (
   input  wire clk_i,
@@ -87,5 +88,17 @@ module dda_ctrl (
   assign done_o = done_q;
   assign err_o  = err_q;
   assign iter_o = iter_q;
+
+`ifndef SYNTHESIS
+  // Assertions (rtl/dda_assert.vh): in run with ce_i exactly one of finished, stalled
+  // and iterate; done and err never together.
+  always @(posedge clk_i) begin
+    if (rst_ni) begin
+      `DDA_ASSERT(!run_ce || ({2'b00, finished} + {2'b00, stalled} + {2'b00, iterate}) == 3'd1,
+                  "ASSERTION dda_ctrl: in run with ce_i not exactly one of finished, stalled, iterate")
+      `DDA_ASSERT(!(done_d && err_d), "ASSERTION dda_ctrl: done and err together")
+    end
+  end
+`endif
 
 endmodule

@@ -8,7 +8,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 "$root/scripts/build.sh" >/dev/null
 arcs=${1:-2000} seed=${2:-2026}
-table=$("$build/tb/accuracy_sweep" --arcs "$arcs" --seed "$seed")
+table=$("$build/bin/accuracy_sweep" --arcs "$arcs" --seed "$seed")
 echo "$table"
 doc="$root/docs/results.md"
 begin='<!-- BEGIN GENERATED: scripts/accuracy-sweep.sh -->'

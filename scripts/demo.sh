@@ -7,7 +7,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 "$root/scripts/build.sh" >/dev/null
-dda="$build/tb/dda"
+dda="$build/bin/dda"
 args=(--a 10 --b 6 --bits 4)
 out="$build/demo"
 mkdir -p "$out"

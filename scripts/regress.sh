@@ -11,7 +11,7 @@ build=${DDA_BUILD_DIR:-$root/build}
 "$root/scripts/build.sh" >/dev/null
 which=${1:-all}
 seed=${3:-1}
-run() { "$build/tb/$1" --arcs "$2" --seed "$seed"; }
+run() { "$build/bin/$1" --arcs "$2" --seed "$seed"; }
 case "$which" in
   systemc) run sc_regress "${2:-2000}" ;;
   rtl) run rtl_regress "${2:-100000}" ;;

@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
 # Runs the self-checking bench tb/vectors/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
-#   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] DIR
+#   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]
+#                                  [--sim icarus|verilator|both] DIR
 # --corrupt flips the lowest bit of FIELD in the expected word of CYCLE (in a copy of the
 # set) and then passes only if every simulator fails with exactly that MISMATCH.
+# --rtl runs a copy of the RTL (the sources of rtl/dda_core.f found in RTLDIR) and passes
+# only if every simulator fails with a line containing TEXT (an assertion's message).
+# The RTL's immediate assertions are on in both simulators (Verilator --assert).
 # Builds go to $DDA_BUILD_DIR/vec_bench (default build/vec_bench). Registered in ctest
 # (tests/rtl_checks.cmake, vectors.*).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 iverilog=${IVERILOG:-iverilog} vvp=${VVP:-vvp} verilator=${VERILATOR:-verilator}
-corrupt_cycle="" corrupt_field="" sims="icarus verilator"
+corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect=""
 while [ $# -gt 1 ]; do
   case "$1" in
     --corrupt) corrupt_cycle=$2 corrupt_field=$3; shift 3 ;;
+    --rtl) rtl_dir=$(cd "$2" && pwd); shift 2 ;;
+    --expect) expect=$2; shift 2 ;;
     --sim) sims=$2; [ "$sims" = both ] && sims="icarus verilator"; shift 2 ;;
     *) break ;;
   esac
@@ -21,11 +27,14 @@ done
 [ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] DIR" >&2; exit 2; }
 set_dir=$(cd "$1" && pwd)
 out="$build/vec_bench"
+[ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
 mkdir -p "$out"
-srcs=("$root/tb/vectors/dda_vec_tb.v" "$root"/rtl/dda_*.v)
-incs=(-I"$root/rtl" -I"$root/tb/vectors")
+mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$root/rtl/dda_core.f")
+srcs=("$root/tb/hdl/dda_vec_tb.v")
+for f in "${rtl_srcs[@]}"; do srcs+=("$rtl_dir/${f#"$root/rtl/"}"); done
+incs=(-I"$rtl_dir" -I"$root/rtl" -I"$root/tb/hdl")
 newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f" -nt "$t" ] && return 0; done; return 1; }
-deps=("${srcs[@]}" "$root/rtl/dda_params.vh" "$root/tb/vectors/dda_vec_fields.vh")
+deps=("${srcs[@]}" "$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh")
 
 if [ -n "$corrupt_cycle" ]; then
   work=$(mktemp -d -t dda-vec-corrupt.XXXXXX)
@@ -58,7 +67,7 @@ for sim in $sims; do
     verilator)
       bin="$out/obj/dda_vec_tb"
       if newer "$bin" "${deps[@]}"; then
-        "$verilator" --binary -Wall "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
+        "$verilator" --binary --assert -Wall "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
           "${srcs[@]}" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
       fi
       run=("$bin" +vectors="$set_dir") ;;
@@ -68,7 +77,14 @@ for sim in $sims; do
   log=$("${run[@]}" 2>&1)
   rc=$?
   set -e
-  if [ -z "$corrupt_cycle" ]; then
+  if [ -n "$expect" ]; then
+    if [ $rc -ne 0 ] && echo "$log" | grep -qF "$expect"; then
+      echo "$sim: failed as it must (exit $rc): $(echo "$log" | grep -F "$expect" | head -1)"
+    else
+      echo "$sim: did NOT fail with '$expect' (exit $rc):" >&2
+      echo "$log" | tail -5 >&2; status=1
+    fi
+  elif [ -z "$corrupt_cycle" ]; then
     if [ $rc -eq 0 ] && echo "$log" | grep -q "dda_vec_tb: PASS"; then
       echo "$sim: $(echo "$log" | grep "dda_vec_tb: PASS")"
     else

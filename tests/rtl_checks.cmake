@@ -1,5 +1,5 @@
-# RTL checks: Verilator lint, Yosys synthesis for iCE40, and the golden-driven Icarus
-# bench of dda_core. Included from tests/CMakeLists.txt: include(rtl_checks.cmake).
+# RTL checks: Verilator lint, Yosys synthesis for iCE40, and the vector-set bench
+# tb/hdl/dda_vec_tb.v on Icarus and Verilator. Included from tests/CMakeLists.txt: include(rtl_checks.cmake).
 # Each test runs a script of scripts/ that also works by hand (see its header).
 # The tools are required: scripts/setup.sh installs them, and a check that silently
 # did not run would hide a regression.
@@ -31,48 +31,30 @@ dda_rtl_test(rtl.lint NEEDS VERILATOR COMMAND ${_dda_scripts}/rtl-lint.sh)
 dda_rtl_test(rtl.yosys_synth NEEDS YOSYS
              COMMAND ${_dda_scripts}/synth-check.sh ${CMAKE_CURRENT_BINARY_DIR}/rtl_synth.log)
 
-# The paper's example (a = 10, b = 6, n = 4) against gen_core_vectors' golden records.
-set(_dda_bench ${_dda_scripts}/icarus-bench.sh --gen $<TARGET_FILE:gen_core_vectors>)
-set(_dda_bench_dir ${CMAKE_CURRENT_BINARY_DIR}/rtl_bench)
-dda_rtl_test(rtl.icarus_paper_example NEEDS IVERILOG VVP
-             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero
-                     --out ${_dda_bench_dir}/paper_zero ${PROJECT_BINARY_DIR})
-dda_rtl_test(rtl.icarus_paper_example_half NEEDS IVERILOG VVP
-             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload half
-                     --out ${_dda_bench_dir}/paper_half ${PROJECT_BINARY_DIR})
-# ce_i from an LFSR: edges with ce_i low must change nothing but clear the pulses.
-dda_rtl_test(rtl.icarus_paper_example_ce_random NEEDS IVERILOG VVP
-             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero --ce-random 1
-                     --out ${_dda_bench_dir}/paper_ce_random ${PROJECT_BINARY_DIR})
-# The same ellipse in the second quadrant: both directions 1 (-X, -Y), so cdir_y_q and
-# dir_y_q (0 until the first Y step) are checked with a value other than their reset 0.
-dda_rtl_test(rtl.icarus_second_quadrant NEEDS IVERILOG VVP
-             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero --from 0,6 --to -10,0
-                     --out ${_dda_bench_dir}/q2_zero ${PROJECT_BINARY_DIR})
-# One expected value corrupted (lowest bit of u_int_x.jr_q after iteration 5): passes only
-# if vvp exits non-zero with exactly that MISMATCH (not on a failure for another reason).
-dda_rtl_test(rtl.icarus_detects_corruption NEEDS IVERILOG VVP
-             COMMAND ${_dda_bench} --a 10 --b 6 --bits 4 --preload zero
-                     --corrupt-iter 5 --corrupt-field u_int_x.jr_q
-                     --out ${_dda_bench_dir}/paper_corrupt ${PROJECT_BINARY_DIR})
-
-# Vector sets of `dda vectors` (golden model) through tb/vectors/dda_vec_tb.v on Icarus
-# and on Verilator --binary: the paper's example, the lathe paper's oblique ellipse with
-# ce_i high 80% of the cycles, three arcs back to back (an axis-aligned quarter, a rotated
-# arc, a whole ellipse with half preload), and a corrupted expected value that both
-# simulators must report.
+# Vector sets of `dda vectors` (golden model) through tb/hdl/dda_vec_tb.v on Icarus and
+# on Verilator --binary: the paper's example with both preloads, with ce_i low 40% of
+# the cycles and in the second quadrant (both directions negative, so cdir_*_q and
+# dir_*_q take values other than their reset 0); the lathe paper's oblique ellipse with
+# ce_i high 80% of the cycles; three arcs back to back (an axis-aligned quarter, a
+# rotated arc, a whole ellipse with half preload); and a corrupted expected value that
+# both simulators must report. While cmd_valid_i is low the bench scrambles cmd_i.
 set(_dda_vec ${CMAKE_CURRENT_BINARY_DIR}/vec_sets)
+file(MAKE_DIRECTORY ${_dda_vec})
 set(_dda_lathe --a 25000 --b 15000 --angle 330 --center -30000,5000 --from-theta 60 --to-theta 136 --dir ccw)
 function(dda_vec_set name)
-  add_test(NAME vectors.gen_${name} COMMAND $<TARGET_FILE:dda> vectors --out-dir ${_dda_vec}/${name} ${ARGN})
+  add_test(NAME vectors.gen_${name} COMMAND $<TARGET_FILE:dda> vectors --out-dir ${name} ${ARGN}
+           WORKING_DIRECTORY ${_dda_vec})
   set_tests_properties(vectors.gen_${name} PROPERTIES FIXTURES_SETUP vec_${name} LABELS rtl)
 endfunction()
-dda_vec_set(paper --a 10 --b 6 --bits 4)
-dda_vec_set(lathe ${_dda_lathe} --ce-percent 80 --seed 3)
-dda_vec_set(back_to_back --a 10 --b 6 --bits 4 --ce-percent 90 --seed 7
+dda_vec_set(paper --a 10 --b 6 --bits 4 --preload zero)
+dda_vec_set(paper_half --a 10 --b 6 --bits 4 --preload half)
+dda_vec_set(paper_ce --a 10 --b 6 --bits 4 --preload zero --ce-percent 60 --seed 11)
+dda_vec_set(second_quadrant --a 10 --b 6 --bits 4 --preload zero --from 0,6 --to -10,0)
+dda_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
+dda_vec_set(back_to_back --a 10 --b 6 --bits 4 --preload zero --ce-percent 90 --seed 7
             --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
             --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
-foreach(_set paper lathe back_to_back)
+foreach(_set paper paper_half paper_ce second_quadrant lathe back_to_back)
   dda_rtl_test(vectors.${_set} NEEDS IVERILOG VVP VERILATOR
                COMMAND ${_dda_scripts}/vector-bench.sh ${_dda_vec}/${_set})
   set_tests_properties(vectors.${_set} PROPERTIES FIXTURES_REQUIRED vec_${_set}
@@ -84,4 +66,16 @@ set_tests_properties(vectors.detects_corruption PROPERTIES FIXTURES_REQUIRED vec
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build)
 # The bench's field table is generated from hw_params.hpp: the checked-in copy must match.
 add_test(NAME vectors.fields_in_sync
-         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/vectors/dda_vec_fields.vh")
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_vec_fields.vh")
+# The paper's and the lathe example's vector sets, written to the same directory names,
+# are byte-identical to the sets main wrote before the restructuring of issue 10.
+add_test(NAME baseline.vector_sets COMMAND sha256sum --quiet -c ${CMAKE_CURRENT_SOURCE_DIR}/data/vector-sets-sha256.txt
+         WORKING_DIRECTORY ${_dda_vec})
+set_tests_properties(baseline.vector_sets PROPERTIES FIXTURES_REQUIRED "vec_paper;vec_lathe" LABELS baseline)
+
+# An assertion written beside the logic fires on a mutated RTL copy, under Verilator
+# (--assert) and Icarus, on the paper's vector set (tb/hdl/dda_vec_tb.v).
+dda_rtl_test(rtl.assertions_fire NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/assert-mutants.sh ${_dda_vec}/paper)
+set_tests_properties(rtl.assertions_fire PROPERTIES FIXTURES_REQUIRED vec_paper
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})

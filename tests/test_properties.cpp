@@ -27,7 +27,7 @@ std::string check_run(const Plan& plan) {
     const RunSummary s = run(plan, [&](const Iteration& it) {
       if (!err.str().empty()) return;
       const auto& r = it.after;
-      const std::int64_t cap = plan.segs[it.seg].cmd.cap;
+      const std::int64_t cap = plan.pieces[it.piece].cmd.cap;
       if (r.jr_x < 0 || r.jr_x >= cap || r.jr_y < 0 || r.jr_y >= cap) {
         err << "iteration " << it.iter << ": accumulator outside [0, cap) after overflow removal";
       }
@@ -87,7 +87,7 @@ TEST_CASE("properties: 3,000 random whole-ellipse arcs hold every invariant", "[
     rotated_dev += drawn->rotated && dev;
     const std::string err = check_run(*drawn);
     if (!err.empty()) FAIL("seed " << seed << ", case " << checked << ": " << describe(*drawn) << ": " << err);
-    multi += drawn->segs.size() > 1;
+    multi += drawn->pieces.size() > 1;
     full += drawn->full;
     ++checked;
   }
@@ -112,7 +112,7 @@ TEST_CASE("properties: a wrong variant (integrands not corrected) breaks them", 
     if (!drawn || drawn->cmd().cnt_x < 16 || drawn->cmd().cnt_y < 16) continue;
     Plan plan = *drawn;
     REQUIRE(check_run(plan).empty());
-    for (auto& sg : plan.segs) sg.cmd.inc_y_on_x = 0;
+    for (auto& sg : plan.pieces) sg.cmd.inc_y_on_x = 0;
     ++tried;
     broken += !check_run(plan).empty();
   }
@@ -124,8 +124,8 @@ TEST_CASE("properties: a wrong variant (integrands not corrected) breaks them", 
   s.b = 6;
   s.bits = 4;
   Plan paper = plan_arc(s);
-  paper.segs[0].cmd.inc_y_on_x = 0;
-  paper.segs[0].cmd.inc_x_on_y = 0;
+  paper.pieces[0].cmd.inc_y_on_x = 0;
+  paper.pieces[0].cmd.inc_x_on_y = 0;
   CHECK_FALSE(check_run(paper).empty());
 }
 

@@ -91,7 +91,7 @@ TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rota
   CHECK(p.coef.p == -495940105);  // -sqrt(3) 2^30 / 3.75 = -495940104.90
   CHECK(p.coef.qx == 1503238554);  // 1.4 * 2^30 = 1503238553.6
   CHECK(p.coef.qy == 930576247);  // 13/15 * 2^30 = 930576247.47
-  CHECK(p.segs.front().cmd.cap == (std::int64_t{1} << kRotCapBits));
+  CHECK(p.pieces.front().cmd.cap == (std::int64_t{1} << kRotCapBits));
 }
 
 TEST_CASE("rotated: the lathe example ends on its end point within a step of the curve", "[golden][rotated]") {
@@ -113,7 +113,7 @@ TEST_CASE("rotated: the lathe example ends on its end point within a step of the
     const long double tx = p.to.x - p.spec.center.x, ty = p.to.y - p.spec.center.y;
     CHECK(std::fabs(std::atan2(ty, tx) - std::atan2(ey, ex)) < 1.5L / std::hypot(tx, ty));
     CHECK(worst <= (pre == Preload::Half ? 1.0 : 2.0));
-    CHECK(p.segs.size() >= 2);  // the arc passes the turn where X (the Z axis) reverses
+    CHECK(p.pieces.size() >= 2);  // the arc passes the turn where X (the Z axis) reverses
   }
 }
 
@@ -124,7 +124,7 @@ TEST_CASE("rotated: half preload starts on the ideal curve point", "[golden][rot
   CHECK(((p.from.y - p.spec.center.y) << kPosFrac) + p.frac_y == f.y);
   CHECK(start_offset(p) < 1e-6);
   CHECK(std::llabs(p.frac_x) <= (std::int64_t{1} << (kPosFrac - 1)));
-  const Command& c = p.segs.front().cmd;
+  const Command& c = p.pieces.front().cmd;
   CHECK(c.jr_x != c.cap / 2);  // the fraction is in the preload
 }
 
@@ -136,7 +136,7 @@ TEST_CASE("rotated: quarter-turn angles keep the exact integer datapath", "[gold
   s.angle = 360 * kMicroDeg;  // a full turn is no turn
   const Plan p = plan_arc(s);
   CHECK_FALSE(p.rotated);
-  CHECK(p.segs.front().cmd.cap == (std::int64_t{10 * 6} << 4));
+  CHECK(p.pieces.front().cmd.cap == (std::int64_t{10 * 6} << 4));
   s.angle = 90 * kMicroDeg + 1;  // one micro-degree off: fixed point
   CHECK(plan_arc(s).rotated);
 }

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 
-#include "dda/golden.hpp"
+#include "dda/errors.hpp"
 
 namespace dda {
 

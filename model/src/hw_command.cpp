@@ -6,58 +6,47 @@
 
 namespace dda::hw {
 
-// The golden model's capacity for rotated ellipses must be a value the hardware's
-// capacity register holds below 2^(AccWidth-1) (every integrand up to it positive).
-static_assert(kRotCapBits < kAccWidth - 1, "kRotCapBits (golden.hpp) no longer fits AccWidth (hw_params.hpp)");
-
 namespace {
 
 // A field of `width` bits whose value must be below 2^value_bits (value_bits <= width).
-std::uint64_t unsigned_field(const char* name, std::int64_t v, int width, int value_bits) {
+void unsigned_field(const char* name, std::int64_t v, int width, int value_bits) {
   const std::uint64_t max = (std::uint64_t{1} << value_bits) - 1;
   if (v < 0 || static_cast<std::uint64_t>(v) > max) {
     throw InputError(std::string(name) + " = " + std::to_string(v) + " does not fit the hardware's " +
                      std::to_string(width) + "-bit field: it must be in [0, 2^" + std::to_string(value_bits) +
                      ") (hw_params.hpp)");
   }
-  return static_cast<std::uint64_t>(v);
 }
 
-std::uint64_t signed_field(const char* name, std::int64_t v, int width) {
+void signed_field(const char* name, std::int64_t v, int width) {
   const std::int64_t lim = std::int64_t{1} << (width - 1);
   if (v < -lim || v >= lim) {
     throw InputError(std::string(name) + " = " + std::to_string(v) + " does not fit the hardware's " +
                      std::to_string(width) + "-bit two's complement field (hw_params.hpp)");
   }
-  return static_cast<std::uint64_t>(v) & ((std::uint64_t{1} << width) - 1);
 }
 
 }  // namespace
 
-std::array<std::uint64_t, kCmdFields.size()> command_fields(const Command& c) {
+CmdFields command_fields(const Command& c) {
   // The capacity first: when it is out of range, it is the cause of the rest.
   unsigned_field("cap", c.cap, kAccWidth, kAccWidth - 1);
   // cap and jr are below 2^(AccWidth-1) so that every integrand up to cap is positive
   // in the AccWidth-bit two's complement integrand registers.
-  return {
-      signed_field("jv_x", c.jv_x, kAccWidth),
-      signed_field("jv_y", c.jv_y, kAccWidth),
-      unsigned_field("jr_x", c.jr_x, kAccWidth, kAccWidth - 1),
-      unsigned_field("jr_y", c.jr_y, kAccWidth, kAccWidth - 1),
-      unsigned_field("cap", c.cap, kAccWidth, kAccWidth - 1),
-      unsigned_field("cnt_x", c.cnt_x, kCntWidth, kCntWidth),
-      unsigned_field("cnt_y", c.cnt_y, kCntWidth, kCntWidth),
-      c.dir_x_neg ? kDirNeg : kDirPos,
-      c.dir_y_neg ? kDirNeg : kDirPos,
-      signed_field("inc_x_on_x", c.inc_x_on_x, kAccWidth),
-      signed_field("inc_x_on_y", c.inc_x_on_y, kAccWidth),
-      signed_field("inc_y_on_x", c.inc_y_on_x, kAccWidth),
-      signed_field("inc_y_on_y", c.inc_y_on_y, kAccWidth),
-  };
+  signed_field("jv_x", c.jv_x, kAccWidth);
+  signed_field("jv_y", c.jv_y, kAccWidth);
+  unsigned_field("jr_x", c.jr_x, kAccWidth, kAccWidth - 1);
+  unsigned_field("jr_y", c.jr_y, kAccWidth, kAccWidth - 1);
+  unsigned_field("cnt_x", c.cnt_x, kCntWidth, kCntWidth);
+  unsigned_field("cnt_y", c.cnt_y, kCntWidth, kCntWidth);
+  signed_field("inc_x_on_x", c.inc_x_on_x, kAccWidth);
+  signed_field("inc_x_on_y", c.inc_x_on_y, kAccWidth);
+  signed_field("inc_y_on_x", c.inc_y_on_x, kAccWidth);
+  signed_field("inc_y_on_y", c.inc_y_on_y, kAccWidth);
+  return command_fields_unchecked(c);
 }
 
-std::vector<std::uint32_t> pack_command(const Command& c) {
-  const auto v = command_fields(c);
+std::vector<std::uint32_t> pack_fields(const CmdFields& v) {
   std::vector<std::uint32_t> w((kCmdWidth + 31) / 32, 0);
   int bit = 0;
   for (std::size_t i = 0; i < kCmdFields.size(); ++i) {
@@ -67,6 +56,8 @@ std::vector<std::uint32_t> pack_command(const Command& c) {
   }
   return w;
 }
+
+std::vector<std::uint32_t> pack_command(const Command& c) { return pack_fields(command_fields(c)); }
 
 std::int64_t max_semi_axis(int extra_bits) {
   // Largest m such that a = b = m (the worst case) fits: cap = 2^n * m^2 < 2^(AccWidth-1)

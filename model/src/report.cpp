@@ -4,6 +4,7 @@
 #include <fmt/ostream.h>
 
 #include <cstdlib>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 namespace dda {
@@ -25,7 +26,7 @@ namespace {
 
 struct Row {
   std::uint64_t iter;
-  std::uint32_t seg;
+  std::uint32_t piece;
   std::int64_t jvx, jrx, jvy, jry;
   bool ax, ay;  // axis active (accumulator added) in this row
   bool dx, dy;
@@ -41,7 +42,7 @@ std::vector<Row> rows(const Plan& plan, const RegState& init, const std::vector<
   v.push_back({0, 0, init.jv_x, init.jr_x, init.jv_y, init.jr_y, init.cnt_x != 0, init.cnt_y != 0,
                false, false, init.cnt_x, init.cnt_y, c.dir_x_neg, c.dir_y_neg, plan.from});
   for (const auto& it : iters) {
-    v.push_back({it.iter, it.seg, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
+    v.push_back({it.iter, it.piece, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
                  it.step_x, it.step_y, it.after.cnt_x, it.after.cnt_y, it.dir_x_neg, it.dir_y_neg,
                  it.pos});
   }
@@ -57,7 +58,7 @@ const char* sign(bool neg) { return neg ? "-" : "+"; }
 }  // namespace
 
 bool paper_columns(const Plan& plan) {
-  return plan.segs.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
+  return plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
          !plan.cmd().dir_y_neg;
 }
 
@@ -79,7 +80,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
                    acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s),
                    acc_cell(r.ay, r.jry, s), r.dy, r.remy);
       } else {
-        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.seg,
+        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.piece,
                    paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), r.dx, r.remx,
                    paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy, r.remy, sign(r.negx),
                    sign(r.negy), r.pos.x, r.pos.y);
@@ -106,7 +107,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
       if (paper) {
         os << '\n';
       } else {
-        fmt::print(os, " {:>3} | {}{}   | {:>6} | {:>6} |\n", r.seg, sign(r.negx), sign(r.negy),
+        fmt::print(os, " {:>3} | {}{}   | {:>6} | {:>6} |\n", r.piece, sign(r.negx), sign(r.negy),
                    r.pos.x, r.pos.y);
       }
     }
@@ -125,8 +126,8 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
   j["scale"] = s;
   j["cap"] = plan.cmd().cap;
   j["iteration_bound"] = plan.iteration_bound;
-  auto& segs = j["segments"] = nlohmann::ordered_json::array();
-  for (const auto& sg : plan.segs) {
+  auto& pieces = j["segments"] = nlohmann::ordered_json::array();
+  for (const auto& sg : plan.pieces) {
     const Command& c = sg.cmd;
     nlohmann::ordered_json g;
     g["from"] = {sg.from.x, sg.from.y};
@@ -146,7 +147,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
     g["inc_y_on_x"] = c.inc_y_on_x;
     g["inc_y_on_y"] = c.inc_y_on_y;
     g["iteration_bound"] = sg.iteration_bound;
-    segs.push_back(std::move(g));
+    pieces.push_back(std::move(g));
   }
   nlohmann::ordered_json in;
   in["jv_x"] = initial.jv_x;
@@ -160,7 +161,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
   for (const auto& it : iters) {
     nlohmann::ordered_json r;
     r["iter"] = it.iter;
-    r["seg"] = it.seg;
+    r["seg"] = it.piece;
     r["active_x"] = it.active_x;
     r["active_y"] = it.active_y;
     r["jv_x"] = it.jv_x;
@@ -236,7 +237,7 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
                s.max_dev_at.y, s.mean_dev);
     fmt::print(os, "bits: {}\npreload: {}\n", plan.spec.bits, to_string(plan.spec.preload));
     fmt::print(os, "from: ({},{})\nto: ({},{})\npieces: {}\n", plan.from.x, plan.from.y, plan.to.x, plan.to.y,
-               plan.segs.size());
+               plan.pieces.size());
     return;
   }
   nlohmann::ordered_json j;
@@ -252,8 +253,28 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
   j["preload"] = to_string(plan.spec.preload);
   j["from"] = {plan.from.x, plan.from.y};
   j["to"] = {plan.to.x, plan.to.y};
-  j["pieces"] = plan.segs.size();
+  j["pieces"] = plan.pieces.size();
   os << j.dump(1) << '\n';
+}
+
+std::string describe(const Plan& plan) {
+  std::ostringstream s;
+  s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits
+    << " --preload " << to_string(plan.spec.preload);
+  if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;
+  if (plan.spec.angle != 0) s << " --angle " << format_degrees(plan.spec.angle);
+  if (plan.spec.dir != Direction::Ccw) s << " --dir cw";
+  if (plan.spec.from_theta) {
+    s << " --from-theta " << format_degrees(*plan.spec.from_theta);
+  } else {
+    s << " --from " << plan.from.x << ',' << plan.from.y;
+  }
+  if (plan.spec.to_theta) {
+    s << " --to-theta " << format_degrees(*plan.spec.to_theta);
+  } else {
+    s << " --to " << plan.to.x << ',' << plan.to.y;
+  }
+  return s.str();
 }
 
 }  // namespace dda

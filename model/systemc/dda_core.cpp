@@ -1,4 +1,4 @@
-#include "dda_core.h"
+#include "dda_core.hpp"
 
 namespace dda::sc {
 

@@ -1,4 +1,4 @@
-#include "dda_counter.h"
+#include "dda_counter.hpp"
 
 namespace dda::sc {
 

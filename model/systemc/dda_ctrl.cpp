@@ -1,4 +1,4 @@
-#include "dda_ctrl.h"
+#include "dda_ctrl.hpp"
 
 namespace dda::sc {
 

@@ -1,4 +1,4 @@
-#include "dda_integrator.h"
+#include "dda_integrator.hpp"
 
 namespace dda::sc {
 

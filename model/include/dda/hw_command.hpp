@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dda/golden.hpp"
+#include "dda/core_model.hpp"
 #include "dda/hw_params.hpp"
 
 namespace dda::hw {
@@ -13,7 +13,10 @@ namespace dda::hw {
 // Field values in kCmdFields order, each masked to its width (increments in two's
 // complement). Throws InputError naming the field if a value does not fit the
 // hardware's widths (the golden model itself has wider, 64-bit, limits).
-std::array<std::uint64_t, kCmdFields.size()> command_fields(const Command& c);
+CmdFields command_fields(const Command& c);
+
+// Fields as 32-bit words, least significant first (Verilator's layout of cmd_i).
+std::vector<std::uint32_t> pack_fields(const CmdFields& v);
 
 // The command word as 32-bit words, least significant first (Verilator's layout).
 std::vector<std::uint32_t> pack_command(const Command& c);

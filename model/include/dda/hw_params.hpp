@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dda::hw {
 
@@ -71,39 +72,130 @@ constexpr int cmd_offset(std::string_view name) {
 }
 inline constexpr int kCmdWidth = cmd_width();
 
-// Architectural registers: the state the scoreboards compare after every iteration
-// (hierarchical names as in the RTL and the SystemC model).
+// The register table: every architectural register of the core (the state the
+// scoreboards compare after every clock edge) and the combinational probes the
+// harnesses sample, by their hierarchical names in the RTL and the SystemC model.
+// Every consumer is generated from it or resolves its names at run time: the SystemC
+// and Verilator samplers, the scoreboards, the vector writer, the GTKWave save files and
+// the Verilog bench's field layout (docs/design.md, "Where to change what"). Adding a
+// register is an edit here, in the RTL module and the SystemC module that hold it and
+// in the reference model's next-state code (model/src/core_model.cpp); the test
+// "registers: every consumer follows the table" fails while any of them lacks it.
+enum class SigKind { Reg, Probe };  // a flip-flop, or a combinational net
 struct Reg {
-  std::string_view name;
+  std::string_view name;      // hierarchical name below dda_core
   int width;
   std::string_view meaning;
+  std::string_view group = "";  // GTKWave group of the save files ("": not shown)
+  bool show_signed = false;     // GTKWave shows it as signed decimal
+  SigKind kind = SigKind::Reg;
 };
-inline constexpr std::array<Reg, 21> kRegisters{{
-    {"u_int_x.jv_q", kAccWidth, "X integrand (negative: the axis holds)"},
-    {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)"},
+inline constexpr std::array<Reg, 23> kSignals{{
+    {"u_int_x.jv_q", kAccWidth, "X integrand (negative: the axis holds)", "Integrator X"},
+    {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)", "Integrator X"},
     {"u_int_x.inc_on_x_q", kAccWidth, "added to the X integrand after an X step"},
-    {"u_int_x.inc_on_y_q", kAccWidth, "added to the X integrand after a Y step"},
-    {"u_int_y.jv_q", kAccWidth, "Y integrand (negative: the axis holds)"},
-    {"u_int_y.jr_q", kAccWidth, "Y accumulator (after overflow removal)"},
-    {"u_int_y.inc_on_x_q", kAccWidth, "added to the Y integrand after an X step"},
+    {"u_int_x.inc_on_y_q", kAccWidth, "added to the X integrand after a Y step", "Integrator X", true},
+    {"u_int_y.jv_q", kAccWidth, "Y integrand (negative: the axis holds)", "Integrator Y"},
+    {"u_int_y.jr_q", kAccWidth, "Y accumulator (after overflow removal)", "Integrator Y"},
+    {"u_int_y.inc_on_x_q", kAccWidth, "added to the Y integrand after an X step", "Integrator Y", true},
     {"u_int_y.inc_on_y_q", kAccWidth, "added to the Y integrand after a Y step"},
-    {"u_cnt_x.cnt_q", kCntWidth, "X steps still owed"},
-    {"u_cnt_y.cnt_q", kCntWidth, "Y steps still owed"},
-    {"cap_q", kAccWidth, "accumulator capacity"},
-    {"cdir_x_q", 1, "X step direction of the running command"},
-    {"cdir_y_q", 1, "Y step direction of the running command"},
+    {"u_cnt_x.cnt_q", kCntWidth, "X steps still owed", "Counters"},
+    {"u_cnt_y.cnt_q", kCntWidth, "Y steps still owed", "Counters"},
+    {"cap_q", kAccWidth, "accumulator capacity", "Integrators"},
+    {"cdir_x_q", 1, "X step direction of the running command", "Control"},
+    {"cdir_y_q", 1, "Y step direction of the running command", "Control"},
     {"dir_x_q", 1, "direction of the last X step (drives dir_x_o)"},
     {"dir_y_q", 1, "direction of the last Y step (drives dir_y_o)"},
     {"step_x_q", 1, "X step pulse (drives step_x_o)"},
     {"step_y_q", 1, "Y step pulse (drives step_y_o)"},
-    {"u_ctrl.state_q", kStateWidth, "control state: 0 idle, 1 run"},
+    {"u_ctrl.state_q", kStateWidth, "control state: 0 idle, 1 run", "Control"},
     {"u_ctrl.done_q", 1, "arc finished (drives done_o, one cycle)"},
     {"u_ctrl.err_q", 1, "arc aborted on a stall (drives err_o, one cycle)"},
     {"u_ctrl.iter_q", 1, "an iteration happened on the last edge (drives iter_o)"},
+    {"u_int_x.sum", kAccWidth + 1, "X adder output jr_q + jv_q", "Integrator X", false, SigKind::Probe},
+    {"u_int_y.sum", kAccWidth + 1, "Y adder output jr_q + jv_q", "Integrator Y", false, SigKind::Probe},
 }};
+inline constexpr std::size_t kNumSignals = kSignals.size();
+
+// Index of a signal in kSignals; a name not in the table does not compile where the
+// index is a constant expression (core_model.cpp).
+constexpr std::size_t sig(std::string_view name) {
+  for (std::size_t i = 0; i < kSignals.size(); ++i) {
+    if (kSignals[i].name == name) return i;
+  }
+  throw "hw::sig: no such signal in kSignals";
+}
+constexpr std::size_t count_regs() {
+  std::size_t n = 0;
+  for (const auto& r : kSignals) n += r.kind == SigKind::Reg;
+  return n;
+}
+// The architectural registers come first in the table.
+inline constexpr std::size_t kNumRegisters = count_regs();
+constexpr bool regs_first() {
+  for (std::size_t i = 0; i < kSignals.size(); ++i) {
+    if ((kSignals[i].kind == SigKind::Reg) != (i < kNumRegisters)) return false;
+  }
+  return true;
+}
+static_assert(regs_first(), "kSignals: registers first, probes after them");
+
+// The core's ports (rtl/dda_core.v), in the order of the vector sets' expected words
+// for the outputs; `group` as for registers (clk_i and cmd_i are not in the vectors).
+enum class PortDir { In, Out };
+struct Port {
+  std::string_view name;
+  int width;
+  PortDir dir;
+  std::string_view meaning;
+  std::string_view group = "";
+};
+inline constexpr std::array<Port, 14> kPorts{{
+    {"clk_i", 1, PortDir::In, "clock, rising edge", "Command"},
+    {"rst_ni", 1, PortDir::In, "reset, synchronous, active low", "Command"},
+    {"cmd_valid_i", 1, PortDir::In, "a command is offered", "Command"},
+    {"cmd_ready_o", 1, PortDir::Out, "ready during the cycle, before the edge (combinational)", "Command"},
+    {"ce_i", 1, PortDir::In, "iteration enable", "Command"},
+    {"cmd_i", kCmdWidth, PortDir::In, "the command word (kCmdFields)"},
+    {"step_x_o", 1, PortDir::Out, "X step pulse after the edge", "Outputs"},
+    {"step_y_o", 1, PortDir::Out, "Y step pulse after the edge", "Outputs"},
+    {"dir_x_o", 1, PortDir::Out, "X direction after the edge (0 = +X)", "Outputs"},
+    {"dir_y_o", 1, PortDir::Out, "Y direction after the edge (0 = +Y)", "Outputs"},
+    {"busy_o", 1, PortDir::Out, "running a command, after the edge", "Control"},
+    {"done_o", 1, PortDir::Out, "a command finished on the edge", "Control"},
+    {"err_o", 1, PortDir::Out, "a command stalled on the edge", "Control"},
+    {"iter_o", 1, PortDir::Out, "an iteration happened on the edge", "Control"},
+}};
+constexpr std::size_t port(std::string_view name) {
+  for (std::size_t i = 0; i < kPorts.size(); ++i) {
+    if (kPorts[i].name == name) return i;
+  }
+  throw "hw::port: no such port in kPorts";
+}
+constexpr std::size_t count_outputs() {
+  std::size_t n = 0;
+  for (const auto& p : kPorts) n += p.dir == PortDir::Out;
+  return n;
+}
+inline constexpr std::size_t kNumOutputs = count_outputs();
+
+// Index of a command field in kCmdFields.
+constexpr std::size_t field(std::string_view name) {
+  for (std::size_t i = 0; i < kCmdFields.size(); ++i) {
+    if (kCmdFields[i].name == name) return i;
+  }
+  throw "hw::field: no such field in kCmdFields";
+}
+
+// A copy of the register table that the consumers' checks take (the drift test hands
+// them a changed copy).
+using SignalTable = std::vector<Reg>;
+inline SignalTable signal_table() { return SignalTable(kSignals.begin(), kSignals.end()); }
 
 // Text generated from the definitions above (model/src/hw_params.cpp).
 std::string verilog_header();   // rtl/dda_params.vh
-std::string markdown_tables();  // the tables in docs/design.md
+std::string markdown_tables(const SignalTable& t = signal_table());  // docs/design.md
+// GTKWave save file for a waveform whose core is at `top` (e.g. "SystemC.dut").
+std::string gtkw(const SignalTable& t, std::string_view file, std::string_view top);
 
 }  // namespace dda::hw

@@ -45,6 +45,9 @@ Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters);
 enum class StatsFormat { Text, Json };
 void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat fmt);
 
+// Reproducer for a plan: the `dda` options that rebuild it.
+std::string describe(const Plan& plan);
+
 // An SVG picture of the path over its ideal ellipse: point markers coloured by their
 // distance from the curve, a colour legend, axes in steps, and the largest deviation
 // ringed and labelled "max D @ (x,y)" (dda plot).

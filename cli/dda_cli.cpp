@@ -1,0 +1,403 @@
+// The `dda` command: trace, path and stats of an ellipse arc on any engine.
+//
+// Exit status: 0 success; 1 run-time failure (I/O error, guard tripped, cross-check
+// mismatch); 2 bad usage or bad input. Every error is one line on stderr. Output goes
+// to stdout, or with --out to a file written atomically (temporary file, then rename).
+#include "dda_cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "dda/golden.hpp"
+#include "dda/hw_command.hpp"
+#include "dda/hw_params.hpp"
+#include "dda/report.hpp"
+#include "engines.hpp"
+#include "vectors.hpp"
+
+namespace dda::cli {
+
+namespace {
+
+std::int64_t parse_int(const std::string& name, const std::string& s, const char* rule) {
+  std::int64_t v = 0;
+  const char* b = s.data();
+  const char* e = s.data() + s.size();
+  auto [p, ec] = std::from_chars(b, e, v);
+  if (s.empty() || ec != std::errc() || p != e) {
+    throw InputError(name + " = '" + s + "' is invalid: " + rule);
+  }
+  return v;
+}
+
+Point parse_point(const std::string& name, const std::string& s) {
+  const char* rule = "a point is two integers X,Y";
+  const auto comma = s.find(',');
+  if (comma == std::string::npos) throw InputError(name + " = '" + s + "' is invalid: " + rule);
+  try {
+    return Point{parse_int(name, s.substr(0, comma), rule), parse_int(name, s.substr(comma + 1), rule)};
+  } catch (const InputError&) {
+    throw InputError(name + " = '" + s + "' is invalid: " + rule);
+  }
+}
+
+struct ArcOptions {
+  std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw",
+                          angle, engine = "golden", out, format, vcd;
+};
+
+void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
+                     const std::string& default_format) {
+  o.format = default_format;
+  sub->add_option("--a", o.a, "semi-axis a (positive integer, steps)")->required();
+  sub->add_option("--b", o.b, "semi-axis b (positive integer, steps)")->required();
+  sub->add_option("--bits", o.bits,
+                  "accumulator width n: capacity 2^n, needs 2^n >= max(a,b) "
+                  "(default: smallest valid + 4)");
+  sub->add_option("--preload", o.preload, "accumulator preload: zero (the paper, default) or half");
+  sub->add_option("--center", o.center, "centre lattice point X,Y (default 0,0)");
+  sub->add_option("--angle", o.angle,
+                  "turn the ellipse counter-clockwise by DEG degrees about its centre, so the "
+                  "semi-axis a points in direction DEG (decimal, up to 6 decimals; multiples of 90 use "
+                  "the exact integer datapath, other angles fixed-point coefficients)");
+  sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
+  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + (semi-axis along X, 0); turned by a "
+                  "non-multiple of 90 degrees: parametric angle 0)");
+  sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on, parametric angle 90 when turned); "
+                  "equal to --from: a full ellipse");
+  sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG: half preload starts on the ideal curve point (nearest "
+                  "lattice point, the rest in the preloads), zero preload at the lattice point just "
+                  "outside it (docs/golden-model.md)");
+  sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG, rounded to the lattice as --from-theta; equal to "
+                  "--from-theta: a full ellipse");
+  sub->add_option("--engine", o.engine, "engine: " + engine_names());
+  sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
+  sub->add_option("--out", o.out, "write to FILE (atomically) instead of stdout");
+  sub->add_option("--vcd", o.vcd, "write a waveform of the run to FILE (systemc, rtl engines)");
+}
+
+Plan make_plan(const ArcOptions& o) {
+  ArcSpec s;
+  const char* pos = "a semi-axis must be a positive integer";
+  s.a = parse_int("a", o.a, pos);
+  s.b = parse_int("b", o.b, pos);
+  if (!o.bits.empty()) {
+    const std::int64_t bits = parse_int("bits", o.bits, "n must be an integer with 2^n >= max(a, b)");
+    if (bits < 1 || bits > 61) {
+      throw InputError("bits = " + o.bits + " is invalid: n must be between 1 and 61 and 2^n >= max(a, b)");
+    }
+    s.bits = static_cast<int>(bits);
+  }
+  if (o.preload == "zero") {
+    s.preload = Preload::Zero;
+  } else if (o.preload == "half") {
+    s.preload = Preload::Half;
+  } else {
+    throw InputError("preload = '" + o.preload + "' is invalid: use zero or half");
+  }
+  if (o.dir == "ccw") {
+    s.dir = Direction::Ccw;
+  } else if (o.dir == "cw") {
+    s.dir = Direction::Cw;
+  } else {
+    throw InputError("dir = '" + o.dir + "' is invalid: use ccw or cw");
+  }
+  if (!o.center.empty()) s.center = parse_point("center", o.center);
+  if (!o.angle.empty()) s.angle = parse_degrees("angle", o.angle);
+  if (!o.from.empty() && !o.from_theta.empty()) {
+    throw InputError("from and from-theta are both given: choose one");
+  }
+  if (!o.to.empty() && !o.to_theta.empty()) throw InputError("to and to-theta are both given: choose one");
+  if (!o.from.empty()) s.from = parse_point("from", o.from);
+  if (!o.from_theta.empty()) s.from_theta = parse_degrees("from-theta", o.from_theta);
+  if (!o.to.empty()) s.to = parse_point("to", o.to);
+  if (!o.to_theta.empty()) s.to_theta = parse_degrees("to-theta", o.to_theta);
+  return plan_arc(s);
+}
+
+template <typename E>
+E parse_enum(const std::string& name, const std::string& v, const std::map<std::string, E>& m) {
+  const auto it = m.find(v);
+  if (it != m.end()) return it->second;
+  std::string allowed;
+  for (const auto& [k, _] : m) allowed += (allowed.empty() ? "" : ", ") + k;
+  throw InputError(name + " = '" + v + "' is invalid: use one of " + allowed);
+}
+
+// A file written atomically: a temporary file beside it, renamed over it only once all
+// went well, and removed on any failure. A path naming an existing non-regular file (a
+// device such as /dev/null or /dev/stdout, a FIFO) is written directly instead, and a
+// symbolic link is followed, so neither is ever replaced by a regular file.
+class AtomicFile {
+ public:
+  AtomicFile() = default;
+  explicit AtomicFile(const std::string& path) : path_(path) {
+    if (path_.empty()) return;
+    std::error_code ec;
+    const auto st = std::filesystem::status(path_, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+      if (std::filesystem::is_directory(st)) throw GuardError("cannot write '" + path_ + "': it is a directory");
+      direct_ = true;
+      write_path_ = path_;
+      return;
+    }
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(path_, ec))) {
+      target_ = std::filesystem::weakly_canonical(path_, ec).string();
+      if (ec) throw GuardError("cannot resolve '" + path_ + "': " + ec.message());
+    } else {
+      target_ = path_;
+    }
+    write_path_ = target_ + ".tmp." + std::to_string(::getpid());
+    std::ofstream probe(write_path_, std::ios::out | std::ios::trunc | std::ios::binary);
+    if (!probe) throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
+  }
+  ~AtomicFile() {
+    if (!committed_ && !direct_ && !write_path_.empty()) std::remove(write_path_.c_str());
+  }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  const std::string& write_path() const { return write_path_; }  // where to write now
+  const std::string& path() const { return path_; }
+  void commit() {
+    if (write_path_.empty() || direct_) return;
+    if (std::rename(write_path_.c_str(), target_.c_str()) != 0) {
+      throw GuardError("cannot rename to '" + path_ + "': " + std::strerror(errno));
+    }
+    committed_ = true;
+  }
+
+ private:
+  std::string path_, target_, write_path_;
+  bool direct_ = false, committed_ = false;
+};
+
+// The command's text output: stdout, or an AtomicFile.
+class Output {
+ public:
+  explicit Output(const std::string& path) : file_(path) {
+    if (path.empty()) return;
+    stream_.open(file_.write_path(), std::ios::out | std::ios::trunc | std::ios::binary);
+    if (!stream_) throw GuardError("cannot write '" + path + "': " + std::strerror(errno));
+  }
+  std::ostream& stream() { return file_.path().empty() ? std::cout : stream_; }
+  void commit() {
+    if (file_.path().empty()) {
+      std::cout.flush();
+      if (!std::cout) throw GuardError("error writing to standard output");
+      return;
+    }
+    stream_.flush();
+    stream_.close();
+    if (stream_.fail()) throw GuardError("error writing '" + file_.path() + "'");
+    file_.commit();
+  }
+
+ private:
+  AtomicFile file_;
+  std::ofstream stream_;
+};
+
+// Plans the arc, runs it on the chosen engine and writes the output (and the waveform)
+// only once everything succeeded.
+template <typename Writer>
+void run_arc_command(const ArcOptions& o, Writer write) {
+  const EngineFn fn = find_engine(o.engine);
+  if (!fn) throw InputError("engine = '" + o.engine + "' is invalid: use one of " + engine_names());
+  if (!o.vcd.empty() && o.engine == "golden") {
+    throw InputError("--vcd is invalid with engine golden: the golden model has no waveform");
+  }
+  if (!o.vcd.empty() && !o.out.empty()) {
+    std::error_code e1, e2;
+    if (std::filesystem::weakly_canonical(o.vcd, e1) == std::filesystem::weakly_canonical(o.out, e2)) {
+      throw InputError("--vcd and --out name the same file '" + o.out + "': they must differ");
+    }
+  }
+  if (!o.vcd.empty()) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(o.vcd, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+      throw InputError("vcd = '" + o.vcd + "' is invalid: a waveform is written to a regular file");
+    }
+  }
+  const Plan plan = make_plan(o);
+  Output out(o.out);        // both files are opened before the run: a bad path fails fast
+  AtomicFile wave(o.vcd);
+  EngineOptions eo;
+  eo.vcd = wave.write_path();
+  const EngineRun run = fn(plan, eo);
+  write(out.stream(), plan, run);
+  out.commit();
+  wave.commit();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"dda: ellipse DDA interpolator (golden model, SystemC model, RTL)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
+
+  ArcOptions tr, pa, st, pl;
+  auto* trace = app.add_subcommand("trace", "per-iteration register trace");
+  add_arc_options(trace, tr, "csv, table or json", "csv");
+  auto* path = app.add_subcommand("path", "lattice points of the path");
+  add_arc_options(path, pa, "csv or json", "csv");
+  auto* stats = app.add_subcommand("stats", "counts and deviation from the ideal ellipse");
+  add_arc_options(stats, st, "text or json", "text");
+  ArcOptions ve;
+  std::string ve_dir, ve_seed = "1", ve_ce = "100";
+  std::vector<std::string> ve_then;
+  auto* vectors = app.add_subcommand("vectors", "test vectors from the golden model (--out-dir DIR; docs/vectors.md)");
+  add_arc_options(vectors, ve, "hex (with CSV and a JSON manifest)", "hex");
+  vectors->add_option("--out-dir", ve_dir, "directory of the vector set (written atomically)");
+  vectors->add_option("--then", ve_then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
+  vectors->add_option("--seed", ve_seed, "seed of the ce pattern (default 1)");
+  vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
+  auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
+  add_arc_options(plot, pl, "svg", "svg");
+  std::string gp_kind = "verilog", gp_out;
+  auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
+  gen->add_option("--kind", gp_kind,
+                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
+                  "the largest semi-axis they hold at the default width), vector-fields "
+                  "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw)");
+  gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
+
+  try {
+    if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 &&
+        std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--version") != 0) {
+      throw InputError(std::string("option '") + argv[1] +
+                       "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
+    }
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const auto* sub : app.get_subcommands({})) {
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+        known = known || sub->get_name() == argv[1];
+      }
+      if (!known) throw InputError(std::string("command '") + argv[1] + "' is unknown: use one of " + names);
+    }
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::string msg = e.what();
+      for (auto& ch : msg) if (ch == '\n') ch = ' ';
+      std::cerr << "dda: error: " << msg << " (see dda --help)\n";
+      return 2;
+    }
+
+    if (trace->parsed()) {
+      const auto fmt = parse_enum<TraceFormat>(
+          "format", tr.format,
+          {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
+      run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_trace(os, plan, r.initial, r.records, fmt);
+      });
+    } else if (path->parsed()) {
+      const auto fmt = parse_enum<PathFormat>("format", pa.format,
+                                              {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
+      run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_path(os, path_points(plan, r.records), fmt);
+      });
+    } else if (stats->parsed()) {
+      const auto fmt = parse_enum<StatsFormat>("format", st.format,
+                                               {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
+      run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_stats(os, plan, compute_stats(plan, r.records), fmt);
+      });
+    } else if (vectors->parsed()) {
+      parse_enum<int>("format", ve.format, {{"hex", 0}});
+      if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
+      if (ve.engine != "golden") throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
+      if (!ve.out.empty() || !ve.vcd.empty()) throw InputError("vectors write --out-dir DIR, not --out or --vcd");
+      vec::Options vo;
+      vo.out_dir = ve_dir;
+      vo.seed = std::uint64_t(parse_int("seed", ve_seed, "a non-negative integer"));
+      vo.ce_percent = int(parse_int("ce-percent", ve_ce, "an integer from 1 to 100"));
+      vo.command_line = "dda";
+      for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        vo.command_line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
+      }
+      std::vector<Plan> plans{make_plan(ve)};
+      for (const std::string& then : ve_then) {
+        CLI::App sub{"arc"};
+        ArcOptions o;
+        add_arc_options(&sub, o, "", "");
+        try {
+          sub.parse(then, false);
+        } catch (const CLI::ParseError& e) {
+          throw InputError("then = '" + then + "' is invalid: " + e.what());
+        }
+        plans.push_back(make_plan(o));
+      }
+      vec::write_vector_set(plans, vo);
+    } else if (plot->parsed()) {
+      parse_enum<int>("format", pl.format, {{"svg", 0}});
+      if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+      std::string title = "dda";
+      for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--out") == 0) {
+          ++i;  // not part of the arc
+          continue;
+        }
+        title += std::string(" ") + argv[i];
+      }
+      std::string esc;  // the title is XML text
+      for (const char ch : title) esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+      run_arc_command(pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+        write_svg(os, plan, r.records, esc);
+      });
+    } else if (gen->parsed()) {
+      const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}, {"vector-fields", 3}, {"gtkw-systemc", 4}, {"gtkw-rtl", 5}});
+      Output out(gp_out);
+      if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
+        out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",
+                                 kind == 4 ? "SystemC" : "dut.dda_core");
+      } else if (kind == 3) {
+        out.stream() << vec::verilog_fields();
+      } else if (kind == 2) {
+        nlohmann::ordered_json j;
+        j["acc_width"] = hw::kAccWidth;
+        j["cnt_width"] = hw::kCntWidth;
+        j["cmd_width"] = hw::kCmdWidth;
+        j["max_semi_axis"] = hw::max_semi_axis(4);  // default width: smallest valid + 4
+        out.stream() << j.dump(1) << '\n';
+      } else {
+        out.stream() << (kind == 0 ? hw::verilog_header() : hw::markdown_tables());
+      }
+      out.commit();
+    }
+  } catch (const InputError& e) {
+    std::cerr << "dda: error: " << e.what() << '\n';
+    return 2;
+  } catch (const GuardError& e) {
+    std::cerr << "dda: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "dda: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace dda::cli

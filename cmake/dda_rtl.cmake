@@ -1,0 +1,68 @@
+# The RTL as CMake sees it: sources read from the file list rtl/dda_core.f (the one list
+# every flow reads), and the Verilated harness libraries built on them.
+
+set(DDA_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
+
+# dda_rtl_sources(LIST OUT [RTL_DIR]): the Verilog sources of file list LIST, with
+# $(DDA_RTL) replaced by RTL_DIR (default rtl/), nested lists (-f) expanded.
+function(dda_rtl_sources list out)
+  set(dir ${DDA_RTL_DIR})
+  if(ARGC GREATER 2)
+    set(dir ${ARGV2})
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${list})
+  file(STRINGS ${list} lines)
+  set(files "")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "//.*$" "" line "${line}")
+    string(STRIP "${line}" line)
+    string(REPLACE "$(DDA_RTL)" "${DDA_RTL_DIR}" line "${line}")
+    if(line STREQUAL "" OR line MATCHES "^\\+incdir\\+")
+      continue()
+    elseif(line MATCHES "^-[fFc] +(.*)$")
+      dda_rtl_sources(${CMAKE_MATCH_1} nested ${dir})
+      list(APPEND files ${nested})
+    else()
+      string(REPLACE "${DDA_RTL_DIR}" "${dir}" line "${line}")
+      list(APPEND files ${line})
+    endif()
+  endforeach()
+  set(${out} ${files} PARENT_SCOPE)
+endfunction()
+
+dda_rtl_sources(${DDA_RTL_DIR}/dda_core.f DDA_RTL_SOURCES)
+
+find_package(verilator REQUIRED)
+
+# A harness library around a verilated copy of the RTL in `rtl_dir` (tests verilate a
+# mutated copy too): `cc` is the C++ model and RtlHarness, `sc` the SystemC model and the
+# co-simulation harness. Immediate assertions in the RTL are on (--assert). Extra
+# arguments go to verilator.
+function(dda_verilated_harness target mode rtl_dir)
+  set(eng ${PROJECT_SOURCE_DIR}/tb/engines)
+  if(mode STREQUAL "cc")
+    set(src ${eng}/rtl_harness.cpp ${eng}/vl_sampler.cpp)
+    set(prefix Vdda_core)
+    set(kind TRACE)
+    set(extra --timescale 1ns/1ns)  # the harness counts time in ns, like the SystemC clock
+    set(base dda_engine)
+  else()
+    set(src ${eng}/cosim_harness.cpp ${eng}/vl_sampler.cpp)
+    set(prefix Vdda_core_sc)
+    set(kind SYSTEMC)
+    set(extra "")
+    set(base dda_sc_harness)
+  endif()
+  add_library(${target} STATIC ${src})
+  set_source_files_properties(${src} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS "${DDA_WARNINGS}")
+  target_include_directories(${target} PUBLIC ${eng})
+  # Verilator's runtime headers are not ours: include them as system headers.
+  target_include_directories(${target} SYSTEM PRIVATE ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
+  target_link_libraries(${target} PUBLIC ${base})
+  dda_rtl_sources(${DDA_RTL_DIR}/dda_core.f sources ${rtl_dir})
+  verilate(${target} ${kind}
+    SOURCES ${sources} ${DDA_RTL_DIR}/lint.vlt
+    TOP_MODULE dda_core PREFIX ${prefix}
+    INCLUDE_DIRS ${rtl_dir} ${DDA_RTL_DIR}
+    VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast ${extra} ${ARGN})
+endfunction()

@@ -1,0 +1,110 @@
+// Helpers shared by the planner's sources (not part of the library's interface).
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "dda/planner.hpp"
+
+namespace dda::detail {
+
+using i128 = __int128;
+
+inline std::string pt(Point p) {
+  std::ostringstream s;
+  s << '(' << p.x << ',' << p.y << ')';
+  return s.str();
+}
+
+// Ceil(num / den) for positive operands.
+inline std::int64_t ceil_div(std::int64_t num, std::int64_t den) { return (num + den - 1) / den; }
+
+// a * b, or nullopt if it does not fit in int64.
+inline std::optional<std::int64_t> checked_mul(std::int64_t a, std::int64_t b) {
+  std::int64_t r = 0;
+  if (__builtin_mul_overflow(a, b, &r)) return std::nullopt;
+  return r;
+}
+
+// v / 2^sh rounded to nearest, halves away from zero.
+inline i128 round_shift(i128 v, int sh) {
+  const i128 half = i128(1) << (sh - 1);
+  return v < 0 ? -((-v + half) >> sh) : (v + half) >> sh;
+}
+// num / den rounded to nearest, halves away from zero (den > 0).
+inline i128 round_div(i128 num, i128 den) {
+  return num < 0 ? -((-num + den / 2) / den) : (num + den / 2) / den;
+}
+
+inline int sign(i128 v) { return (v > 0) - (v < 0); }
+
+// Quadrant signs (su, sv) of the four quadrants about the centre.
+inline constexpr int kSu[5] = {0, +1, -1, -1, +1};
+inline constexpr int kSv[5] = {0, +1, +1, -1, -1};
+
+// Step directions in quadrant q: counter-clockwise, du has the sign of -v and dv of u.
+inline int step_sx(int q, Direction dir) { return dir == Direction::Ccw ? -kSv[q] : kSv[q]; }
+inline int step_sy(int q, Direction dir) { return dir == Direction::Ccw ? kSu[q] : -kSu[q]; }
+
+// A resolved start or end point: lattice point and the fraction of the ideal point.
+struct EndPoint {
+  Point lattice;
+  std::int64_t fx = 0, fy = 0;  // Q(kPosFrac); non-zero only for half preload and theta
+};
+
+// Preload of an axis so that the represented position, lattice + s (jr / cap - 1/2),
+// is lattice + frac / 2^kPosFrac (half preload; |frac| <= 1/2).
+inline std::int64_t fraction_preload(std::int64_t cap, bool dir_neg, std::int64_t frac) {
+  const __int128 s_frac = dir_neg ? -__int128(frac) : __int128(frac);
+  const __int128 jr = (__int128(cap) * ((__int128(1) << (kPosFrac - 1)) + s_frac)) >> kPosFrac;
+  return std::int64_t(std::clamp<__int128>(jr, 0, cap - 1));
+}
+
+// An end given as a parametric angle: the arc ends where the path first crosses the
+// ray from the centre through that angle's ideal point `e` (relative, Q(kPosFrac)),
+// moving in direction D; a full turn must pass the far side (the half-plane behind the
+// centre) first. Whether the ray is still ahead at the start is decided from the
+// represented start (the ideal point of a parametric start, which the lattice point can
+// lie on the other side of). crossed() is called with every position after the start.
+struct RayEnd {
+  FixedPoint e;
+  int D = 1;
+  bool far_seen = true;
+  bool armed = false;
+  Point last;  // the position last looked at (relative); starts at the lattice start
+  RayEnd(FixedPoint end, Direction dir, bool full, FixedPoint start, Point lattice_start)
+      : e(end), D(dir == Direction::Ccw ? 1 : -1), last(lattice_start) {
+    // side < 0: the end lies less than half a turn ahead, so the path may end as soon as
+    // it crosses the ray; otherwise (and for a full turn) it must pass the far side first.
+    armed = far_seen = !full && side(start.x, start.y) < 0;
+  }
+  __int128 side(__int128 x, __int128 y) const { return D * (e.x * y - e.y * x); }
+  bool ahead(Point q) const { return __int128(e.x) * q.x + __int128(e.y) * q.y > 0; }
+  // Only a step can cross the ray: an iteration without one leaves the verdict as it was.
+  bool crossed(Point q) {
+    if (q == last) return false;
+    last = q;
+    if (armed && side(q.x, q.y) >= 0 && ahead(q)) return true;
+    far_seen = far_seen || !ahead(q);
+    armed = far_seen && side(q.x, q.y) < 0;
+    return false;
+  }
+};
+
+
+// The coefficients of a turned ellipse for width n (see Coefficients), exact for
+// quarter turns; the capacity goes with them.
+struct Scaled {
+  Coefficients k;
+  std::int64_t cap = 0;
+  i128 level = 0;  // quad_form on the nominal curve: a^2 b^2 (exact) or a b 2^(K-n)
+};
+
+// Quarter turns: pieces meet at the vertices (plan_quadrant.cpp).
+void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray);
+// Other angles: pieces found by running the datapath to each turn (plan_rotated.cpp).
+void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray);
+
+}  // namespace dda::detail

@@ -1,0 +1,301 @@
+// The planner: validation, end points, parametric angles, and the cut into pieces
+// (plan_quadrant.cpp, plan_rotated.cpp).
+#include "dda/planner.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <tuple>
+#include <utility>
+
+#include "dda/geometry.hpp"
+#include "dda/hw_params.hpp"
+#include "dda/runner.hpp"
+#include "plan_detail.hpp"
+
+namespace dda {
+
+using namespace detail;
+
+// The capacity for rotated ellipses must be a value the hardware's capacity register
+// holds below 2^(AccWidth-1) (every integrand up to it positive).
+static_assert(kRotCapBits < hw::kAccWidth - 1, "kRotCapBits (plan.hpp) no longer fits AccWidth (hw_params.hpp)");
+
+namespace {
+
+// Headroom: every sum the datapath forms is below 2 * cap, and integrand corrections
+// stay within [-(cap), 2 * cap]; keeping cap below 2^61 keeps all of them in int64.
+constexpr std::int64_t kCapLimit = std::int64_t{1} << 61;
+
+}  // namespace
+
+const char* to_string(Preload p) { return p == Preload::Zero ? "zero" : "half"; }
+const char* to_string(Direction d) { return d == Direction::Ccw ? "ccw" : "cw"; }
+
+int smallest_valid_bits(std::int64_t a, std::int64_t b) {
+  const std::int64_t m = std::max(a, b);
+  int n = 1;
+  while (n < 62 && (std::int64_t{1} << n) < m) ++n;
+  return n;
+}
+
+int default_bits(std::int64_t a, std::int64_t b) {
+  // Four bits above the smallest valid width, fewer if the capacity would leave range.
+  int n = smallest_valid_bits(a, b) + 4;
+  while (n > smallest_valid_bits(a, b) && (__int128(a) * b << n) >= (__int128(1) << 61)) --n;
+  return n;
+}
+
+int quarter_turns(const ArcSpec& spec) {
+  const std::int64_t t = normalize_udeg(spec.angle);
+  return t % kQuarterTurn == 0 ? static_cast<int>(t / kQuarterTurn) : -1;
+}
+
+namespace {
+
+void check_axes_and_center(const ArcSpec& spec) {
+  const std::int64_t a = spec.a, b = spec.b;
+  if (a < 1) throw InputError("a = " + std::to_string(a) + " is invalid: a semi-axis must be a positive integer");
+  if (b < 1) throw InputError("b = " + std::to_string(b) + " is invalid: a semi-axis must be a positive integer");
+  const bool rotated = quarter_turns(spec) < 0;
+  const std::int64_t lim = std::int64_t{1} << (rotated ? 20 : 30);
+  if (a > lim || b > lim) {
+    throw InputError((a > lim ? "a = " + std::to_string(a) : "b = " + std::to_string(b)) +
+                     " is out of range: semi-axes must be at most 2^" + (rotated ? "20 for a rotated ellipse" : "30"));
+  }
+  const std::int64_t coord_lim = std::int64_t{1} << 40;
+  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
+    throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
+  }
+}
+
+// The ellipse's quadratic form on lattice points relative to the centre, and its value
+// on the nominal curve: Q(x, y) = qy x^2 - 2 p x y + qx y^2, Q = level on the curve.
+i128 quad_form(const Coefficients& k, std::int64_t x, std::int64_t y) {
+  return i128(k.qy) * x * x - 2 * i128(k.p) * x * y + i128(k.qx) * y * y;
+}
+
+
+}  // namespace
+
+FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
+  check_axes_and_center(spec);
+  const SinCos t = sincos_udeg(theta);
+  // Frame point (a cos, b sin) in Q(kTrigFrac).
+  const i128 u = i128(spec.a) * t.c, v = i128(spec.b) * t.s;
+  const int qt = quarter_turns(spec);
+  if (qt >= 0) {  // exact quarter turns
+    i128 x = u, y = v;
+    for (int k = 0; k < qt; ++k) std::tie(x, y) = std::pair<i128, i128>{-y, x};
+    return FixedPoint{std::int64_t(round_shift(x, kTrigFrac - kPosFrac)),
+                      std::int64_t(round_shift(y, kTrigFrac - kPosFrac))};
+  }
+  const SinCos f = sincos_udeg(spec.angle);
+  const i128 x = u * f.c - v * f.s, y = u * f.s + v * f.c;  // Q(2 kTrigFrac)
+  return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac - kPosFrac)),
+                    std::int64_t(round_shift(y, 2 * kTrigFrac - kPosFrac))};
+}
+
+namespace {
+
+Scaled scaled_coefficients(const ArcSpec& spec, int n) {
+  Scaled r;
+  const std::int64_t a = spec.a, b = spec.b;
+  const int qt = quarter_turns(spec);
+  if (qt >= 0) {
+    const std::int64_t ax = qt % 2 ? b : a, by = qt % 2 ? a : b;
+    r.k = Coefficients{0, ax * ax, by * by};
+    const __int128 cap = __int128(a) * b << n;  // plan_arc refuses capacities from 2^61 up
+    r.cap = cap < (__int128(1) << 62) ? std::int64_t(cap) : 0;
+    r.level = i128(a) * a * b * b;
+    return r;
+  }
+  // Tangent of the counter-clockwise turn times a b: (P x - Qx y, Qy x - P y) with
+  // P = cs (a^2 - b^2), Qx = a^2 c^2 + b^2 s^2, Qy = a^2 s^2 + b^2 c^2; scaled by
+  // 2^K / (a b 2^n) so that the capacity is 2^K, K = kRotCapBits, and rounded to
+  // nearest. c, s are Q(kTrigFrac), so the products are Q(2 kTrigFrac).
+  const SinCos f = sincos_udeg(spec.angle);
+  const i128 a2 = i128(a) * a, b2 = i128(b) * b, cc = i128(f.c) * f.c, ss = i128(f.s) * f.s,
+             cs = i128(f.c) * f.s;
+  const int sh = 2 * kTrigFrac - (kRotCapBits - n);  // n >= 1 keeps it >= 32
+  const i128 den = (i128(a) * b) << sh;
+  r.k.p = std::int64_t(round_div(cs * (a2 - b2), den));
+  r.k.qx = std::int64_t(round_div(a2 * cc + b2 * ss, den));
+  r.k.qy = std::int64_t(round_div(a2 * ss + b2 * cc, den));
+  r.cap = std::int64_t{1} << kRotCapBits;
+  r.level = (i128(a) * b) << (kRotCapBits - n);
+  return r;
+}
+
+
+}  // namespace
+
+Point theta_point(const ArcSpec& spec, std::int64_t theta) {
+  const FixedPoint f = theta_ideal(spec, theta);
+  const Point c = spec.center;
+  if (spec.preload == Preload::Half) {
+    const auto nearest = [](std::int64_t v) { return std::int64_t(round_shift(v, kPosFrac)); };
+    return Point{c.x + nearest(f.x), c.y + nearest(f.y)};
+  }
+  const int n = spec.bits != 0 ? spec.bits : default_bits(spec.a, spec.b);
+  const Scaled sc = scaled_coefficients(spec, std::clamp(n, 1, kRotCapBits));
+  const std::int64_t fx = f.x >> kPosFrac, fy = f.y >> kPosFrac;  // floors
+  const std::int64_t mask = (std::int64_t{1} << kPosFrac) - 1;
+  const std::int64_t cx = fx + ((f.x & mask) != 0), cy = fy + ((f.y & mask) != 0);
+  Point best{fx, fy}, outermost{fx, fy};
+  i128 best_q = -1, out_q = -1;
+  for (const std::int64_t x : {fx, cx}) {
+    for (const std::int64_t y : {fy, cy}) {
+      const i128 q = quad_form(sc.k, x, y);
+      if (q > out_q) {
+        out_q = q;
+        outermost = Point{x, y};
+      }
+      if (q < sc.level) continue;  // inside the ellipse
+      if (best_q < 0 || q < best_q) {
+        best_q = q;
+        best = Point{x, y};
+      }
+    }
+  }
+  // (Rounded coefficients of a rotated ellipse can leave all four just inside: then the
+  // outermost of them.)
+  if (best_q < 0) best = outermost;
+  return Point{c.x + best.x, c.y + best.y};
+}
+
+namespace {
+
+EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
+                       const std::optional<std::int64_t>& theta, std::int64_t default_theta,
+                       const std::optional<Point>& default_pnt) {
+  if (pnt) return EndPoint{*pnt};
+  if (!theta && default_pnt) return EndPoint{*default_pnt};
+  const std::int64_t t = theta.value_or(default_theta);
+  EndPoint e{theta_point(spec, t)};
+  if (spec.preload == Preload::Half) {
+    const FixedPoint f = theta_ideal(spec, t);
+    e.fx = f.x - ((e.lattice.x - spec.center.x) << kPosFrac);
+    e.fy = f.y - ((e.lattice.y - spec.center.y) << kPosFrac);
+  }
+  return e;
+}
+
+
+}  // namespace
+
+Plan plan_arc(const ArcSpec& spec_in) {
+  Plan p;
+  p.spec = spec_in;
+  ArcSpec& spec = p.spec;
+  spec.angle = normalize_udeg(spec.angle);
+  check_axes_and_center(spec);
+  const std::int64_t a = spec.a, b = spec.b;
+  const int qt = quarter_turns(spec);
+  p.rotated = qt < 0;
+  const int nmin = smallest_valid_bits(a, b);
+  if (spec.bits == 0) spec.bits = default_bits(a, b);
+  if (spec.bits < 1 || spec.bits > 61 || (std::int64_t{1} << spec.bits) < std::max(a, b)) {
+    throw InputError("bits = " + std::to_string(spec.bits) +
+                     " is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is " +
+                     std::to_string(nmin) + ")");
+  }
+  if (spec.bits > nmin + kMaxExtraBits) {
+    throw InputError("bits = " + std::to_string(spec.bits) + " is invalid: at most " +
+                     std::to_string(kMaxExtraBits) + " bits above the smallest valid width (" +
+                     std::to_string(nmin) + ") are accepted; each bit doubles the run");
+  }
+  const std::int64_t ab = a * b;
+  if (!p.rotated) {
+    const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
+    if (!cap || *cap >= kCapLimit) {
+      throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" +
+                       std::to_string(spec.bits) + " * " + std::to_string(a) + " * " +
+                       std::to_string(b) + " is out of range: it must be below 2^61");
+    }
+  } else if (4 * __int128(std::min(a, b)) * std::min(a, b) <= std::max(a, b)) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "a = " << a << ", b = " << b << " is too thin to turn by " << format_degrees(spec.angle)
+      << " degrees: the radius of curvature at the tips, min(a,b)^2 / max(a,b) = "
+      << double(std::min(a, b)) * double(std::min(a, b)) / double(std::max(a, b))
+      << " steps, must exceed 1/4 step for a rotated ellipse (the lattice path cannot follow a sharper tip)";
+    throw InputError(m.str());
+  } else if (coefficient_drift_bound(p) > kMaxCoefficientDrift || spec.bits > kRotCapBits) {
+    std::ostringstream m;
+    m << "bits = " << spec.bits << " is too large for this rotated ellipse: its fixed-point coefficients "
+      << "could move the curve by " << coefficient_drift_bound(p) << " steps (at most " << kMaxCoefficientDrift
+      << " allowed: max(a,b)^2 2^n / (2^" << kRotCapBits << " min(a,b)); use fewer bits)";
+    throw InputError(m.str());
+  }
+  p.scale = ab;
+  const Scaled sc = scaled_coefficients(spec, spec.bits);
+  p.coef = sc.k;
+  p.ax = qt >= 0 && qt % 2 ? b : a;
+  p.by = qt >= 0 && qt % 2 ? a : b;
+  if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
+  if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
+  const Point c = spec.center;
+  // Defaults: the quadrant-I quarter arc (quarter turns), parametric 0 to 90 (rotated).
+  const auto dflt = [&](Point q) { return p.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
+  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + p.ax, c.y}));
+  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + p.by}));
+  p.from = from.lattice;
+  p.to = to.lattice;
+  p.frac_x = from.fx;
+  p.frac_y = from.fy;
+
+  const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
+  for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
+    if (spec.to_theta && std::string(name) == "to") continue;  // found by the walk
+    const Point r{q.x - c.x, q.y - c.y};
+    const std::int64_t reach = 2 * std::max(a, b) + 2;
+    if (std::llabs(r.x) > reach || std::llabs(r.y) > reach) {
+      throw InputError(std::string(name) + " point " + pt(q) +
+                       " is far from the ellipse: start and end must lie within 1 step of it");
+    }
+    const double d = plan_distance(p, double(q.x), double(q.y));
+    if (d > tol) {
+      std::ostringstream m;
+      m.precision(4);
+      m << std::fixed << name << " point " << pt(q) << " is " << d
+        << " steps from the ellipse: start and end must lie within " << kPointTolerance
+        << " step of it";
+      throw InputError(m.str());
+    }
+  }
+  // A full turn: equal lattice ends, or equal parametric angles (a parametric end is
+  // found by the walk, so its lattice point is not known yet).
+  p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
+                         : p.from == p.to;
+  std::optional<RayEnd> ray;
+  if (spec.to_theta) {
+    const FixedPoint start{((p.from.x - c.x) << kPosFrac) + from.fx, ((p.from.y - c.y) << kPosFrac) + from.fy};
+    ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full,
+                spec.from_theta ? theta_ideal(spec, *spec.from_theta) : start, Point{p.from.x - c.x, p.from.y - c.y});
+  }
+  if (p.rotated) {
+    detail::plan_rotated_pieces(p, sc, from, ray);
+  } else {
+    detail::plan_quadrant_pieces(p, sc.cap, from, ray);
+  }
+
+  if (ray) p.to = p.pieces.back().to;
+  // Reachability: the exact model decides whether every piece ends (no stall).
+  check_reachable(p);
+  return p;
+}
+
+double plan_distance(const Plan& plan, double x, double y) {
+  const double rx = x - double(plan.spec.center.x), ry = y - double(plan.spec.center.y);
+  if (!plan.rotated) return ellipse_distance(double(plan.ax), double(plan.by), rx, ry);
+  const auto [u, v] = to_frame(plan.spec.angle, rx, ry);
+  return ellipse_distance(double(plan.spec.a), double(plan.spec.b), u, v);
+}
+
+double coefficient_drift_bound(const Plan& plan) {
+  if (quarter_turns(plan.spec) >= 0) return 0.0;
+  const double mx = double(std::max(plan.spec.a, plan.spec.b)), mn = double(std::min(plan.spec.a, plan.spec.b));
+  return std::ldexp(mx * mx / mn, plan.spec.bits - kRotCapBits);
+}
+
+}  // namespace dda

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The RTL's assertions fire: for each mutant (a fault injected into a copy of rtl/), the
+# paper's vector set must end, under Icarus and under Verilator --assert, with the
+# assertion that guards against that fault (not with a vector MISMATCH: each fault
+# changes nothing before the edge where its assertion fires).
+#   usage: scripts/assert-mutants.sh VECTOR_SET_DIR   (ctest rtl.assertions_fire)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${DDA_BUILD_DIR:-$root/build}
+[ $# -eq 1 ] || { echo "usage: $0 VECTOR_SET_DIR" >&2; exit 2; }
+set_dir=$1
+
+# name|file|anchor|replacement|assertion message
+mutants=(
+  "counter_underflow|dda_counter.v|cnt_d = cnt_q - dec;|cnt_d = cnt_q - dec - {{(CntWidth-1){1'b0}}, cnt_q == {CntWidth{1'b0}}};|ASSERTION dda_counter: a decrement at 0"
+)
+status=0
+for m in "${mutants[@]}"; do
+  IFS='|' read -r name file from to message <<< "$m"
+  dir="$build/assert_mutants/$name"
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  cp "$root"/rtl/*.v "$root"/rtl/*.vh "$dir/"
+  grep -qF "$from" "$dir/$file" || { echo "assert-mutants: anchor not found in rtl/$file: $from" >&2; exit 1; }
+  FROM=$from TO=$to perl -0pi -e 's/\Q$ENV{FROM}\E/$ENV{TO}/' "$dir/$file"
+  echo "mutant $name ($file):"
+  "$root/scripts/vector-bench.sh" --rtl "$dir" --expect "$message" "$set_dir" || status=1
+done
+exit $status

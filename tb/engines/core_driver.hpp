@@ -1,0 +1,79 @@
+// Drives a DDA core (SystemC model or Verilated RTL) through arcs, clock by clock,
+// the way a user's system would: reset, command handshake, ce_i pattern. Engine
+// specific harnesses implement CoreHarness; the driving, sampling and checking is
+// shared, so every engine is exercised and checked identically.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "dda/core_model.hpp"
+#include "dda/golden.hpp"
+#include "scoreboard.hpp"
+
+namespace dda {
+
+class CoreHarness {
+ public:
+  virtual ~CoreHarness() = default;
+  // Inputs, applied at the next rising edge.
+  void set_reset(bool rst_n);
+  void set_ce(bool ce);
+  void set_command(bool valid, const CmdFields& cmd = {});
+  // cmd_ready_o now (combinational: settles the inputs first).
+  virtual bool cmd_ready() = 0;
+  // One rising edge of the clock; an attached scoreboard checks it.
+  void tick();
+  // Every signal of the register table now.
+  virtual Signals sample() = 0;
+  std::uint64_t cycle() const { return cycle_; }
+  virtual const char* name() const = 0;  // "systemc", "rtl", "cosim"
+  // Every edge is checked against the reference model from the harness' first edge
+  // on (the first thing a user does is a reset); a speed benchmark turns it off.
+  void disable_checking() { checking_ = false; }
+  bool checking() const { return checking_; }
+  // Iterations the reference model has made (0 when not checking).
+  std::uint64_t checked_iterations() const { return sb_ ? sb_->iterations() : 0; }
+
+ protected:
+  virtual void apply(const CoreInputs& in, bool cmd_changed) = 0;
+  virtual void edge() = 0;
+  std::uint64_t cycle_ = 0;
+
+ private:
+  CoreInputs in_;
+  bool checking_ = true;
+  std::unique_ptr<Scoreboard> sb_;
+};
+
+struct DriveOptions {
+  std::function<bool(std::uint64_t cycle)> ce;  // ce_i per cycle; empty: always high
+  bool check = true;                            // the arc must end on its end points
+  bool keep_records = true;                     // return the sampled records
+  // Reset the core after this many iterations (0: never).
+  std::uint64_t reset_after = 0;
+  // Reset the core on this clock edge counted from the command's presentation (0:
+  // never): any edge, the load edge and ce_i stalls included.
+  std::uint64_t reset_at_cycle = 0;
+};
+
+struct DriveResult {
+  RegState initial;  // registers sampled right after the first command was loaded
+  std::vector<Iteration> records;
+  std::uint64_t iterations = 0;
+  std::uint64_t cycles = 0;  // from presenting the command to done (or to the reset)
+  Point end;
+  bool was_reset = false;
+};
+
+// Holds rst_ni low for `cycles` edges, then releases it.
+void reset_core(CoreHarness& h, int cycles = 2);
+
+// Runs one arc: hands over the command, clocks until done, samples every edge. The core
+// must be idle (just reset, or after an arc). Throws MismatchError (scoreboard),
+// GuardError (err_o, watchdog).
+DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt = {});
+
+}  // namespace dda

@@ -1,0 +1,115 @@
+#include "cosim_harness.hpp"
+
+#include <verilated.h>
+
+#include <sstream>
+
+#include "Vdda_core_sc.h"
+#include "sc_harness.hpp"
+
+namespace dda::cosim {
+
+namespace {
+
+template <typename Core>
+void bind_outputs(Core& c, sc_core::sc_signal<bool>& ready, sc_core::sc_signal<bool>& sx,
+                  sc_core::sc_signal<bool>& dx, sc_core::sc_signal<bool>& sy,
+                  sc_core::sc_signal<bool>& dy, sc_core::sc_signal<bool>& busy,
+                  sc_core::sc_signal<bool>& done, sc_core::sc_signal<bool>& err,
+                  sc_core::sc_signal<bool>& iter) {
+  c.cmd_ready_o(ready);
+  c.step_x_o(sx);
+  c.dir_x_o(dx);
+  c.step_y_o(sy);
+  c.dir_y_o(dy);
+  c.busy_o(busy);
+  c.done_o(done);
+  c.err_o(err);
+  c.iter_o(iter);
+}
+
+}  // namespace
+
+CosimHarness::CosimHarness() {
+  sc_ = std::make_unique<sc::dda_core>("sc_dut");
+  rtl_ = std::make_unique<Vdda_core_sc>("rtl_dut");
+  sc_->clk_i(clk_);
+  sc_->rst_ni(rst_n_);
+  sc_->ce_i(ce_);
+  sc_->cmd_valid_i(cmd_valid_);
+  sc_->cmd_i(cmd_);
+  bind_outputs(*sc_, sc_out_.cmd_ready, sc_out_.step_x, sc_out_.dir_x, sc_out_.step_y,
+               sc_out_.dir_y, sc_out_.busy, sc_out_.done, sc_out_.err, sc_out_.iter);
+  rtl_->clk_i(clk_);
+  rtl_->rst_ni(rst_n_);
+  rtl_->ce_i(ce_);
+  rtl_->cmd_valid_i(cmd_valid_);
+  rtl_->cmd_i(cmd_);
+  bind_outputs(*rtl_, rtl_out_.cmd_ready, rtl_out_.step_x, rtl_out_.dir_x, rtl_out_.step_y,
+               rtl_out_.dir_y, rtl_out_.busy, rtl_out_.done, rtl_out_.err, rtl_out_.iter);
+  sc_sampler_ = std::make_unique<sc::ScSampler>(sc_->name(), hw::signal_table());
+  rtl_sampler_ = std::make_unique<rtl::VlSampler>(*Verilated::threadContextp(), std::string(rtl_->name()) + ".dda_core",
+                                                  hw::signal_table());
+}
+
+void CosimHarness::resolve(const hw::SignalTable& t) const {
+  sc::ScSampler(sc_->name(), t);
+  rtl::VlSampler(*Verilated::threadContextp(), std::string(rtl_->name()) + ".dda_core", t);
+}
+
+CosimHarness::~CosimHarness() {
+  if (rtl_) rtl_->final();
+}
+
+void CosimHarness::apply(const CoreInputs& in, bool cmd_changed) {
+  rst_n_.write(in.rst_n);
+  ce_.write(in.ce);
+  cmd_valid_.write(in.cmd_valid);
+  if (cmd_changed) cmd_.write(sc::command_bits(in.cmd));
+}
+
+bool CosimHarness::cmd_ready() {
+  sc::settle();
+  if (sc_out_.cmd_ready.read() != rtl_out_.cmd_ready.read()) {
+    throw MismatchError("cosim mismatch: output cmd_ready_o at cycle " + std::to_string(cycle()));
+  }
+  return sc_out_.cmd_ready.read();
+}
+
+void CosimHarness::edge() {
+  sc_core::sc_start(10, sc_core::SC_NS);
+  const std::uint64_t edge_no = cycle() + 1;  // the edge's number, as tick() counts it
+  // Every register and every output, every cycle.
+  const std::string diff = compare_samples(sc_sample(), rtl_sample());
+  const struct {
+    const char* name;
+    bool a, b;
+  } outs[] = {
+      {"cmd_ready_o", sc_out_.cmd_ready.read(), rtl_out_.cmd_ready.read()},
+      {"step_x_o", sc_out_.step_x.read(), rtl_out_.step_x.read()},
+      {"dir_x_o", sc_out_.dir_x.read(), rtl_out_.dir_x.read()},
+      {"step_y_o", sc_out_.step_y.read(), rtl_out_.step_y.read()},
+      {"dir_y_o", sc_out_.dir_y.read(), rtl_out_.dir_y.read()},
+      {"busy_o", sc_out_.busy.read(), rtl_out_.busy.read()},
+      {"done_o", sc_out_.done.read(), rtl_out_.done.read()},
+      {"err_o", sc_out_.err.read(), rtl_out_.err.read()},
+      {"iter_o", sc_out_.iter.read(), rtl_out_.iter.read()},
+  };
+  std::ostringstream m;
+  if (!diff.empty()) {
+    m << "cosim mismatch at cycle " << edge_no << ": " << diff << " (systemc vs rtl)";
+  } else {
+    for (const auto& o : outs) {
+      if (o.a != o.b) {
+        m << "cosim mismatch at cycle " << edge_no << ": output " << o.name << ": " << o.a << " vs "
+          << o.b << " (systemc vs rtl)";
+        break;
+      }
+    }
+  }
+  if (!m.str().empty()) throw MismatchError(m.str());
+  ++compared_;
+}
+
+
+}  // namespace dda::cosim

@@ -1,0 +1,39 @@
+// The Verilated RTL (verilator --cc) in a C++ test bench: the CoreHarness interface the
+// shared driver and scoreboard use, with an optional VCD waveform. Each harness owns its
+// own VerilatedContext, so many can run in one process, one after another.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core_driver.hpp"
+#include "vl_sampler.hpp"
+
+class VerilatedContext;
+class VerilatedVcdC;
+class Vdda_core;
+
+namespace dda::rtl {
+
+class RtlHarness : public CoreHarness {
+ public:
+  explicit RtlHarness(const std::string& vcd = "");
+  ~RtlHarness() override;
+
+  bool cmd_ready() override;
+  Signals sample() override { return sampler_->read(); }
+  const char* name() const override { return "rtl"; }
+  void close_trace();
+
+ protected:
+  void apply(const CoreInputs& in, bool cmd_changed) override;
+  void edge() override;
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vdda_core> top_;
+  std::unique_ptr<VerilatedVcdC> vcd_;
+  std::unique_ptr<VlSampler> sampler_;
+};
+
+}  // namespace dda::rtl

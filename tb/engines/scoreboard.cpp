@@ -1,0 +1,48 @@
+#include "scoreboard.hpp"
+
+#include <sstream>
+
+namespace dda {
+
+void Scoreboard::before_edge(const CoreInputs& in, bool ready, std::uint64_t cycle) {
+  in_ = in;
+  if (!in.rst_n) return;
+  const bool expect = model_.cmd_ready(in.ce);
+  if (expect != ready) {
+    std::ostringstream m;
+    m << engine_ << " mismatch: output cmd_ready_o before cycle " << cycle + 1 << ": golden " << expect << ", "
+      << engine_ << ' ' << ready;
+    throw MismatchError(m.str());
+  }
+}
+
+void Scoreboard::after_edge(const Signals& got, std::uint64_t cycle) {
+  iters_ += model_.edge(in_).iterate;
+  const Signals& want = model_.state();
+  std::ostringstream m;
+  int differ = 0;
+  for (std::size_t i = 0; i < hw::kNumSignals; ++i) {
+    if (want[i] == got[i]) continue;
+    if (differ++ == 0) {
+      m << engine_ << " mismatch: register " << hw::kSignals[i].name << " at iteration " << iters_ << " (cycle "
+        << cycle << "): golden " << want[i] << ", " << engine_ << ' ' << got[i];
+    } else {  // the others of the same edge, in table order: the cause may be among them
+      m << (differ == 2 ? "; also " : ", ") << hw::kSignals[i].name << " (golden " << want[i] << ", " << engine_
+        << ' ' << got[i] << ')';
+    }
+  }
+  if (differ != 0) throw MismatchError(m.str());
+}
+
+std::string compare_samples(const Signals& a, const Signals& b) {
+  for (std::size_t i = 0; i < hw::kNumSignals; ++i) {
+    if (a[i] != b[i]) {
+      std::ostringstream m;
+      m << "register " << hw::kSignals[i].name << ": " << a[i] << " vs " << b[i];
+      return m.str();
+    }
+  }
+  return "";
+}
+
+}  // namespace dda

@@ -1,0 +1,43 @@
+// Checks a running core (SystemC model or RTL) against the cycle-level reference model
+// (dda/core_model.hpp), edge by edge: the harness reports the inputs of every edge and
+// the signals sampled after it; every signal of the register table and cmd_ready_o are
+// compared. The checker is fed by the harness (a monitor), never by the driver.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "dda/core_model.hpp"
+#include "dda/golden.hpp"
+
+namespace dda {
+
+// A signal differs between an engine and the reference model (or another engine).
+class MismatchError : public GuardError {
+ public:
+  using GuardError::GuardError;
+};
+
+class Scoreboard {
+ public:
+  explicit Scoreboard(std::string engine) : engine_(std::move(engine)) {}
+  // Before an edge: the inputs about to be clocked in and the engine's cmd_ready_o.
+  void before_edge(const CoreInputs& in, bool ready, std::uint64_t cycle);
+  // After it: the engine's signals. Throws MismatchError naming the first signal of the
+  // table that differs, the iteration, the cycle and both values.
+  void after_edge(const Signals& got, std::uint64_t cycle);
+  std::uint64_t iterations() const { return iters_; }
+  const CoreModel& model() const { return model_; }
+
+ private:
+  std::string engine_;
+  CoreModel model_;
+  CoreInputs in_;
+  std::uint64_t iters_ = 0;
+};
+
+// Compares two samples signal by signal (e.g. SystemC against RTL, every cycle).
+// Returns "" or a description of the first difference.
+std::string compare_samples(const Signals& a, const Signals& b);
+
+}  // namespace dda
