@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Speed measurement for scripts/bench: one long arc (a full circle, half preload,
 // default width) run several times on one engine; prints one line per repetition:
 //   rep K: N cycles (or iterations) in S s

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // scripts/bench: the three-way co-simulation's speed (see bench_main.hpp).
 #include <systemc>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // scripts/bench: the golden model's speed, records off (see bench_main.hpp).
 #include "bench_main.hpp"
 

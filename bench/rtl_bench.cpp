@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // scripts/bench: the Verilated RTL's speed, tracing off (see bench_main.hpp).
 #include "bench_main.hpp"
 #include "rtl_harness.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // scripts/bench: the SystemC model's speed (see bench_main.hpp).
 #include <systemc>
 

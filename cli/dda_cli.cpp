@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `dda` command: trace, path and stats of an ellipse arc on any engine.
 //
 // Exit status: 0 success; 1 run-time failure (I/O error, guard tripped, cross-check
@@ -5,20 +6,20 @@
 // to stdout, or with --out to a file written atomically (temporary file, then rename).
 #include "dda_cli.hpp"
 
+#include <unistd.h>
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <cerrno>
 #include <charconv>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "dda/golden.hpp"
 #include "dda/hw_command.hpp"
@@ -54,12 +55,11 @@ Point parse_point(const std::string& name, const std::string& s) {
 }
 
 struct ArcOptions {
-  std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw",
-                          angle, engine = "golden", out, format, vcd;
+  std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw", angle,
+                          engine = "golden", out, format, vcd;
 };
 
-void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
-                     const std::string& default_format) {
+void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, const std::string& default_format) {
   o.format = default_format;
   sub->add_option("--a", o.a, "semi-axis a (positive integer, steps)")->required();
   sub->add_option("--b", o.b, "semi-axis b (positive integer, steps)")->required();
@@ -73,14 +73,18 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats,
                   "semi-axis a points in direction DEG (decimal, up to 6 decimals; multiples of 90 use "
                   "the exact integer datapath, other angles fixed-point coefficients)");
   sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
-  sub->add_option("--from", o.from, "start lattice point X,Y (default: centre + (semi-axis along X, 0); turned by a "
+  sub->add_option("--from", o.from,
+                  "start lattice point X,Y (default: centre + (semi-axis along X, 0); turned by a "
                   "non-multiple of 90 degrees: parametric angle 0)");
-  sub->add_option("--to", o.to, "end lattice point X,Y (default: a quarter turn on, parametric angle 90 when turned); "
+  sub->add_option("--to", o.to,
+                  "end lattice point X,Y (default: a quarter turn on, parametric angle 90 when turned); "
                   "equal to --from: a full ellipse");
-  sub->add_option("--from-theta", o.from_theta, "start at parametric angle DEG: half preload starts on the ideal curve point (nearest "
+  sub->add_option("--from-theta", o.from_theta,
+                  "start at parametric angle DEG: half preload starts on the ideal curve point (nearest "
                   "lattice point, the rest in the preloads), zero preload at the lattice point just "
                   "outside it (docs/golden-model.md)");
-  sub->add_option("--to-theta", o.to_theta, "end at parametric angle DEG, rounded to the lattice as --from-theta; equal to "
+  sub->add_option("--to-theta", o.to_theta,
+                  "end at parametric angle DEG, rounded to the lattice as --from-theta; equal to "
                   "--from-theta: a full ellipse");
   sub->add_option("--engine", o.engine, "engine: " + engine_names());
   sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
@@ -232,7 +236,7 @@ void run_arc_command(const ArcOptions& o, Writer write) {
     }
   }
   const Plan plan = make_plan(o);
-  Output out(o.out);        // both files are opened before the run: a bad path fails fast
+  Output out(o.out);  // both files are opened before the run: a bad path fails fast
   AtomicFile wave(o.vcd);
   EngineOptions eo;
   eo.vcd = wave.write_path();
@@ -276,8 +280,8 @@ int main(int argc, char** argv) {
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
 
   try {
-    if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 &&
-        std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--version") != 0) {
+    if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 && std::strcmp(argv[1], "-h") != 0 &&
+        std::strcmp(argv[1], "--version") != 0) {
       throw InputError(std::string("option '") + argv[1] +
                        "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
     }
@@ -300,34 +304,35 @@ int main(int argc, char** argv) {
       return app.exit(e);
     } catch (const CLI::ParseError& e) {
       std::string msg = e.what();
-      for (auto& ch : msg) if (ch == '\n') ch = ' ';
+      for (auto& ch : msg)
+        if (ch == '\n') ch = ' ';
       std::cerr << "dda: error: " << msg << " (see dda --help)\n";
       return 2;
     }
 
     if (trace->parsed()) {
       const auto fmt = parse_enum<TraceFormat>(
-          "format", tr.format,
-          {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
+          "format", tr.format, {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
       run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
         write_trace(os, plan, r.initial, r.records, fmt);
       });
     } else if (path->parsed()) {
-      const auto fmt = parse_enum<PathFormat>("format", pa.format,
-                                              {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
+      const auto fmt =
+          parse_enum<PathFormat>("format", pa.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
       run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
         write_path(os, path_points(plan, r.records), fmt);
       });
     } else if (stats->parsed()) {
-      const auto fmt = parse_enum<StatsFormat>("format", st.format,
-                                               {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
+      const auto fmt =
+          parse_enum<StatsFormat>("format", st.format, {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
       run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
         write_stats(os, plan, compute_stats(plan, r.records), fmt);
       });
     } else if (vectors->parsed()) {
       parse_enum<int>("format", ve.format, {{"hex", 0}});
       if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
-      if (ve.engine != "golden") throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
+      if (ve.engine != "golden")
+        throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
       if (!ve.out.empty() || !ve.vcd.empty()) throw InputError("vectors write --out-dir DIR, not --out or --vcd");
       vec::Options vo;
       vo.out_dir = ve_dir;
@@ -363,12 +368,14 @@ int main(int argc, char** argv) {
         title += std::string(" ") + argv[i];
       }
       std::string esc;  // the title is XML text
-      for (const char ch : title) esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
-      run_arc_command(pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
-        write_svg(os, plan, r.records, esc);
-      });
+      for (const char ch : title)
+        esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+      run_arc_command(
+          pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) { write_svg(os, plan, r.records, esc); });
     } else if (gen->parsed()) {
-      const int kind = parse_enum<int>("kind", gp_kind, {{"verilog", 0}, {"markdown", 1}, {"json", 2}, {"vector-fields", 3}, {"gtkw-systemc", 4}, {"gtkw-rtl", 5}});
+      const int kind = parse_enum<int>(
+          "kind", gp_kind,
+          {{"verilog", 0}, {"markdown", 1}, {"json", 2}, {"vector-fields", 3}, {"gtkw-systemc", 4}, {"gtkw-rtl", 5}});
       Output out(gp_out);
       if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
         out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",

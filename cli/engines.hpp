@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Engines the `dda` command can run: each turns a Plan into Iteration records
 // sampled from its own state (golden model, SystemC model, Verilated RTL).
 #pragma once

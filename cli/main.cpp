@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Entry point of the `dda` command.
 //
 // libsystemc also defines main(), which calls sc_main() and, after it returns, prints

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // dda vectors: test vectors computed by the golden model (never by running the RTL).
 #pragma once
 

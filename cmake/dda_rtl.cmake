@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The RTL as CMake sees it: sources read from the file list rtl/dda_core.f (the one list
 # every flow reads), and the Verilated harness libraries built on them.
 

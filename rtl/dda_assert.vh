@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // DDA_ASSERT(cond, msg): an immediate assertion written beside the logic it checks,
 // inside `ifndef SYNTHESIS in a clocked block. In simulation a failure ends the run with
 // $fatal and msg (Verilator needs --assert; Icarus 11 runs them as they are: a failed

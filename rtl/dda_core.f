@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sources of the dda_core top level: the one list every flow reads. Paths use
 // $(DDA_RTL), the folder of this file (set it in the environment):
 //   verilator -f rtl/dda_core.f ...     iverilog -c rtl/dda_core.f ...

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ellipse DDA interpolator core (docs/design.md is the contract: ports, registers and
 // behaviour edge by edge). Two integrators (u_int_x, u_int_y), two step counters
 // (u_cnt_x, u_cnt_y), the control (u_ctrl), and here the shared capacity cap_q, the

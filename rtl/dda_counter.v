@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Remaining-step counter of one axis (docs/design.md, "Counter"): cnt_q, decremented by
 // the axis' carry on an iteration. active_o = cnt_q != 0 (an axis whose counter is 0
 // stops adding); last_o says the counter is 0 after this iteration.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control of the DDA core (docs/design.md, "Control" and "Behaviour, edge by edge"):
 // the state machine state_q (idle, run) and the one-cycle pulses done_q, err_q, iter_q.
 //

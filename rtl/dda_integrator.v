@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One DDA integrator (docs/design.md, "Integrator"): integrand jv_q, accumulator jr_q
 // and the two integrand corrections inc_on_x_q, inc_on_y_q.
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The RTL's assertions fire: for each mutant (a fault injected into a copy of rtl/), the
 # paper's vector set must end, under Icarus and under Verilator --assert, with the
 # assertion that guards against that fault (not with a vector MISMATCH: each fault

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fails unless every signal a GTKWave save file shows is declared in the waveform.
 #   usage: scripts/check-gtkw.sh WAVEFORM.vcd SAVEFILE.gtkw
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job: install what is missing, build, and run the paper's worked example
 # (a = 10, b = 6, n = 4, from (10,0) to (0,6)) on the three engines (golden model,
 # SystemC model, RTL under Verilator), show that their rows agree, and write both

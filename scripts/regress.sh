@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Long regressions (not in the default test suite), each in lockstep with the golden
 # model, random arcs back to back, some with random ce_i stalls, some reset halfway:
 #   systemc  the SystemC model                       (default 2,000 arcs)

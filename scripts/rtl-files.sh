@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Expands an RTL file list (rtl/dda_core.f, rtl/fpga/dda_fpga_top.f) into the paths of its
 # Verilog sources, one per line, nested lists included: for Yosys, which reads no file
 # lists. `+incdir+` lines are printed as `-I DIR` when --incdirs is given instead.

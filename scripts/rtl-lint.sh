@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Verilator lint of the RTL with every warning on; fails on any %Warning or %Error.
 #   usage: scripts/rtl-lint.sh        (ctest: rtl.lint)
 # Waivers, each with its reason, live in rtl/lint.vlt.

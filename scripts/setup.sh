@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Install the Debian packages this project builds and tests with, if any is missing.
 # Safe to run again: it asks apt only when a package is absent.
 set -euo pipefail
@@ -7,7 +8,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
-  z3 librsvg2-bin
+  z3 librsvg2-bin clang-format
 )
 
 missing=()

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Synthesize the RTL for iCE40 with Yosys and fail on any error, inferred latch or
 # multiple/conflicting drivers; print the cell counts (stat).
 #   usage: scripts/synth-check.sh [LOG_FILE]     (default: a temporary file)

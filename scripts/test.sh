@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Install what is missing, build, and run the whole default test suite through ctest.
 # Longer regressions are scripts/regress.sh (see README, "Tests").
 set -euo pipefail

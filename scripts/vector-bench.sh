@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs the self-checking bench tb/vectors/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
 #   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Each line of the baseline file is "a b n sha256": the SHA-256 of
 #   dda trace --a A --b B --bits N --preload zero --from A,0 --to 0,B --format csv
 # as main printed it before the restructuring of issue 10. Fails on the first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks shared by the SystemC-model and RTL test programs: the same stimulus and the
 // same expectations (all from the golden model) for every engine.
 #pragma once
@@ -32,9 +33,9 @@ inline Plan paper_plan(Preload p = Preload::Zero) {
 }
 
 inline bool same(const Iteration& a, const Iteration& b) {
-  return a.iter == b.iter && a.active_x == b.active_x && a.active_y == b.active_y &&
-         a.jv_x == b.jv_x && a.jv_y == b.jv_y && a.sum_x == b.sum_x && a.sum_y == b.sum_y &&
-         a.step_x == b.step_x && a.step_y == b.step_y && a.after == b.after && a.pos == b.pos;
+  return a.iter == b.iter && a.active_x == b.active_x && a.active_y == b.active_y && a.jv_x == b.jv_x &&
+         a.jv_y == b.jv_y && a.sum_x == b.sum_x && a.sum_y == b.sum_y && a.step_x == b.step_x && a.step_y == b.step_y &&
+         a.after == b.after && a.pos == b.pos;
 }
 
 inline void records_equal(const std::vector<Iteration>& got, const std::vector<Iteration>& want) {
@@ -71,8 +72,8 @@ inline void paper_example(CoreHarness& h) {
 // the waveform holds the architectural registers and the whole run.
 template <typename H>
 void paper_example_with_waveform(const std::string& tag) {
-  const auto vcd = std::filesystem::temp_directory_path() /
-                   ("dda_test_" + tag + "_" + std::to_string(::getpid()) + ".vcd");
+  const auto vcd =
+      std::filesystem::temp_directory_path() / ("dda_test_" + tag + "_" + std::to_string(::getpid()) + ".vcd");
   std::filesystem::remove(vcd);
   {
     H h(vcd.string());
@@ -105,8 +106,7 @@ inline std::string mismatch_message(CoreHarness& h, const Plan& plan) {
 }
 
 // Random arcs back to back, each in lockstep with the golden model.
-inline void random_arcs(CoreHarness& h, std::uint64_t seed, int count,
-                        ArcKind kind = ArcKind::Quarter) {
+inline void random_arcs(CoreHarness& h, std::uint64_t seed, int count, ArcKind kind = ArcKind::Quarter) {
   RandomArcs gen(seed, 4096, 8, kind);
   reset_core(h);
   for (int arcs = 0; arcs < count;) {

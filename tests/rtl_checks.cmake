@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # RTL checks: Verilator lint, Yosys synthesis for iCE40, and the vector-set bench
 # tb/hdl/dda_vec_tb.v on Icarus and Verilator. Included from tests/CMakeLists.txt: include(rtl_checks.cmake).
 # Each test runs a script of scripts/ that also works by hand (see its header).

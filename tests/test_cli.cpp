@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `dda` command as a user runs it: outputs, exit status, error messages, files.
 #define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -10,9 +11,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "dda/golden.hpp"
 #include <sstream>
 #include <string>
+#include "dda/golden.hpp"
 
 namespace fs = std::filesystem;
 
@@ -51,8 +52,8 @@ struct Scratch {
 };
 
 Result run_dda(const Scratch& s, const std::string& args) {
-  const std::string cmd = std::string(DDA_BIN) + " " + args + " >" + (s.dir / "stdout").string() +
-                          " 2>" + (s.dir / "stderr").string();
+  const std::string cmd =
+      std::string(DDA_BIN) + " " + args + " >" + (s.dir / "stdout").string() + " 2>" + (s.dir / "stderr").string();
   const int rc = std::system(cmd.c_str());
   Result r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
@@ -171,7 +172,8 @@ TEST_CASE("cli: bad semi-axes", "[cli][errors]") {
 }
 
 TEST_CASE("cli: bad accumulator width", "[cli][errors]") {
-  expect_usage_error("trace --a 10 --b 6 --bits 3", "bits = 3 is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is 4)");
+  expect_usage_error("trace --a 10 --b 6 --bits 3",
+                     "bits = 3 is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is 4)");
   expect_usage_error("trace --a 10 --b 6 --bits 0", "bits = 0 is invalid");
   expect_usage_error("trace --a 10 --b 6 --bits four", "bits = 'four' is invalid");
   expect_usage_error("trace --a 16 --b 2 --bits 4 --to 0,3", "bits = 4 is too small for this arc");
@@ -183,8 +185,9 @@ TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "
                      fmt_distance("from point (3,0) is ", dda::ellipse_distance(10, 6, 3, 0)) +
                          " steps from the ellipse: start and end must lie within 1.0000 step of it");
   expect_usage_error("path " + kPaper + " --to 0,8", "to point (0,8) is 2.0000 steps from the ellipse");
-  expect_usage_error("trace " + kPaper + " --from 9,3 --to 0,7",
-                     "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
+  expect_usage_error(
+      "trace " + kPaper + " --from 9,3 --to 0,7",
+      "end point (0,7) is unreachable from (9,3): at (0,6) the Y integrand is 0 with 1 Y step(s) still owed");
   expect_usage_error("trace " + kPaper + " --from 10,0 --to 9,0 --dir cw", "end point (9,0) is unreachable");
   expect_usage_error("trace " + kPaper + " --from 1,2 --from-theta 30", "from and from-theta are both given");
   expect_usage_error("trace " + kPaper + " --to-theta north", "to-theta = 'north' is invalid: an angle in degrees");
@@ -198,7 +201,8 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
   expect_usage_error("stats " + kPaper + " --format csv", "format = 'csv' is invalid");
   expect_usage_error("trace " + kPaper + " --engine spice", "engine = 'spice' is invalid");
   expect_usage_error("trace " + kPaper + " --dir left", "dir = 'left' is invalid: use ccw or cw");
-  expect_usage_error("trace " + kPaper + " --angle 30.1234567", "angle = '30.1234567' is invalid: an angle in degrees, a decimal with at most 6 decimals");
+  expect_usage_error("trace " + kPaper + " --angle 30.1234567",
+                     "angle = '30.1234567' is invalid: an angle in degrees, a decimal with at most 6 decimals");
   expect_usage_error("trace " + kPaper + " --angle 1e3", "angle = '1e3' is invalid");
   expect_usage_error("trace " + kPaper + " --from-theta 1234567890", "from-theta = '1234567890' is invalid");
   expect_usage_error("path --a 100 --b 4 --angle 30", "a = 100, b = 4 is too thin to turn by 30 degrees");
@@ -206,7 +210,8 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
   expect_usage_error("path --a 500 --b 300 --angle 30 --from-theta 10 --to 0,0", "to point (0,0) is");
   expect_usage_error("trace " + kPaper + " --angle x", "angle = 'x' is invalid");
   expect_usage_error("trace " + kPaper + " --center 1", "center = '1' is invalid: a point is two integers X,Y");
-  expect_usage_error("trace --a 10 --b 6 --bits 21", "bits = 21 is invalid: at most 16 bits above the smallest valid width (4)");
+  expect_usage_error("trace --a 10 --b 6 --bits 21",
+                     "bits = 21 is invalid: at most 16 bits above the smallest valid width (4)");
   expect_usage_error("stats --a 120000 --b 120000 --bits 17 --engine rtl",
                      "cap = 1887436800000000 does not fit the hardware's 51-bit field: it must be in [0, 2^50)");
   expect_usage_error("--bogus", "option '--bogus' is unknown here");
@@ -250,7 +255,8 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
   for (const std::string engine : {"systemc", "rtl"}) {
     INFO("engine " << engine);
     for (const std::string sub : {"trace --format csv", "trace --format json", "path", "stats"}) {
-      for (const std::string& arc : {kPaper, std::string("--a 37 --b 900 --bits 14 --preload half --from 30,526 --to 3,898")}) {
+      for (const std::string& arc :
+           {kPaper, std::string("--a 37 --b 900 --bits 14 --preload half --from 30,526 --to 3,898")}) {
         INFO(sub << ' ' << arc);
         const Result g = run_dda(s, sub + " " + arc + " --engine golden");
         const Result e = run_dda(s, sub + " " + arc + " --engine " + engine);
@@ -268,7 +274,8 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
 // names.
 TEST_CASE("cli: the lathe example runs through every engine with the same path", "[cli][engines]") {
   Scratch s;
-  const std::string arc = "--a 25000 --b 15000 --angle 330 --center -30000,5000 --from-theta 60 --to-theta 136 --dir ccw";
+  const std::string arc =
+      "--a 25000 --b 15000 --angle 330 --center -30000,5000 --from-theta 60 --to-theta 136 --dir ccw";
   for (const std::string pre : {"zero", "half"}) {
     INFO("preload " << pre);
     const Result g = run_dda(s, "path " + arc + " --preload " + pre);
@@ -311,20 +318,20 @@ TEST_CASE("cli: waveform and output files appear only on success", "[cli][errors
   Scratch s;
   // An unwritable waveform path: a one-line error and status 1, before any run.
   for (const std::string engine : {"systemc", "rtl"}) {
-    const Result r = run_dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " +
-                                (s.dir / "no" / "w.vcd").string());
+    const Result r =
+        run_dda(s, "trace " + kPaper + " --engine " + engine + " --vcd " + (s.dir / "no" / "w.vcd").string());
     CHECK(r.status == 1);
     CHECK(r.err.rfind("dda: error: cannot write", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
   // The waveform is not left behind when the output cannot be written.
-  const Result r = run_dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "w.vcd").string() +
-                              " --out " + (s.dir / "no" / "t.csv").string());
+  const Result r = run_dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "w.vcd").string() + " --out " +
+                                  (s.dir / "no" / "t.csv").string());
   CHECK(r.status == 1);
   CHECK(s.user_files() == 0);
   // The same file for both: refused.
-  const Result same = run_dda(s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "x").string() +
-                                 " --out " + (s.dir / "x").string());
+  const Result same = run_dda(
+      s, "trace " + kPaper + " --engine rtl --vcd " + (s.dir / "x").string() + " --out " + (s.dir / "x").string());
   CHECK(same.status == 2);
   CHECK(same.err.find("--vcd and --out name the same file") != std::string::npos);
   CHECK(s.user_files() == 0);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cycle-level reference model (dda/core_model.hpp) against the golden runner: fed a
 // plan's commands back to back, it makes the runner's iterations, and its control
 // follows docs/design.md (load on the finishing edge, idle after the last piece).
@@ -65,7 +66,8 @@ TEST_CASE("core model: 300 random arcs make the golden runner's iterations, back
     ++n;
     INFO("seed " << seed << ": dda trace " << describe(*plan));
     std::uint64_t cycles = 0;
-    const auto got = model_records(*plan, [](std::uint64_t) { return true; }, cycles);
+    const auto got = model_records(
+        *plan, [](std::uint64_t) { return true; }, cycles);
     const auto want = run_records(*plan);
     REQUIRE(got.size() == want.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
@@ -85,7 +87,8 @@ TEST_CASE("core model: ce_i low holds every register but the pulses", "[core_mod
   s.bits = 4;
   const Plan plan = plan_arc(s);
   std::uint64_t cycles = 0;
-  const auto slow = model_records(plan, [](std::uint64_t c) { return c % 3 != 1; }, cycles);
+  const auto slow = model_records(
+      plan, [](std::uint64_t c) { return c % 3 != 1; }, cycles);
   const auto want = run_records(plan);
   REQUIRE(slow.size() == want.size());
   for (std::size_t i = 0; i < slow.size(); ++i) CHECK(same(slow[i], want[i]));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Three-way co-simulation: the SystemC model and the RTL on one clock, compared in
 // every register and output every cycle, and against the golden model every iteration.
 // Every TEST_CASE is its own ctest entry and process (one elaboration each).
@@ -20,7 +21,8 @@ TEST_CASE("cosim: paper example, both models equal every cycle and to the golden
   CHECK(h.compared_cycles() >= 27);
 }
 
-TEST_CASE("cosim: 100 random arcs (quarter and whole ellipses) back to back with ce stalls and resets", "[cosim][random]") {
+TEST_CASE("cosim: 100 random arcs (quarter and whole ellipses) back to back with ce stalls and resets",
+          "[cosim][random]") {
   cosim::CosimHarness h;
   const std::uint64_t seed = test_seed(51);
   INFO("seed " << seed);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The co-simulation against a deliberately broken copy of the RTL (the counter never
 // stops, see tests/CMakeLists.txt): the cycle-by-cycle comparison must name the register.
 #define CATCH_CONFIG_RUNNER

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ellipse_distance against an independent long-double computation.
 #include <catch2/catch.hpp>
 
@@ -32,7 +33,10 @@ long double reference_distance(long double a, long double b, long double u, long
     const long double g = (std::sqrt(5.0L) - 1) / 2;
     for (int k = 0; k < 200; ++k) {
       const long double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-      if (f(m1) < f(m2)) hi = m2; else lo = m1;
+      if (f(m1) < f(m2))
+        hi = m2;
+      else
+        lo = m1;
     }
     best = std::min(best, f((lo + hi) / 2));
   }
@@ -43,8 +47,7 @@ void check_point(double a, double b, double x, double y) {
   const double d = dda::ellipse_distance(a, b, x, y);
   const long double r = reference_distance(a, b, x, y);
   const double tol = 1e-9 * std::max(a, b);
-  INFO("a=" << a << " b=" << b << " point (" << x << ',' << y << ") got " << d << " ref "
-            << static_cast<double>(r));
+  INFO("a=" << a << " b=" << b << " point (" << x << ',' << y << ") got " << d << " ref " << static_cast<double>(r));
   CHECK(std::fabs(d - static_cast<double>(r)) <= tol);
 }
 
@@ -74,16 +77,21 @@ TEST_CASE("distance: agrees with a long-double reference on random points", "[di
     std::uniform_real_distribution<double> ux(-m, m);
     double x = std::round(ux(rng)), y = std::round(ux(rng));
     switch (kind(rng)) {
-      case 0: x = 0; break;  // on the Y axis
-      case 1: y = 0; break;  // on the X axis
-      case 2: {              // near the curve: a lattice point beside it
+      case 0:
+        x = 0;
+        break;  // on the Y axis
+      case 1:
+        y = 0;
+        break;   // on the X axis
+      case 2: {  // near the curve: a lattice point beside it
         std::uniform_real_distribution<double> t(0, 2 * M_PI);
         const double th = t(rng);
         x = std::round(a * std::cos(th));
         y = std::round(b * std::sin(th));
         break;
       }
-      default: break;
+      default:
+        break;
     }
     check_point(a, b, x, y);
   }

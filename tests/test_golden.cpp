@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The paper's worked example (Table 1) through the golden model, row by row.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
@@ -37,9 +38,15 @@ struct Frac {
   long long n = 0, d = 1;
   Frac(long long num = 0, long long den = 1) : n(num), d(den) { norm(); }
   void norm() {
-    if (d < 0) { n = -n; d = -d; }
+    if (d < 0) {
+      n = -n;
+      d = -d;
+    }
     const long long g = std::gcd(n < 0 ? -n : n, d);
-    if (g > 1) { n /= g; d /= g; }
+    if (g > 1) {
+      n /= g;
+      d /= g;
+    }
   }
   friend Frac operator+(Frac p, Frac q) { return Frac(p.n * q.d + q.n * p.d, p.d * q.d); }
   friend Frac operator-(Frac p, Frac q) { return Frac(p.n * q.d - q.n * p.d, p.d * q.d); }
@@ -106,9 +113,8 @@ TEST_CASE("table1: CSV output is byte-identical to the spec's exact trace", "[go
 TEST_CASE("table1: rows the paper prints (the ones with a pulse)", "[golden][table1]") {
   // The paper's printed rows, by iteration number: which axes pulse.
   const std::vector<std::tuple<int, int, int>> printed = {
-      {3, 0, 1},  {6, 0, 1},  {8, 0, 1},  {9, 1, 0},  {11, 0, 1}, {12, 1, 0},
-      {15, 1, 1}, {17, 1, 0}, {18, 0, 1}, {19, 1, 0}, {20, 1, 0}, {22, 1, 0},
-      {23, 1, 0}, {25, 1, 0}, {27, 1, 0}};  // 27, not the misprinted 26
+      {3, 0, 1},  {6, 0, 1},  {8, 0, 1},  {9, 1, 0},  {11, 0, 1}, {12, 1, 0}, {15, 1, 1}, {17, 1, 0},
+      {18, 0, 1}, {19, 1, 0}, {20, 1, 0}, {22, 1, 0}, {23, 1, 0}, {25, 1, 0}, {27, 1, 0}};  // 27, not the misprinted 26
   const auto iters = run_records(paper_plan());
   std::vector<std::tuple<int, int, int>> got;
   for (const auto& it : iters) {
@@ -120,9 +126,8 @@ TEST_CASE("table1: rows the paper prints (the ones with a pulse)", "[golden][tab
 TEST_CASE("table1: path and statistics of the example", "[golden][table1]") {
   const Plan plan = paper_plan();
   const auto iters = run_records(plan);
-  const std::vector<Point> expect = {{10, 0}, {10, 1}, {10, 2}, {10, 3}, {9, 3}, {9, 4},
-                                     {8, 4},  {7, 5},  {6, 5},  {6, 6},  {5, 6}, {4, 6},
-                                     {3, 6},  {2, 6},  {1, 6},  {0, 6}};
+  const std::vector<Point> expect = {{10, 0}, {10, 1}, {10, 2}, {10, 3}, {9, 3}, {9, 4}, {8, 4}, {7, 5},
+                                     {6, 5},  {6, 6},  {5, 6},  {4, 6},  {3, 6}, {2, 6}, {1, 6}, {0, 6}};
   CHECK(path_points(plan, iters) == expect);
   const Stats s = compute_stats(plan, iters);
   CHECK(s.iterations == 27);
@@ -140,7 +145,7 @@ TEST_CASE("paper units are rounded exactly, half away from zero", "[golden][form
   CHECK(paper_units(100, 60) == "1.6667");
   CHECK(paper_units(-100, 60) == "-1.6667");
   CHECK(paper_units(0, 60) == "0.0000");
-  CHECK(paper_units(1, 20000) == "0.0001");   // exactly 0.00005 rounds up
+  CHECK(paper_units(1, 20000) == "0.0001");  // exactly 0.00005 rounds up
   CHECK(paper_units(-1, 20000) == "-0.0001");
   CHECK(paper_units(1, 20001) == "0.0000");
   CHECK(paper_units(-1, 20001) == "0.0000");  // no negative zero

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One source of truth: the generated Verilog header and the design document's tables
 // must equal what hw_params.hpp generates now, and the command packing must put every
 // field where the header says.
@@ -72,7 +73,7 @@ TEST_CASE("hw_params: every command field lands at its offset", "[hw_params]") {
   }
   CHECK(off == dda::hw::kCmdWidth);
   const std::uint64_t mask = dda::hw::kAccMask;
-  CHECK(f[9] == mask);                           // -1 in two's complement
+  CHECK(f[9] == mask);  // -1 in two's complement
   CHECK(f[11] == ((~std::uint64_t{36} + 1) & mask));
   CHECK(bits(w, dda::hw::cmd_offset("dir_x"), 1) == dda::hw::kDirNeg);
   // Nothing above the command's width.

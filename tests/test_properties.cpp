@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Property tests over random configurations of the golden model.
 #include <catch2/catch.hpp>
 
@@ -37,8 +38,8 @@ std::string check_run(const Plan& plan) {
       if (check_dev && (it.step_x || it.step_y)) {
         const double d = dev(it.pos);
         if (d > bound) {
-          err << "iteration " << it.iter << ": point (" << it.pos.x << ',' << it.pos.y
-              << ") deviates " << d << " > bound " << bound;
+          err << "iteration " << it.iter << ": point (" << it.pos.x << ',' << it.pos.y << ") deviates " << d
+              << " > bound " << bound;
         }
       }
       prev = it.pos;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The register table (hw::kSignals) drives every consumer: the SystemC and Verilator
 // samplers resolve its names at run time, the reference model's next-state code is
 // checked against it at compile time, and the text consumers (the design doc's tables,
@@ -63,11 +64,17 @@ std::vector<Consumer> consumers(const dda::cosim::CosimHarness& h) {
          return true;
        }},
       {"docs/design.md tables",
-       [](const SignalTable& t) { return slurp("docs/design.md").find(dda::hw::markdown_tables(t)) != std::string::npos; }},
+       [](const SignalTable& t) {
+         return slurp("docs/design.md").find(dda::hw::markdown_tables(t)) != std::string::npos;
+       }},
       {"docs/dda_systemc.gtkw",
-       [](const SignalTable& t) { return slurp("docs/dda_systemc.gtkw") == dda::hw::gtkw(t, "dda_systemc.gtkw", "SystemC"); }},
+       [](const SignalTable& t) {
+         return slurp("docs/dda_systemc.gtkw") == dda::hw::gtkw(t, "dda_systemc.gtkw", "SystemC");
+       }},
       {"docs/dda_rtl.gtkw",
-       [](const SignalTable& t) { return slurp("docs/dda_rtl.gtkw") == dda::hw::gtkw(t, "dda_rtl.gtkw", "dut.dda_core"); }},
+       [](const SignalTable& t) {
+         return slurp("docs/dda_rtl.gtkw") == dda::hw::gtkw(t, "dda_rtl.gtkw", "dut.dda_core");
+       }},
       {"tb/hdl/dda_vec_fields.vh",
        [](const SignalTable& t) { return slurp("tb/hdl/dda_vec_fields.vh") == dda::vec::verilog_fields(t); }},
   };

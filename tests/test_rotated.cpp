@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rotated ellipses: deterministic trigonometry, pinned fixed-point coefficients, the
 // lathe paper's oblique ellipse, and the rules of angles.
 #include <catch2/catch.hpp>
@@ -28,9 +29,12 @@ ArcSpec lathe(Preload preload) {
 TEST_CASE("rotated: sines and cosines are pinned to correctly rounded Q40 values", "[golden][rotated]") {
   // Reference values: 50-digit decimal Taylor series of the exact angle, rounded half up
   // to Q40 (computed outside this project).
-  struct Pin { const char* deg; std::int64_t c, s; };
-  const Pin pins[] = {{"30", 952205001410, 549755813888},   {"45", 777472127994, 777472127994},
-                      {"60", 549755813888, 952205001410},   {"330", 952205001410, -549755813888},
+  struct Pin {
+    const char* deg;
+    std::int64_t c, s;
+  };
+  const Pin pins[] = {{"30", 952205001410, 549755813888},         {"45", 777472127994, 777472127994},
+                      {"60", 549755813888, 952205001410},         {"330", 952205001410, -549755813888},
                       {"12.345678", 1074085893542, 235085756499}, {"136", -790922474794, 763784955652}};
   for (const auto& p : pins) {
     INFO(p.deg);
@@ -88,9 +92,9 @@ TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rota
   CHECK(std::fabs((long double)p.coef.p - (-std::sqrt(3.0L) / 4 * 4e8L) * scale) <= 0.5L);
   CHECK(std::fabs((long double)p.coef.qx - 5.25e8L * scale) <= 0.5L);
   CHECK(std::fabs((long double)p.coef.qy - 3.25e8L * scale) <= 0.5L);
-  CHECK(p.coef.p == -495940105);  // -sqrt(3) 2^30 / 3.75 = -495940104.90
+  CHECK(p.coef.p == -495940105);   // -sqrt(3) 2^30 / 3.75 = -495940104.90
   CHECK(p.coef.qx == 1503238554);  // 1.4 * 2^30 = 1503238553.6
-  CHECK(p.coef.qy == 930576247);  // 13/15 * 2^30 = 930576247.47
+  CHECK(p.coef.qy == 930576247);   // 13/15 * 2^30 = 930576247.47
   CHECK(p.pieces.front().cmd.cap == (std::int64_t{1} << kRotCapBits));
 }
 

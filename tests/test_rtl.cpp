@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The RTL (Verilator --cc) against the golden model, register by register, iteration by
 // iteration. Each harness has its own VerilatedContext, so tests share one process.
 #define CATCH_CONFIG_MAIN

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A deliberately broken copy of the RTL (tests/CMakeLists.txt mutates a copy of
 // rtl/dda_counter.v so that its counter never stops: active_o stays high at 0) must be
 // caught by the golden-model scoreboard with a message naming the register.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A broken copy of the RTL that takes a command only when idle (tests/CMakeLists.txt):
 // the pieces of an arc then run with an idle cycle between them, which the scoreboard
 // catches as cmd_ready_o low in the cycle of piece 0's last iteration (edge 30: two reset

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The SystemC model against the golden model, register by register, iteration by
 // iteration. Every TEST_CASE is its own ctest entry and process (one elaboration each).
 #define CATCH_CONFIG_RUNNER

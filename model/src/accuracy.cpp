@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Documented deviation bounds of a plan (docs/golden-model.md, "Deviation bound").
 #include "dda/accuracy.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cycle-level reference model: the next-state code of every register of the table.
 #include "dda/core_model.hpp"
 
@@ -21,9 +22,9 @@ constexpr std::size_t kState = sig("u_ctrl.state_q"), kDone = sig("u_ctrl.done_q
 constexpr std::size_t kErr = sig("u_ctrl.err_q"), kIter = sig("u_ctrl.iter_q");
 constexpr std::size_t kSumX = sig("u_int_x.sum"), kSumY = sig("u_int_y.sum");
 
-constexpr std::size_t kWritten[] = {kJvX,  kJrX,  kIncXX, kIncXY, kJvY,  kJvY,  kJrY,  kIncYX, kIncYY,
-                                    kCntX, kCntY, kCap,   kCdirX, kCdirY, kDirX, kDirY, kStepX, kStepY,
-                                    kState, kDone, kErr,  kIter,  kSumX,  kSumY};
+constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJvY,   kJrY,  kIncYX,
+                                    kIncYY, kCntX,  kCntY,  kCap,   kCdirX, kCdirY, kDirX, kDirY,
+                                    kStepX, kStepY, kState, kDone,  kErr,   kIter,  kSumX, kSumY};
 // Every signal of the table has its next-state code here.
 constexpr bool covers_table() {
   for (std::size_t i = 0; i < hw::kNumSignals; ++i) {

@@ -1,10 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 // The datapath: iteration records around the one next-state function (datapath.hpp).
 #include "dda/datapath.hpp"
 
 namespace dda {
 
-Datapath::Datapath(const Command& cmd, Point start)
-    : cmd_(cmd), regs_(initial_regs(cmd)), pos_(start) {}
+Datapath::Datapath(const Command& cmd, Point start) : cmd_(cmd), regs_(initial_regs(cmd)), pos_(start) {}
 
 Iteration Datapath::iterate() {
   Iteration it;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Deterministic fixed-point trigonometry (see fixed_trig.hpp).
 #include "dda/fixed_trig.hpp"
 
@@ -63,17 +64,19 @@ SinCos sincos_udeg(std::int64_t udeg) {
   }
   if (complement) std::swap(c, s);
   switch (quadrant) {
-    case 1: return SinCos{-s, c};
-    case 2: return SinCos{-c, -s};
-    case 3: return SinCos{s, -c};
-    default: return SinCos{c, s};
+    case 1:
+      return SinCos{-s, c};
+    case 2:
+      return SinCos{-c, -s};
+    case 3:
+      return SinCos{s, -c};
+    default:
+      return SinCos{c, s};
   }
 }
 
 std::int64_t parse_degrees(const std::string& name, const std::string& text) {
-  const auto bad = [&](const std::string& rule) {
-    return InputError(name + " = '" + text + "' is invalid: " + rule);
-  };
+  const auto bad = [&](const std::string& rule) { return InputError(name + " = '" + text + "' is invalid: " + rule); };
   const std::string rule = "an angle in degrees, a decimal with at most 6 decimals and below 10^9";
   std::size_t i = 0;
   bool neg = false;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Geometry for measurement: distance to an ellipse, turning into its frame.
 #include "dda/geometry.hpp"
 
@@ -73,6 +74,5 @@ double ellipse_distance(double a, double b, double px, double py) {
   py = std::fabs(py);
   return a >= b ? distance_sorted(a, b, px, py) : distance_sorted(b, a, py, px);
 }
-
 
 }  // namespace dda

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers shared by the planner's sources (not part of the library's interface).
 #pragma once
 
@@ -34,9 +35,7 @@ inline i128 round_shift(i128 v, int sh) {
   return v < 0 ? -((-v + half) >> sh) : (v + half) >> sh;
 }
 // num / den rounded to nearest, halves away from zero (den > 0).
-inline i128 round_div(i128 num, i128 den) {
-  return num < 0 ? -((-num + den / 2) / den) : (num + den / 2) / den;
-}
+inline i128 round_div(i128 num, i128 den) { return num < 0 ? -((-num + den / 2) / den) : (num + den / 2) / den; }
 
 inline int sign(i128 v) { return (v > 0) - (v < 0); }
 
@@ -92,7 +91,6 @@ struct RayEnd {
     return false;
   }
 };
-
 
 // The coefficients of a turned ellipse for width n (see Coefficients), exact for
 // quarter turns; the capacity goes with them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The planner for quarter turns: monotone pieces that meet at the ellipse's vertices.
 #include <cstdlib>
 
@@ -16,7 +17,6 @@ int start_quadrant(std::int64_t u, std::int64_t v, Direction dir) {
   return v > 0 ? 2 : 3;
 }
 
-
 // The vertex a piece in quadrant q ends at, relative to the centre: moving u towards 0
 // ends on the v axis at (0, sv*b); otherwise on the u axis at (su*a, 0).
 Point end_vertex(int q, Direction dir, std::int64_t a, std::int64_t b) {
@@ -31,7 +31,6 @@ bool in_piece(int q, Direction dir, Point s, Point e) {
   if (e.x * kSu[q] < 0 || e.y * kSv[q] < 0) return false;  // outside the closed quadrant
   return (e.x - s.x) * step_sx(q, dir) >= 0 && (e.y - s.y) * step_sy(q, dir) >= 0;
 }
-
 
 }  // namespace
 
@@ -57,9 +56,8 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
     bool last = !ray && !(p.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
     Point end = last ? rt : end_vertex(q, spec.dir, ax, by);
     if (!last && !in_piece(q, spec.dir, cur, end)) {
-      throw InputError("from point " + pt(p.from) + " lies beyond the vertex " +
-                       pt(Point{c.x + end.x, c.y + end.y}) + " it runs to (" + to_string(spec.dir) +
-                       "): a point next to a vertex must lie before it");
+      throw InputError("from point " + pt(p.from) + " lies beyond the vertex " + pt(Point{c.x + end.x, c.y + end.y}) +
+                       " it runs to (" + to_string(spec.dir) + "): a point next to a vertex must lie before it");
     }
     Piece pc;
     pc.quadrant = q;
@@ -136,7 +134,9 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
     }
     if (!last && cm.cnt_x == 0 && cm.cnt_y == 0) {  // stalled on its first iteration: no piece
       q = next_quadrant(q, spec.dir);
-      if (++empty_pieces > 4) throw InputError("the DDA cannot leave " + pt(Point{c.x + cur.x, c.y + cur.y}) + ": it stalls in every direction");
+      if (++empty_pieces > 4)
+        throw InputError("the DDA cannot leave " + pt(Point{c.x + cur.x, c.y + cur.y}) +
+                         ": it stalls in every direction");
       continue;
     }
     p.iteration_bound += pc.iteration_bound;
@@ -146,6 +146,5 @@ void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::
     q = next_quadrant(q, spec.dir);
   }
 }
-
 
 }  // namespace dda::detail

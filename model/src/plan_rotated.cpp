@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The planner for rotated ellipses: pieces found by running the datapath to each turn.
 #include <cstdlib>
 
@@ -52,7 +53,8 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
   // Guard: a piece has at most 4 max(a, b) + 8 steps, and between two steps at most
   // 2^(n+2) / min(a, b) + 4 iterations (the larger integrand is at least about half the
   // tangent's length, which is at least a b min(a, b) times the scale).
-  const std::uint64_t guard = std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
+  const std::uint64_t guard =
+      std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
   std::int64_t jr_x = spec.preload == Preload::Half ? sc.cap / 2 : 0, jr_y = jr_x;
   bool first = true;
   char last_turn = 0;  // turns alternate between the axes around a convex curve
@@ -110,10 +112,10 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
                          pt(dp.pos()) + " (both integrands <= 0: the lattice is too coarse for so thin an ellipse)");
       }
       if (dp.iterations() >= guard) {  // it circles without turning: refuse, like a thin tip
-        throw InputError("the DDA cannot follow this rotated ellipse: a piece from " + pt(Point{c.x + cur.x, c.y + cur.y}) + " passed " +
-                         std::to_string(guard) + " iterations (a " + std::to_string(spec.a) + ", b " +
-                         std::to_string(spec.b) + ", angle " + format_degrees(spec.angle) + ", bits " +
-                         std::to_string(spec.bits) + ") without turning");
+        throw InputError("the DDA cannot follow this rotated ellipse: a piece from " +
+                         pt(Point{c.x + cur.x, c.y + cur.y}) + " passed " + std::to_string(guard) + " iterations (a " +
+                         std::to_string(spec.a) + ", b " + std::to_string(spec.b) + ", angle " +
+                         format_degrees(spec.angle) + ", bits " + std::to_string(spec.bits) + ") without turning");
       }
       dp.step();
       if (ray && ray->crossed(Point{dp.pos().x - c.x, dp.pos().y - c.y})) {
@@ -125,8 +127,8 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
     const auto between = [](std::int64_t lo, std::int64_t v, std::int64_t hi, int s) {
       return (v - lo) * s >= 0 && (hi - v) * s >= 0;
     };
-    const bool last = ray ? ray_end
-                          : !(p.full && first) && between(cur.x, rt.x, cut.x, sx) && between(cur.y, rt.y, cut.y, sy);
+    const bool last =
+        ray ? ray_end : !(p.full && first) && between(cur.x, rt.x, cut.x, sx) && between(cur.y, rt.y, cut.y, sy);
     const Point end = last && !ray ? rt : cut;
     cm.cnt_x = std::llabs(end.x - cur.x);
     cm.cnt_y = std::llabs(end.y - cur.y);
@@ -157,6 +159,5 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
     cur = cut;
   }
 }
-
 
 }  // namespace dda::detail

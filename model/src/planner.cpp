@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The planner: validation, end points, parametric angles, and the cut into pieces
 // (plan_quadrant.cpp, plan_rotated.cpp).
 #include "dda/planner.hpp"
@@ -74,7 +75,6 @@ i128 quad_form(const Coefficients& k, std::int64_t x, std::int64_t y) {
   return i128(k.qy) * x * x - 2 * i128(k.p) * x * y + i128(k.qx) * y * y;
 }
 
-
 }  // namespace
 
 FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
@@ -114,8 +114,7 @@ Scaled scaled_coefficients(const ArcSpec& spec, int n) {
   // 2^K / (a b 2^n) so that the capacity is 2^K, K = kRotCapBits, and rounded to
   // nearest. c, s are Q(kTrigFrac), so the products are Q(2 kTrigFrac).
   const SinCos f = sincos_udeg(spec.angle);
-  const i128 a2 = i128(a) * a, b2 = i128(b) * b, cc = i128(f.c) * f.c, ss = i128(f.s) * f.s,
-             cs = i128(f.c) * f.s;
+  const i128 a2 = i128(a) * a, b2 = i128(b) * b, cc = i128(f.c) * f.c, ss = i128(f.s) * f.s, cs = i128(f.c) * f.s;
   const int sh = 2 * kTrigFrac - (kRotCapBits - n);  // n >= 1 keeps it >= 32
   const i128 den = (i128(a) * b) << sh;
   r.k.p = std::int64_t(round_div(cs * (a2 - b2), den));
@@ -125,7 +124,6 @@ Scaled scaled_coefficients(const ArcSpec& spec, int n) {
   r.level = (i128(a) * b) << (kRotCapBits - n);
   return r;
 }
-
 
 }  // namespace
 
@@ -165,9 +163,8 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
 
 namespace {
 
-EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
-                       const std::optional<std::int64_t>& theta, std::int64_t default_theta,
-                       const std::optional<Point>& default_pnt) {
+EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, const std::optional<std::int64_t>& theta,
+                       std::int64_t default_theta, const std::optional<Point>& default_pnt) {
   if (pnt) return EndPoint{*pnt};
   if (!theta && default_pnt) return EndPoint{*default_pnt};
   const std::int64_t t = theta.value_or(default_theta);
@@ -179,7 +176,6 @@ EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt,
   }
   return e;
 }
-
 
 }  // namespace
 
@@ -196,21 +192,20 @@ Plan plan_arc(const ArcSpec& spec_in) {
   if (spec.bits == 0) spec.bits = default_bits(a, b);
   if (spec.bits < 1 || spec.bits > 61 || (std::int64_t{1} << spec.bits) < std::max(a, b)) {
     throw InputError("bits = " + std::to_string(spec.bits) +
-                     " is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is " +
-                     std::to_string(nmin) + ")");
+                     " is invalid: n must satisfy 2^n >= max(a, b) (smallest valid n here is " + std::to_string(nmin) +
+                     ")");
   }
   if (spec.bits > nmin + kMaxExtraBits) {
-    throw InputError("bits = " + std::to_string(spec.bits) + " is invalid: at most " +
-                     std::to_string(kMaxExtraBits) + " bits above the smallest valid width (" +
-                     std::to_string(nmin) + ") are accepted; each bit doubles the run");
+    throw InputError("bits = " + std::to_string(spec.bits) + " is invalid: at most " + std::to_string(kMaxExtraBits) +
+                     " bits above the smallest valid width (" + std::to_string(nmin) +
+                     ") are accepted; each bit doubles the run");
   }
   const std::int64_t ab = a * b;
   if (!p.rotated) {
     const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
     if (!cap || *cap >= kCapLimit) {
-      throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" +
-                       std::to_string(spec.bits) + " * " + std::to_string(a) + " * " +
-                       std::to_string(b) + " is out of range: it must be below 2^61");
+      throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" + std::to_string(spec.bits) + " * " +
+                       std::to_string(a) + " * " + std::to_string(b) + " is out of range: it must be below 2^61");
     }
   } else if (4 * __int128(std::min(a, b)) * std::min(a, b) <= std::max(a, b)) {
     std::ostringstream m;
@@ -258,8 +253,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
       std::ostringstream m;
       m.precision(4);
       m << std::fixed << name << " point " << pt(q) << " is " << d
-        << " steps from the ellipse: start and end must lie within " << kPointTolerance
-        << " step of it";
+        << " steps from the ellipse: start and end must lie within " << kPointTolerance << " step of it";
       throw InputError(m.str());
     }
   }

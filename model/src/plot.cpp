@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SVG picture of a path over its ideal ellipse (dda plot).
 #include <algorithm>
 #include <cmath>
@@ -64,11 +65,14 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
   const auto sy = [&](double y) { return T + (y1 - y) * scale; };
   const double dscale = std::max(1.0, dist[imax]);  // colour ramp 0..max(1, worst)
 
-  fmt::print(os, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" "
-                 "font-family=\"sans-serif\" font-size=\"13\">\n", L + W + R, T + H + B);
+  fmt::print(os,
+             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" "
+             "font-family=\"sans-serif\" font-size=\"13\">\n",
+             L + W + R, T + H + B);
   fmt::print(os, "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
   fmt::print(os, "<text x=\"{:.1f}\" y=\"24\" font-size=\"15\">{}</text>\n", L, title);
-  fmt::print(os, "<clipPath id=\"plot\"><rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\"/></clipPath>\n",
+  fmt::print(os,
+             "<clipPath id=\"plot\"><rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\"/></clipPath>\n",
              L, T, W, H);
   // Grid and ticks.
   const double step = tick_step(std::max(x1 - x0, y1 - y0), 8);
@@ -84,12 +88,15 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
     fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" stroke=\"none\" fill=\"black\">{}</text>\n",
                L - 6, sy(y) + 4, tick(y));
   }
-  fmt::print(os, "</g>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n",
-             L, T, W, H);
+  fmt::print(
+      os, "</g>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n",
+      L, T, W, H);
   fmt::print(os, "<text class=\"axis-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">x (steps)</text>\n",
              L + W / 2, T + H + 44);
-  fmt::print(os, "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
-                 "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n", T + H / 2, T + H / 2);
+  fmt::print(os,
+             "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
+             "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n",
+             T + H / 2, T + H / 2);
   // The ideal curve: the whole ellipse, sampled finely, clipped to the view.
   {
     const SinCos f = sincos_udeg(plan.spec.angle);
@@ -97,8 +104,9 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
     const double a = double(plan.spec.a), b = double(plan.spec.b);
     const double cx = double(plan.spec.center.x), cy = double(plan.spec.center.y);
     const int n = 4096;
-    fmt::print(os, "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
-                   "stroke-width=\"1.5\" points=\"");
+    fmt::print(os,
+               "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
+               "stroke-width=\"1.5\" points=\"");
     for (int k = 0; k <= n; ++k) {
       const double t = 2 * M_PI * k / n, u = a * std::cos(t), v = b * std::sin(t);
       fmt::print(os, "{:.2f},{:.2f} ", sx(cx + u * c - v * s), sy(cy + u * s + v * c));
@@ -114,25 +122,34 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
   const double r = std::clamp(0.3 * scale, 1.5, 7.0);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (i % every != 0 && i != imax) continue;
-    fmt::print(os, "<circle class=\"pt\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"{}\"><title>({},{}) {:.3f}</title></circle>\n",
+    fmt::print(os,
+               "<circle class=\"pt\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"{}\"><title>({},{}) "
+               "{:.3f}</title></circle>\n",
                sx(double(pts[i].x)), sy(double(pts[i].y)), r, ramp(dist[i] / dscale), pts[i].x, pts[i].y, dist[i]);
   }
   // The largest deviation.
   const Point& m = pts[imax];
-  fmt::print(os, "<circle class=\"max\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"/>\n",
+  fmt::print(os,
+             "<circle class=\"max\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"black\" "
+             "stroke-width=\"2\"/>\n",
              sx(double(m.x)), sy(double(m.y)), r + 5);
   const bool left = sx(double(m.x)) > L + W * 0.6;
-  fmt::print(os, "<text class=\"max-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"{}\" font-weight=\"bold\">max {:.2f} @ ({},{})</text>\n",
+  fmt::print(os,
+             "<text class=\"max-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"{}\" font-weight=\"bold\">max {:.2f} @ "
+             "({},{})</text>\n",
              sx(double(m.x)) + (left ? -(r + 9) : r + 9), sy(double(m.y)) - (r + 6), left ? "end" : "start", dist[imax],
              m.x, m.y);
   // Legend: the colour ramp with its scale.
   const double lx = L + W + 40, ly = T + 20, lh = 200;
-  fmt::print(os, "<g class=\"legend\">\n<text x=\"{:.1f}\" y=\"{:.1f}\">distance from</text>\n"
-                 "<text x=\"{:.1f}\" y=\"{:.1f}\">the ellipse (steps)</text>\n",
+  fmt::print(os,
+             "<g class=\"legend\">\n<text x=\"{:.1f}\" y=\"{:.1f}\">distance from</text>\n"
+             "<text x=\"{:.1f}\" y=\"{:.1f}\">the ellipse (steps)</text>\n",
              lx - 10, ly - 4, lx - 10, ly + 12);
   fmt::print(os, "<linearGradient id=\"ramp\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">");
   for (int k = 0; k <= 4; ++k) fmt::print(os, "<stop offset=\"{}\" stop-color=\"{}\"/>", k / 4.0, ramp(k / 4.0));
-  fmt::print(os, "</linearGradient>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"18\" height=\"{:.1f}\" fill=\"url(#ramp)\" stroke=\"black\"/>\n",
+  fmt::print(os,
+             "</linearGradient>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"18\" height=\"{:.1f}\" fill=\"url(#ramp)\" "
+             "stroke=\"black\"/>\n",
              lx, ly + 24, lh);
   for (int k = 0; k <= 4; ++k) {
     fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\">{:.2f}</text>\n", lx + 24, ly + 24 + lh - lh * k / 4.0 + 4,
@@ -140,7 +157,9 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
   }
   fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#888888\">grey: ideal curve</text>\n", lx - 10, ly + lh + 50);
   if (every > 1) {
-    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\">markers: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} points</text>\n",
+    fmt::print(os,
+               "<text x=\"{:.1f}\" y=\"{:.1f}\">markers: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} "
+               "points</text>\n",
                lx - 10, ly + lh + 70, every, lx - 10, ly + lh + 86, pts.size());
   }
   fmt::print(os, "</g>\n</svg>\n");

@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "dda/report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
 #include <cstdlib>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace dda {
 
@@ -39,12 +40,11 @@ std::vector<Row> rows(const Plan& plan, const RegState& init, const std::vector<
   std::vector<Row> v;
   v.reserve(iters.size() + 1);
   const Command& c = plan.cmd();
-  v.push_back({0, 0, init.jv_x, init.jr_x, init.jv_y, init.jr_y, init.cnt_x != 0, init.cnt_y != 0,
-               false, false, init.cnt_x, init.cnt_y, c.dir_x_neg, c.dir_y_neg, plan.from});
+  v.push_back({0, 0, init.jv_x, init.jr_x, init.jv_y, init.jr_y, init.cnt_x != 0, init.cnt_y != 0, false, false,
+               init.cnt_x, init.cnt_y, c.dir_x_neg, c.dir_y_neg, plan.from});
   for (const auto& it : iters) {
-    v.push_back({it.iter, it.piece, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y,
-                 it.step_x, it.step_y, it.after.cnt_x, it.after.cnt_y, it.dir_x_neg, it.dir_y_neg,
-                 it.pos});
+    v.push_back({it.iter, it.piece, it.jv_x, it.sum_x, it.jv_y, it.sum_y, it.active_x, it.active_y, it.step_x,
+                 it.step_y, it.after.cnt_x, it.after.cnt_y, it.dir_x_neg, it.dir_y_neg, it.pos});
   }
   return v;
 }
@@ -58,17 +58,15 @@ const char* sign(bool neg) { return neg ? "-" : "+"; }
 }  // namespace
 
 bool paper_columns(const Plan& plan) {
-  return plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
-         !plan.cmd().dir_y_neg;
+  return plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg && !plan.cmd().dir_y_neg;
 }
 
-void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
-                 TraceFormat fmt) {
+void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, TraceFormat fmt) {
   write_trace(os, plan, initial_regs(plan.cmd()), iters, fmt);
 }
 
-void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
-                 const std::vector<Iteration>& iters, TraceFormat fmt) {
+void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, const std::vector<Iteration>& iters,
+                 TraceFormat fmt) {
   const std::int64_t s = plan.scale;
   const bool paper = paper_columns(plan);
   if (fmt == TraceFormat::Csv) {
@@ -76,14 +74,12 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
                  : "iter,seg,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y,dir_x,dir_y,x,y\n");
     for (const Row& r : rows(plan, initial, iters)) {
       if (paper) {
-        fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s),
-                   acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s),
-                   acc_cell(r.ay, r.jry, s), r.dy, r.remy);
+        fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s),
+                   r.dx, r.remx, paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy, r.remy);
       } else {
-        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.piece,
-                   paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), r.dx, r.remx,
-                   paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy, r.remy, sign(r.negx),
-                   sign(r.negy), r.pos.x, r.pos.y);
+        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.piece, paper_units(r.jvx, s),
+                   acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy,
+                   r.remy, sign(r.negx), sign(r.negy), r.pos.x, r.pos.y);
       }
     }
     return;
@@ -91,8 +87,8 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
   if (fmt == TraceFormat::Table) {
     // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
     fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
-               plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload),
-               to_string(plan.spec.dir), plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+               plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload), to_string(plan.spec.dir),
+               plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
     const auto line = [&](auto... c) {
       fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |", c...);
     };
@@ -102,13 +98,12 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
        << (paper ? "\n" : "-----|------|--------|--------|\n");
     for (const Row& r : rows(plan, initial, iters)) {
       if (r.iter != 0 && !r.dx && !r.dy) continue;
-      line(r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), int(r.dx), r.remx,
-           paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), int(r.dy), r.remy);
+      line(r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), int(r.dx), r.remx, paper_units(r.jvy, s),
+           acc_cell(r.ay, r.jry, s), int(r.dy), r.remy);
       if (paper) {
         os << '\n';
       } else {
-        fmt::print(os, " {:>3} | {}{}   | {:>6} | {:>6} |\n", r.piece, sign(r.negx), sign(r.negy),
-                   r.pos.x, r.pos.y);
+        fmt::print(os, " {:>3} | {}{}   | {:>6} | {:>6} |\n", r.piece, sign(r.negx), sign(r.negy), r.pos.x, r.pos.y);
       }
     }
     return;
@@ -231,10 +226,10 @@ Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters) {
 
 void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat fmt) {
   if (fmt == StatsFormat::Text) {
-    fmt::print(os, "iterations: {}\nmoves: {}\npulses_x: {}\npulses_y: {}\npoints: {}\n",
-               s.iterations, s.moves, s.pulses_x, s.pulses_y, s.points);
-    fmt::print(os, "max_dev: {:.6f} at ({},{})\nmean_dev: {:.6f}\n", s.max_dev, s.max_dev_at.x,
-               s.max_dev_at.y, s.mean_dev);
+    fmt::print(os, "iterations: {}\nmoves: {}\npulses_x: {}\npulses_y: {}\npoints: {}\n", s.iterations, s.moves,
+               s.pulses_x, s.pulses_y, s.points);
+    fmt::print(os, "max_dev: {:.6f} at ({},{})\nmean_dev: {:.6f}\n", s.max_dev, s.max_dev_at.x, s.max_dev_at.y,
+               s.mean_dev);
     fmt::print(os, "bits: {}\npreload: {}\n", plan.spec.bits, to_string(plan.spec.preload));
     fmt::print(os, "from: ({},{})\nto: ({},{})\npieces: {}\n", plan.from.x, plan.from.y, plan.to.x, plan.to.y,
                plan.pieces.size());
@@ -259,8 +254,8 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
 
 std::string describe(const Plan& plan) {
   std::ostringstream s;
-  s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits
-    << " --preload " << to_string(plan.spec.preload);
+  s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits << " --preload "
+    << to_string(plan.spec.preload);
   if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;
   if (plan.spec.angle != 0) s << " --angle " << format_degrees(plan.spec.angle);
   if (plan.spec.dir != Direction::Ccw) s << " --dir cw";

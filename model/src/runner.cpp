@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The runner: a plan's pieces through the golden datapath, with the run-time guards.
 #include "dda/runner.hpp"
 
@@ -17,14 +18,15 @@ std::string pt(Point p) {
 
 // Runs piece k; iteration numbers continue from first_iter.
 RunSummary run_piece(const Plan& plan, std::size_t k, std::uint64_t first_iter,
-                       const std::function<void(const Iteration&)>* on_iter, bool for_validation) {
+                     const std::function<void(const Iteration&)>* on_iter, bool for_validation) {
   const Piece& pc = plan.pieces[k];
   Datapath dp(pc.cmd, pc.from);
   while (!dp.done()) {
     // An active axis' integrand must stay within [-cap, cap]: above cap an accumulator
     // could carry twice in one iteration. The planner refuses such an arc.
     const auto& rg = dp.regs();
-    for (const auto& [axis, active, jv] : {std::tuple{'X', rg.cnt_x != 0, rg.jv_x}, std::tuple{'Y', rg.cnt_y != 0, rg.jv_y}}) {
+    for (const auto& [axis, active, jv] :
+         {std::tuple{'X', rg.cnt_x != 0, rg.jv_x}, std::tuple{'Y', rg.cnt_y != 0, rg.jv_y}}) {
       if (active && (jv < -pc.cmd.cap || jv > pc.cmd.cap)) {
         std::ostringstream m;
         m << "end point " << pt(plan.to) << " is unreachable from " << pt(plan.from) << ": at " << pt(dp.pos())
@@ -39,16 +41,15 @@ RunSummary run_piece(const Plan& plan, std::size_t k, std::uint64_t first_iter,
       const char axis = (r.cnt_y != 0 && r.jv_y == 0) ? 'Y' : 'X';
       const std::int64_t owed = axis == 'Y' ? r.cnt_y : r.cnt_x;
       std::ostringstream m;
-      m << "end point " << pt(plan.to) << " is unreachable from " << pt(plan.from) << ": at "
-        << pt(dp.pos()) << " the " << axis << " integrand is 0 with " << owed << ' ' << axis
-        << " step(s) still owed (the DDA would never finish)";
+      m << "end point " << pt(plan.to) << " is unreachable from " << pt(plan.from) << ": at " << pt(dp.pos()) << " the "
+        << axis << " integrand is 0 with " << owed << ' ' << axis << " step(s) still owed (the DDA would never finish)";
       if (for_validation) throw InputError(m.str());
       throw GuardError("stall guard: " + m.str());
     }
     if (dp.iterations() >= pc.iteration_bound) {
       std::ostringstream m;
-      m << "iteration guard: the piece to " << pt(pc.to) << " reached its bound of "
-        << pc.iteration_bound << " iterations";
+      m << "iteration guard: the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound
+        << " iterations";
       throw GuardError(m.str());
     }
     if (!on_iter || !*on_iter) {
@@ -66,14 +67,12 @@ RunSummary run_piece(const Plan& plan, std::size_t k, std::uint64_t first_iter,
     (*on_iter)(it);
   }
   if (dp.pos() != pc.to) {
-    throw GuardError("end-point guard: the counters reached 0 at " + pt(dp.pos()) +
-                     " instead of " + pt(pc.to));
+    throw GuardError("end-point guard: the counters reached 0 at " + pt(dp.pos()) + " instead of " + pt(pc.to));
   }
   return RunSummary{dp.iterations(), dp.pos(), dp.regs()};
 }
 
-RunSummary run_impl(const Plan& plan, const std::function<void(const Iteration&)>* on_iter,
-                    bool for_validation) {
+RunSummary run_impl(const Plan& plan, const std::function<void(const Iteration&)>* on_iter, bool for_validation) {
   RunSummary total;
   for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
     const RunSummary r = run_piece(plan, k, total.iterations, on_iter, for_validation);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "dda_core.hpp"
 
 namespace dda::sc {
@@ -14,8 +15,7 @@ T field(const cmd_t& cmd, std::string_view name) {
 }
 }  // namespace
 
-dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrator)
-    : sc_core::sc_module(name) {
+dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrator) : sc_core::sc_module(name) {
   if (!make_integrator) {
     make_integrator = [](const char* n) { return std::make_unique<dda_integrator>(n); };
   }

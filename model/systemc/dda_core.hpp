@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Top of the SystemC model of the DDA core: same ports, registers and hierarchy as
 // rtl/dda_core.v (docs/design.md).
 #pragma once
@@ -35,14 +36,13 @@ SC_MODULE(dda_core) {
   sc_core::sc_signal<bool> dir_x_q{"dir_x_q"}, dir_y_q{"dir_y_q"};      // last step's
   sc_core::sc_signal<bool> step_x_q{"step_x_q"}, step_y_q{"step_y_q"};
 
-  void trace(sc_core::sc_trace_file* tf) const;
+  void trace(sc_core::sc_trace_file * tf) const;
 
  private:
   // Command fields (wires slicing cmd_i).
-  sc_core::sc_signal<acc_t> cmd_jv_x{"cmd_jv_x"}, cmd_jv_y{"cmd_jv_y"}, cmd_jr_x{"cmd_jr_x"},
-      cmd_jr_y{"cmd_jr_y"}, cmd_cap{"cmd_cap"}, cmd_inc_x_on_x{"cmd_inc_x_on_x"},
-      cmd_inc_x_on_y{"cmd_inc_x_on_y"}, cmd_inc_y_on_x{"cmd_inc_y_on_x"},
-      cmd_inc_y_on_y{"cmd_inc_y_on_y"};
+  sc_core::sc_signal<acc_t> cmd_jv_x{"cmd_jv_x"}, cmd_jv_y{"cmd_jv_y"}, cmd_jr_x{"cmd_jr_x"}, cmd_jr_y{"cmd_jr_y"},
+      cmd_cap{"cmd_cap"}, cmd_inc_x_on_x{"cmd_inc_x_on_x"}, cmd_inc_x_on_y{"cmd_inc_x_on_y"},
+      cmd_inc_y_on_x{"cmd_inc_y_on_x"}, cmd_inc_y_on_y{"cmd_inc_y_on_y"};
   sc_core::sc_signal<cnt_t> cmd_cnt_x{"cmd_cnt_x"}, cmd_cnt_y{"cmd_cnt_y"};
   sc_core::sc_signal<bool> cmd_dir_x{"cmd_dir_x"}, cmd_dir_y{"cmd_dir_y"};
   // Wires between the blocks.

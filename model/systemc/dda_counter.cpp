@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "dda_counter.hpp"
 
 namespace dda::sc {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control state machine: command handshake, iteration enable, done/err/iter pulses.
 // Mirrors rtl/dda_ctrl.v.
 #pragma once
@@ -22,14 +23,14 @@ SC_MODULE(dda_ctrl) {
 
   SC_CTOR(dda_ctrl) {
     SC_METHOD(comb);
-    sensitive << state_q << cmd_valid_i << ce_i << active_x_i << active_y_i << can_x_i
-              << can_y_i << last_x_i << last_y_i << done_q << err_q << iter_q;
+    sensitive << state_q << cmd_valid_i << ce_i << active_x_i << active_y_i << can_x_i << can_y_i << last_x_i
+              << last_y_i << done_q << err_q << iter_q;
     SC_METHOD(seq);
     sensitive << clk_i.pos();
     dont_initialize();
   }
 
-  void trace(sc_core::sc_trace_file* tf, const std::string& prefix) const;
+  void trace(sc_core::sc_trace_file * tf, const std::string& prefix) const;
 
  private:
   void comb();

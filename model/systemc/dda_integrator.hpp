@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One axis' integrator: integrand jv_q, accumulator jr_q, integrand corrections.
 // Mirrors rtl/dda_integrator.v register for register.
 #pragma once
@@ -13,9 +14,9 @@ SC_MODULE(dda_integrator) {
   sc_core::sc_in<bool> active_i;   // this axis' counter is non-zero
   sc_core::sc_in<acc_t> cap_i;
   sc_core::sc_in<acc_t> jv_i, jr_i, inc_on_x_i, inc_on_y_i;  // command fields
-  sc_core::sc_in<bool> ovf_x_i, ovf_y_i;  // both axes' carries of this iteration
-  sc_core::sc_out<bool> ovf_o;            // this axis carries
-  sc_core::sc_out<bool> can_o;            // active and jv_q != 0: can still carry
+  sc_core::sc_in<bool> ovf_x_i, ovf_y_i;                     // both axes' carries of this iteration
+  sc_core::sc_out<bool> ovf_o;                               // this axis carries
+  sc_core::sc_out<bool> can_o;                               // active and jv_q != 0: can still carry
 
   // Architectural registers.
   sc_core::sc_signal<acc_t> jv_q{"jv_q"}, jr_q{"jr_q"}, inc_on_x_q{"inc_on_x_q"}, inc_on_y_q{"inc_on_y_q"};
@@ -31,7 +32,7 @@ SC_MODULE(dda_integrator) {
   }
   virtual ~dda_integrator() = default;
 
-  void trace(sc_core::sc_trace_file* tf, const std::string& prefix) const;
+  void trace(sc_core::sc_trace_file * tf, const std::string& prefix) const;
 
  protected:
   // The carry test of the accumulator (compare-and-subtract overflow).

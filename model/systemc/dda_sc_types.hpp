@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Types of the SystemC model, sized from the single source of widths (hw_params.hpp).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FPGA wrapper for synthesis figures (scripts/synth): the command word is far wider
 // than a package's pins, so it is shifted in one bit per clock (cmd_bit_i while
 // cmd_shift_i is high, least significant bit first) and offered to the core with

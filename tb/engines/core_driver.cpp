@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core_driver.hpp"
 
 #include <sstream>
@@ -103,8 +104,8 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
     }
     if (CoreModel::err(post)) {
       std::ostringstream m;
-      m << "core raised err_o (stall) at cycle " << h.cycle() << " after " << res.iterations
-        << " iterations at (" << pos.x << ',' << pos.y << ')';
+      m << "core raised err_o (stall) at cycle " << h.cycle() << " after " << res.iterations << " iterations at ("
+        << pos.x << ',' << pos.y << ')';
       throw GuardError(m.str());
     }
     if (CoreModel::done(post)) {
@@ -116,9 +117,9 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
     }
     if (ce_edges > limit) {
       std::ostringstream m;
-      m << h.name() << ": watchdog: no done_o after " << ce_edges << " edges with ce_i high ("
-        << res.iterations << " iterations, piece " << running << " of " << npieces << ", at ("
-        << pos.x << ',' << pos.y << "), cycle " << h.cycle() << ")";
+      m << h.name() << ": watchdog: no done_o after " << ce_edges << " edges with ce_i high (" << res.iterations
+        << " iterations, piece " << running << " of " << npieces << ", at (" << pos.x << ',' << pos.y << "), cycle "
+        << h.cycle() << ")";
       throw GuardError(m.str());
     }
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Drives a DDA core (SystemC model or Verilated RTL) through arcs, clock by clock,
 // the way a user's system would: reset, command handshake, ce_i pattern. Engine
 // specific harnesses implement CoreHarness; the driving, sampling and checking is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cosim_harness.hpp"
 
 #include <verilated.h>
@@ -12,11 +13,9 @@ namespace dda::cosim {
 namespace {
 
 template <typename Core>
-void bind_outputs(Core& c, sc_core::sc_signal<bool>& ready, sc_core::sc_signal<bool>& sx,
-                  sc_core::sc_signal<bool>& dx, sc_core::sc_signal<bool>& sy,
-                  sc_core::sc_signal<bool>& dy, sc_core::sc_signal<bool>& busy,
-                  sc_core::sc_signal<bool>& done, sc_core::sc_signal<bool>& err,
-                  sc_core::sc_signal<bool>& iter) {
+void bind_outputs(Core& c, sc_core::sc_signal<bool>& ready, sc_core::sc_signal<bool>& sx, sc_core::sc_signal<bool>& dx,
+                  sc_core::sc_signal<bool>& sy, sc_core::sc_signal<bool>& dy, sc_core::sc_signal<bool>& busy,
+                  sc_core::sc_signal<bool>& done, sc_core::sc_signal<bool>& err, sc_core::sc_signal<bool>& iter) {
   c.cmd_ready_o(ready);
   c.step_x_o(sx);
   c.dir_x_o(dx);
@@ -38,15 +37,15 @@ CosimHarness::CosimHarness() {
   sc_->ce_i(ce_);
   sc_->cmd_valid_i(cmd_valid_);
   sc_->cmd_i(cmd_);
-  bind_outputs(*sc_, sc_out_.cmd_ready, sc_out_.step_x, sc_out_.dir_x, sc_out_.step_y,
-               sc_out_.dir_y, sc_out_.busy, sc_out_.done, sc_out_.err, sc_out_.iter);
+  bind_outputs(*sc_, sc_out_.cmd_ready, sc_out_.step_x, sc_out_.dir_x, sc_out_.step_y, sc_out_.dir_y, sc_out_.busy,
+               sc_out_.done, sc_out_.err, sc_out_.iter);
   rtl_->clk_i(clk_);
   rtl_->rst_ni(rst_n_);
   rtl_->ce_i(ce_);
   rtl_->cmd_valid_i(cmd_valid_);
   rtl_->cmd_i(cmd_);
-  bind_outputs(*rtl_, rtl_out_.cmd_ready, rtl_out_.step_x, rtl_out_.dir_x, rtl_out_.step_y,
-               rtl_out_.dir_y, rtl_out_.busy, rtl_out_.done, rtl_out_.err, rtl_out_.iter);
+  bind_outputs(*rtl_, rtl_out_.cmd_ready, rtl_out_.step_x, rtl_out_.dir_x, rtl_out_.step_y, rtl_out_.dir_y,
+               rtl_out_.busy, rtl_out_.done, rtl_out_.err, rtl_out_.iter);
   sc_sampler_ = std::make_unique<sc::ScSampler>(sc_->name(), hw::signal_table());
   rtl_sampler_ = std::make_unique<rtl::VlSampler>(*Verilated::threadContextp(), std::string(rtl_->name()) + ".dda_core",
                                                   hw::signal_table());
@@ -101,8 +100,8 @@ void CosimHarness::edge() {
   } else {
     for (const auto& o : outs) {
       if (o.a != o.b) {
-        m << "cosim mismatch at cycle " << edge_no << ": output " << o.name << ": " << o.a << " vs "
-          << o.b << " (systemc vs rtl)";
+        m << "cosim mismatch at cycle " << edge_no << ": output " << o.name << ": " << o.a << " vs " << o.b
+          << " (systemc vs rtl)";
         break;
       }
     }
@@ -110,6 +109,5 @@ void CosimHarness::edge() {
   if (!m.str().empty()) throw MismatchError(m.str());
   ++compared_;
 }
-
 
 }  // namespace dda::cosim

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Three-way co-simulation: the hand-written SystemC model and the Verilated RTL
 // (verilator --sc) on one sc_clock, driven by the same signals. After every clock edge
 // every signal of the register table and every output of the two is compared (a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "rtl_harness.hpp"
 
 #include <verilated.h>
@@ -8,8 +9,7 @@
 
 namespace dda::rtl {
 
-RtlHarness::RtlHarness(const std::string& vcd)
-    : ctx_(std::make_unique<VerilatedContext>()) {
+RtlHarness::RtlHarness(const std::string& vcd) : ctx_(std::make_unique<VerilatedContext>()) {
   ctx_->traceEverOn(!vcd.empty());
   top_ = std::make_unique<Vdda_core>(ctx_.get(), "dut");
   top_->clk_i = 0;

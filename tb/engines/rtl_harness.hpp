@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Verilated RTL (verilator --cc) in a C++ test bench: the CoreHarness interface the
 // shared driver and scoreboard use, with an optional VCD waveform. Each harness owns its
 // own VerilatedContext, so many can run in one process, one after another.

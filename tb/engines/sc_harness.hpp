@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The SystemC model in a test bench: clock, reset, command and ce_i signals, an
 // optional VCD, and the CoreHarness interface the shared driver uses. Elaborate one
 // per process (SystemC cannot elaborate twice); run many arcs through it.

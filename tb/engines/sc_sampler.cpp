@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sc_sampler.hpp"
 
 #include <systemc>
@@ -35,8 +36,8 @@ ScSampler::ScSampler(const std::string& core, const hw::SignalTable& table) {
                     try_bind<sc_dt::sc_uint<hw::kStateWidth>>(o, r.width, f, w);
     if (!ok) {
       throw GuardError("register table: the SystemC model's " + std::string(r.name) + " is " +
-                       (w ? std::to_string(w) + " bits wide" : std::string("of an unknown type")) + ", the table says " +
-                       std::to_string(r.width));
+                       (w ? std::to_string(w) + " bits wide" : std::string("of an unknown type")) +
+                       ", the table says " + std::to_string(r.width));
     }
     readers_.push_back(std::move(f));
   }

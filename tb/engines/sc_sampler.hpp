@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads the signals of the register table (hw_params.hpp) from a SystemC dda_core by
 // their hierarchical names, resolved once with sc_find_object: the table is the only
 // list of them. A name the model lacks, or a width that differs, is an error here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scoreboard.hpp"
 
 #include <sstream>
@@ -27,8 +28,8 @@ void Scoreboard::after_edge(const Signals& got, std::uint64_t cycle) {
       m << engine_ << " mismatch: register " << hw::kSignals[i].name << " at iteration " << iters_ << " (cycle "
         << cycle << "): golden " << want[i] << ", " << engine_ << ' ' << got[i];
     } else {  // the others of the same edge, in table order: the cause may be among them
-      m << (differ == 2 ? "; also " : ", ") << hw::kSignals[i].name << " (golden " << want[i] << ", " << engine_
-        << ' ' << got[i] << ')';
+      m << (differ == 2 ? "; also " : ", ") << hw::kSignals[i].name << " (golden " << want[i] << ", " << engine_ << ' '
+        << got[i] << ')';
     }
   }
   if (differ != 0) throw MismatchError(m.str());

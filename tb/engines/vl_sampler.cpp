@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vl_sampler.hpp"
 
 #include <verilated.h>
@@ -18,16 +19,25 @@ VlSampler::VlSampler(const VerilatedContext& ctx, const std::string& top, const 
     if (!v) throw GuardError("register table: the RTL has no public signal " + name + " (scope " + scope + ")");
     const int width = v->dims() == 0 ? 1 : v->packed().elements();
     if (width != r.width) {
-      throw GuardError("register table: the RTL's " + name + " is " + std::to_string(width) + " bits wide, the table says " +
-                       std::to_string(r.width));
+      throw GuardError("register table: the RTL's " + name + " is " + std::to_string(width) +
+                       " bits wide, the table says " + std::to_string(r.width));
     }
     int bytes = 0;
     switch (v->vltype()) {
-      case VLVT_UINT8: bytes = 1; break;
-      case VLVT_UINT16: bytes = 2; break;
-      case VLVT_UINT32: bytes = 4; break;
-      case VLVT_UINT64: bytes = 8; break;
-      default: throw GuardError("register table: the RTL's " + name + " is wider than 64 bits");
+      case VLVT_UINT8:
+        bytes = 1;
+        break;
+      case VLVT_UINT16:
+        bytes = 2;
+        break;
+      case VLVT_UINT32:
+        bytes = 4;
+        break;
+      case VLVT_UINT64:
+        bytes = 8;
+        break;
+      default:
+        throw GuardError("register table: the RTL's " + name + " is wider than 64 bits");
     }
     vars_.push_back(Var{v->datap(), bytes});
   }
@@ -38,10 +48,18 @@ Signals VlSampler::read() const {
   for (std::size_t i = 0; i < s.size() && i < vars_.size(); ++i) {
     std::uint64_t v = 0;
     switch (vars_[i].bytes) {
-      case 1: v = *static_cast<const std::uint8_t*>(vars_[i].p); break;
-      case 2: v = *static_cast<const std::uint16_t*>(vars_[i].p); break;
-      case 4: v = *static_cast<const std::uint32_t*>(vars_[i].p); break;
-      default: v = *static_cast<const std::uint64_t*>(vars_[i].p); break;
+      case 1:
+        v = *static_cast<const std::uint8_t*>(vars_[i].p);
+        break;
+      case 2:
+        v = *static_cast<const std::uint16_t*>(vars_[i].p);
+        break;
+      case 4:
+        v = *static_cast<const std::uint32_t*>(vars_[i].p);
+        break;
+      default:
+        v = *static_cast<const std::uint64_t*>(vars_[i].p);
+        break;
     }
     s[i] = v;
   }

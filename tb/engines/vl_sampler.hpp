@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads the signals of the register table (hw_params.hpp) from a Verilated dda_core
 // (--cc or --sc) by their hierarchical names, through Verilator's scope tables (the RTL
 // marks them public_flat_rd): the table is the only list of them. A name the RTL lacks,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Self-checking bench for a per-cycle vector set written by `dda vectors` (docs/vectors.md).
 // Runs unchanged under Icarus (iverilog -g2012 + vvp) and Verilator (--binary):
 //   +vectors=DIR   the vector set

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy sweep: the largest and mean distance of the path points from the ideal
 // ellipse over a fixed-seed set of arcs, per mode, split by aspect ratio. Prints a
 // Markdown table (scripts/accuracy-sweep.sh writes it into docs/results.md).
@@ -26,7 +27,10 @@ struct Acc {
   double worst = 0, sum = 0;
   long points = 0, arcs = 0;
   std::string worst_arc;
-  void add(double d) { sum += d; ++points; }
+  void add(double d) {
+    sum += d;
+    ++points;
+  }
 };
 
 // Largest and summed distance of an arc's points (start included) from its ellipse.
@@ -59,9 +63,12 @@ int main(int argc, char** argv) {
   std::int64_t max_axis = 32768;
   for (int i = 1; i + 1 < argc; i += 2) {
     char* end = nullptr;
-    if (!std::strcmp(argv[i], "--arcs")) arcs = std::strtol(argv[i + 1], &end, 10);
-    else if (!std::strcmp(argv[i], "--seed")) seed = std::strtoull(argv[i + 1], &end, 0);
-    else if (!std::strcmp(argv[i], "--max-axis")) max_axis = std::strtoll(argv[i + 1], &end, 10);
+    if (!std::strcmp(argv[i], "--arcs"))
+      arcs = std::strtol(argv[i + 1], &end, 10);
+    else if (!std::strcmp(argv[i], "--seed"))
+      seed = std::strtoull(argv[i + 1], &end, 0);
+    else if (!std::strcmp(argv[i], "--max-axis"))
+      max_axis = std::strtoll(argv[i + 1], &end, 10);
     if (!end || *end != '\0') {
       std::fprintf(stderr, "usage: accuracy_sweep [--arcs N] [--seed S] [--max-axis M]\n");
       return 2;
@@ -101,7 +108,9 @@ int main(int argc, char** argv) {
       } catch (const InputError& e) {
         ok = false;  // e.g. an unreachable end point: the same arc is skipped in both modes
         too_thin += std::string(e.what()).find("too thin") != std::string::npos;
-        if (std::getenv("DDA_SWEEP_VERBOSE")) std::fprintf(stderr, "refused (%s, %s): %s\n", to_string(sm.preload), turned ? "turned" : "axis-aligned", e.what());
+        if (std::getenv("DDA_SWEEP_VERBOSE"))
+          std::fprintf(stderr, "refused (%s, %s): %s\n", to_string(sm.preload), turned ? "turned" : "axis-aligned",
+                       e.what());
       }
     }
     if (!ok) {
@@ -135,25 +144,26 @@ int main(int argc, char** argv) {
   long pp = 0;
   measure(plan_arc(paper), pw, ps, pp);
 
-  std::printf("Sweep: %ld arcs (seed %llu; a, b log-uniform in [1, %lld], aspect ratio <= 1000, random "
-              "centre, start and end angles, both directions, half of them turned by a uniform angle, "
-              "default width = smallest valid + 4; %ld of %ld drawn arcs were refused by the planner "
-              "and skipped, %ld of them rotated ellipses too thin for the lattice).\n\n",
-              arcs, (unsigned long long)seed, (long long)max_axis, rejected, drawn, too_thin);
+  std::printf(
+      "Sweep: %ld arcs (seed %llu; a, b log-uniform in [1, %lld], aspect ratio <= 1000, random "
+      "centre, start and end angles, both directions, half of them turned by a uniform angle, "
+      "default width = smallest valid + 4; %ld of %ld drawn arcs were refused by the planner "
+      "and skipped, %ld of them rotated ellipses too thin for the lattice).\n\n",
+      arcs, (unsigned long long)seed, (long long)max_axis, rejected, drawn, too_thin);
   std::printf("| mode | aspect ratio | arcs | worst distance (steps) | mean distance (steps) | worst arc |\n");
   std::printf("|---|---|---|---|---|---|\n");
   const char* names[5] = {"zero preload (the paper), axis-aligned", "half preload (default mode), axis-aligned",
-                          "rotated, zero preload", "rotated, half preload",
-                          "rotated, half preload, max(a, b) >= 16"};
+                          "rotated, zero preload", "rotated, half preload", "rotated, half preload, max(a, b) >= 16"};
   for (int m = 0; m < 5; ++m) {
     for (int k = 0; k < 2; ++k) {
       const Acc& a = acc[m][k];
-      std::printf("| %s | %s | %ld | %.3f | %.3f | `%s` |\n", names[m], k == 0 ? "<= 4" : "4 to 1000",
-                  a.arcs, a.worst, a.points ? a.sum / double(a.points) : 0.0, a.worst_arc.c_str());
+      std::printf("| %s | %s | %ld | %.3f | %.3f | `%s` |\n", names[m], k == 0 ? "<= 4" : "4 to 1000", a.arcs, a.worst,
+                  a.points ? a.sum / double(a.points) : 0.0, a.worst_arc.c_str());
     }
   }
-  std::printf("| the paper's example (a = 10, b = 6, n = 4, zero preload) | 1.67 | 1 | %.3f | %.3f | "
-              "`--a 10 --b 6 --bits 4` |\n",
-              pw, ps / double(pp));
+  std::printf(
+      "| the paper's example (a = 10, b = 6, n = 4, zero preload) | 1.67 | 1 | %.3f | %.3f | "
+      "`--a 10 --b 6 --bits 4` |\n",
+      pw, ps / double(pp));
   return 0;
 }

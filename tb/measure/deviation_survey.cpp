@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Measures the golden model's drift: for random arcs (the property tests' distribution),
 // the largest distance of a path point from the ellipse minus the start-offset term
 // |r - 1| * max(a, b), binned by the larger semi-axis, per preload, next to the
@@ -17,7 +18,11 @@ int main(int argc, char** argv) {
   const std::uint64_t seed = argc > 1 ? std::strtoull(argv[1], nullptr, 0) : 1;
   const int arcs = argc > 2 ? std::atoi(argv[2]) : 20000;
   RandomArcs gen(seed, 4096);
-  struct Bin { double worst[2] = {0, 0}; double bound[2] = {1e9, 1e9}; int n = 0; };
+  struct Bin {
+    double worst[2] = {0, 0};
+    double bound[2] = {1e9, 1e9};
+    int n = 0;
+  };
   std::map<int, Bin> bins;
   for (int i = 0; i < arcs;) {
     const auto plan = gen.next();
@@ -40,8 +45,8 @@ int main(int argc, char** argv) {
   std::printf("| max(a,b) in | arcs | zero: worst drift | zero: E | half: worst drift | half: E |\n");
   std::printf("|---|---|---|---|---|---|\n");
   for (const auto& [k, bin] : bins) {
-    std::printf("| [%d, %d) | %d | %.3f | %.3f | %.3f | %.3f |\n", 1 << k, 2 << k, bin.n,
-                bin.worst[0], bin.bound[0], bin.worst[1], bin.bound[1]);
+    std::printf("| [%d, %d) | %d | %.3f | %.3f | %.3f | %.3f |\n", 1 << k, 2 << k, bin.n, bin.worst[0], bin.bound[0],
+                bin.worst[1], bin.bound[1]);
   }
 
   // Rotated ellipses (whole-ellipse draws turned by a uniform angle): the worst drift

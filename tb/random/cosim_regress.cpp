@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Regression of the three-way co-simulation (scripts/regress.sh).
 //   usage: cosim_regress [--arcs N] [--seed S]
 #include <systemc>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seeded random arc configurations shared by the property tests, the lockstep tests
 // and the regression scripts: a, b log-uniform in [1, max_axis], n uniform from the
 // smallest valid width to +8, both preloads; start and end points drawn on the quarter
@@ -25,8 +26,7 @@ enum class ArcKind {
 
 class RandomArcs {
  public:
-  RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max = 8,
-             ArcKind kind = ArcKind::Quarter);
+  RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max = 8, ArcKind kind = ArcKind::Quarter);
   // The next configuration, or nullopt when the drawn one was rejected by plan_arc
   // (an unreachable end point, for example); rejected() counts those.
   std::optional<Plan> next();

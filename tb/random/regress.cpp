@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "regress.hpp"
 
 #include <algorithm>
@@ -46,8 +47,7 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
       st.pieces += plan->pieces.size();
       if (!r.was_reset) {
         const Plan& p = *plan;
-        ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1]
-                           [p.spec.dir == Direction::Cw];
+        ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1][p.spec.dir == Direction::Cw];
         st.full += p.full;
         st.circles += p.spec.a == p.spec.b;
         st.turned += quarter_turns(p.spec) == 1 || quarter_turns(p.spec) == 3;
@@ -60,14 +60,13 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
         h.set_ce(true);
         h.tick();
         const Signals s = h.sample();
-        if (CoreModel::busy(s) || CoreModel::step_of(s) != Point{} || CoreModel::iterated(s) ||
-            CoreModel::done(s) || !h.cmd_ready()) {
+        if (CoreModel::busy(s) || CoreModel::step_of(s) != Point{} || CoreModel::iterated(s) || CoreModel::done(s) ||
+            !h.cmd_ready()) {
           throw MismatchError(std::string(h.name()) + " not idle after a reset");
         }
       }
     } catch (const GuardError& e) {
-      const std::string where = "arc " + std::to_string(st.arcs) + " (" + describe(*plan) +
-                                "): " + e.what();
+      const std::string where = "arc " + std::to_string(st.arcs) + " (" + describe(*plan) + "): " + e.what();
       if (dynamic_cast<const MismatchError*>(&e)) throw MismatchError(where);
       throw GuardError(where);
     }
@@ -100,19 +99,20 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
   }
   try {
     const MixedStats st = run_mixed(h, seed, arcs);
-    std::printf("%s regression: seed %llu: %ld arcs in %llu pieces (%llu with ce stalls, %llu reset "
-                "mid-arc), %llu iterations and %llu cycles compared, 0 mismatches\n",
-                h.name(), static_cast<unsigned long long>(seed), st.arcs,
-                static_cast<unsigned long long>(st.pieces), static_cast<unsigned long long>(st.ce_stalled),
-                static_cast<unsigned long long>(st.resets),
-                static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
-    std::printf("coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
-                "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
-                "with aspect ratio > 100\n",
-                st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin);
+    std::printf(
+        "%s regression: seed %llu: %ld arcs in %llu pieces (%llu with ce stalls, %llu reset "
+        "mid-arc), %llu iterations and %llu cycles compared, 0 mismatches\n",
+        h.name(), static_cast<unsigned long long>(seed), st.arcs, static_cast<unsigned long long>(st.pieces),
+        static_cast<unsigned long long>(st.ce_stalled), static_cast<unsigned long long>(st.resets),
+        static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
+    std::printf(
+        "coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
+        "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
+        "with aspect ratio > 100\n",
+        st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(),
-                 argv[0], static_cast<unsigned long long>(seed), arcs, e.what());
+    std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(), argv[0],
+                 static_cast<unsigned long long>(seed), arcs, e.what());
     return 1;
   }
   return 0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A regression loop shared by the engines' regression drivers: random arcs back to back
 // through one harness, in lockstep with the golden model, a share with random ce_i
 // stalls and a share reset halfway. Prints the numbers of arcs, iterations and cycles
@@ -23,9 +24,8 @@ struct MixedStats {
 
 // `arcs` random arcs back to back (a, b log-uniform in [1, 4096]; quarter arcs and
 // whole-ellipse arcs alternately), three in sixteen with random ce_i stalls, one in
-// eight reset on a random clock edge of the arc (half of those during stalls) (the load edge and ce_i stalls included), after
-// which the core must be idle and run the next arc. Throws on the first mismatch, with
-// the seed and the arc.
+// eight reset on a random clock edge of the arc (half of those during stalls) (the load edge and ce_i stalls included),
+// after which the core must be idle and run the next arc. Throws on the first mismatch, with the seed and the arc.
 MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs);
 
 int regress_main(CoreHarness& h, int argc, char* argv[]);

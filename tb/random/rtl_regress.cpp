@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Regression of the RTL (Verilator --cc) against the golden model (scripts/regress.sh).
 //   usage: rtl_regress [--arcs N] [--seed S]
 #include "regress.hpp"

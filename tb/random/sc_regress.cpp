@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Regression of the SystemC model against the golden model (scripts/regress.sh).
 //   usage: sc_regress [--arcs N] [--seed S]
 #include <systemc>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How far a plan's path may lie from its ideal ellipse (docs/golden-model.md,
 // "Deviation bound"): the documented bounds the property tests hold the runner to.
 #pragma once

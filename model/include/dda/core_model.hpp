@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cycle-level reference model of the core: the control of docs/design.md
 // ("Behaviour, edge by edge") around the golden datapath's next-state function, over
 // the register table of hw_params.hpp. The vector writer, the scoreboards and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hardware reference: one DDA command and the datapath's next-state function.
 //
 // Exact integer arithmetic only (no floating point). Independent of SystemC, Verilator
@@ -38,8 +39,8 @@ struct RegState {
   std::int64_t jr_x = 0, jr_y = 0;
   std::int64_t cnt_x = 0, cnt_y = 0;
   friend bool operator==(const RegState& p, const RegState& q) {
-    return p.jv_x == q.jv_x && p.jv_y == q.jv_y && p.jr_x == q.jr_x && p.jr_y == q.jr_y &&
-           p.cnt_x == q.cnt_x && p.cnt_y == q.cnt_y;
+    return p.jv_x == q.jv_x && p.jv_y == q.jv_y && p.jr_x == q.jr_x && p.jr_y == q.jr_y && p.cnt_x == q.cnt_x &&
+           p.cnt_y == q.cnt_y;
   }
 };
 
@@ -85,16 +86,16 @@ inline bool stalled(const RegState& r) {
 
 // One iteration: the datapath's inputs, intermediate sums and the registers after it.
 struct Iteration {
-  std::uint64_t iter = 0;           // 1-based, counted across the pieces of an arc
-  std::uint32_t piece = 0;          // index of the piece (command) it belongs to
+  std::uint64_t iter = 0;                     // 1-based, counted across the pieces of an arc
+  std::uint32_t piece = 0;                    // index of the piece (command) it belongs to
   bool dir_x_neg = false, dir_y_neg = false;  // step directions of that piece
-  bool active_x = false, active_y = false;  // counter was non-zero: the axis added
-  std::int64_t jv_x = 0, jv_y = 0;  // integrands used in this iteration
-  std::int64_t sum_x = 0, sum_y = 0;  // accumulator sums before overflow removal
-  bool step_x = false, step_y = false;  // overflow pulses
-  RegState after;                   // registers after the iteration (jv corrected); after a
-                                    // piece's last one, the next piece's loaded command
-  Point pos;                        // position after the iteration
+  bool active_x = false, active_y = false;    // counter was non-zero: the axis added
+  std::int64_t jv_x = 0, jv_y = 0;            // integrands used in this iteration
+  std::int64_t sum_x = 0, sum_y = 0;          // accumulator sums before overflow removal
+  bool step_x = false, step_y = false;        // overflow pulses
+  RegState after;                             // registers after the iteration (jv corrected); after a
+                                              // piece's last one, the next piece's loaded command
+  Point pos;                                  // position after the iteration
 };
 
 // The datapath running one command: one call of iterate() is one iteration.

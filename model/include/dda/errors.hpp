@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The two kinds of failure every component reports (the CLI maps them to exit codes).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Deterministic angles and trigonometry for the planner: the same bits on every machine.
 //
 // Angles are exact integers in micro-degrees (1e-6 degree), parsed from decimal text
@@ -12,7 +13,7 @@
 
 namespace dda {
 
-inline constexpr std::int64_t kMicroDeg = 1'000'000;       // micro-degrees per degree
+inline constexpr std::int64_t kMicroDeg = 1'000'000;        // micro-degrees per degree
 inline constexpr std::int64_t kFullTurn = 360 * kMicroDeg;  // one turn
 inline constexpr std::int64_t kQuarterTurn = 90 * kMicroDeg;
 

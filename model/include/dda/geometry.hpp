@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Geometry for measurement (floating point, never in the datapath).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden reference model of the ellipse DDA: the single definition of behaviour.
 //
 // The umbrella header of its components, which depend on each other in one direction:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The golden model's Command as the hardware's command word (fields of hw_params.hpp).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Single source of truth for every hardware width and command field.
 //
 // The SystemC model, the Verilator harnesses and the generated Verilog header
@@ -36,7 +37,7 @@ inline constexpr int kStateWidth = 1;
 
 // Command word: the fields of one arc command, packed LSB first in this order.
 struct Field {
-  std::string_view name;     // name in C++, SystemC and Verilog (cmd_<name>)
+  std::string_view name;  // name in C++, SystemC and Verilog (cmd_<name>)
   int width;
   std::string_view meaning;
 };
@@ -83,7 +84,7 @@ inline constexpr int kCmdWidth = cmd_width();
 // "registers: every consumer follows the table" fails while any of them lacks it.
 enum class SigKind { Reg, Probe };  // a flip-flop, or a combinational net
 struct Reg {
-  std::string_view name;      // hierarchical name below dda_core
+  std::string_view name;  // hierarchical name below dda_core
   int width;
   std::string_view meaning;
   std::string_view group = "";  // GTKWave group of the save files ("": not shown)
@@ -193,7 +194,7 @@ using SignalTable = std::vector<Reg>;
 inline SignalTable signal_table() { return SignalTable(kSignals.begin(), kSignals.end()); }
 
 // Text generated from the definitions above (model/src/hw_params.cpp).
-std::string verilog_header();   // rtl/dda_params.vh
+std::string verilog_header();                                        // rtl/dda_params.vh
 std::string markdown_tables(const SignalTable& t = signal_table());  // docs/design.md
 // GTKWave save file for a waveform whose core is at `top` (e.g. "SystemC.dut").
 std::string gtkw(const SignalTable& t, std::string_view file, std::string_view top);

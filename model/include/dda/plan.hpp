@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the planner (the driver software) produces: an arc's specification, its pieces
 // (one hardware command each) and the facts the runner and the reports need.
 #pragma once
@@ -23,10 +24,10 @@ const char* to_string(Direction d);
 // needs a radius of curvature at the tips, min(a,b)^2 / max(a,b), above 1/4 step.
 struct ArcSpec {
   std::int64_t a = 0, b = 0;
-  std::int64_t angle = 0;         // micro-degrees (fixed_trig.hpp), reduced modulo a turn
-  int bits = 0;                   // n: capacity 2^n in the paper's units; 0 = default_bits()
+  std::int64_t angle = 0;  // micro-degrees (fixed_trig.hpp), reduced modulo a turn
+  int bits = 0;            // n: capacity 2^n in the paper's units; 0 = default_bits()
   Preload preload = Preload::Zero;
-  Point center;                   // lattice point
+  Point center;  // lattice point
   Direction dir = Direction::Ccw;
   // Start and end: absolute lattice points, or parametric angles in micro-degrees
   // (exclusive with the point). Defaults: the quarter arc from the end of the a
@@ -40,7 +41,7 @@ struct ArcSpec {
 // path stalled short of one; those of a rotated ellipse where an axis turns.
 struct Piece {
   Point from, to;
-  int quadrant = 1;                   // 1..4: the quadrant (about the centre) it runs in
+  int quadrant = 1;  // 1..4: the quadrant (about the centre) it runs in
   Command cmd;
   std::uint64_t iteration_bound = 0;  // a run of this piece that passes it is stopped
 };
@@ -61,17 +62,17 @@ inline constexpr int kPosFrac = 32;
 
 // A validated arc: resolved points and bits, its pieces, and the guard bound.
 struct Plan {
-  ArcSpec spec;                    // with bits resolved
-  Point from, to;                  // lattice start and end
+  ArcSpec spec;    // with bits resolved
+  Point from, to;  // lattice start and end
   // The start the DDA represents: from + (frac_x, frac_y) / 2^kPosFrac. With half
   // preload and a parametric start it is the ideal curve point (the first piece's
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
-  bool full = false;               // one full turn: equal lattice ends or equal angles
-  bool rotated = false;            // angle not a multiple of 90 degrees
-  std::int64_t ax = 0, by = 0;     // quarter turns: semi-axes along X and Y (a, b swapped by
-                                   // odd turns); rotated: a and b
-  std::int64_t scale = 1;          // a*b: divide register values by it for paper units
+  bool full = false;            // one full turn: equal lattice ends or equal angles
+  bool rotated = false;         // angle not a multiple of 90 degrees
+  std::int64_t ax = 0, by = 0;  // quarter turns: semi-axes along X and Y (a, b swapped by
+                                // odd turns); rotated: a and b
+  std::int64_t scale = 1;       // a*b: divide register values by it for paper units
   Coefficients coef;
   std::vector<Piece> pieces;
   std::uint64_t iteration_bound = 0;  // sum of the pieces' bounds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The planner (driver software): validates an arc and cuts it into pieces, one
 // hardware command each (docs/golden-model.md). Uses the runner to check reachability.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Engine-independent views of a run: trace rows, path, statistics.
 //
 // Every engine (golden, SystemC, RTL) turns its run into a vector of Iteration records;
@@ -22,10 +23,9 @@ enum class TraceFormat { Csv, Table, Json };
 // command's own values). The paper's columns are printed for a one-piece
 // counter-clockwise quadrant-I arc about the origin; any other arc adds the piece, the
 // step directions and the position after each iteration.
-void write_trace(std::ostream& os, const Plan& plan, const RegState& initial,
-                 const std::vector<Iteration>& iters, TraceFormat fmt);
-void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters,
+void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, const std::vector<Iteration>& iters,
                  TraceFormat fmt);
+void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, TraceFormat fmt);
 bool paper_columns(const Plan& plan);
 
 // Lattice points of the path: the start, then the position after every move.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The runner: a plan's pieces through the golden datapath, one after another, with
 // the run-time guards. Depends on the datapath and the plan's types, not on the planner.
 #pragma once
