@@ -7,7 +7,8 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 verilator=${VERILATOR:-verilator}
 cd "$root"
-out=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt $(scripts/rtl-files.sh rtl/dda_core.f) --top-module dda_core 2>&1)
+export DDA_RTL=$root/rtl
+out=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/dda_core.f --top-module dda_core 2>&1)
 rc=$?
 [ -n "$out" ] && echo "$out"
 if [ $rc -ne 0 ] || echo "$out" | grep -Eq '%(Warning|Error)'; then

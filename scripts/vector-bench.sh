@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Runs the self-checking bench tb/vectors/dda_vec_tb.v on a vector set written by
+# Runs the self-checking bench tb/hdl/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
 #   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]
 #                                  [--sim icarus|verilator|both] DIR
@@ -30,12 +30,17 @@ set_dir=$(cd "$1" && pwd)
 out="$build/vec_bench"
 [ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
 mkdir -p "$out"
-mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$root/rtl/dda_core.f")
+# The RTL comes from its file list, rtl/dda_core.f, with DDA_RTL naming the folder
+# (a mutated copy is the same list pointed at another folder).
+export DDA_RTL=$rtl_dir
+flist=$root/rtl/dda_core.f
+mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$flist")
 srcs=("$root/tb/hdl/dda_vec_tb.v")
-for f in "${rtl_srcs[@]}"; do srcs+=("$rtl_dir/${f#"$root/rtl/"}"); done
 incs=(-I"$rtl_dir" -I"$root/rtl" -I"$root/tb/hdl")
 newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f" -nt "$t" ] && return 0; done; return 1; }
-deps=("${srcs[@]}" "$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh")
+deps=("${srcs[@]}" "$flist")
+for f in "${rtl_srcs[@]}"; do deps+=("$rtl_dir/${f#"$root/rtl/"}"); done
+deps+=("$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh")
 
 if [ -n "$corrupt_cycle" ]; then
   work=$(mktemp -d -t dda-vec-corrupt.XXXXXX)
@@ -63,13 +68,13 @@ for sim in $sims; do
   case "$sim" in
     icarus)
       bin="$out/dda_vec_tb.vvp"
-      if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${incs[@]}" -o "$bin" "${srcs[@]}"; fi
+      if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${incs[@]}" -o "$bin" "${srcs[@]}" -c "$flist"; fi
       run=("$vvp" -n "$bin" +vectors="$set_dir") ;;
     verilator)
       bin="$out/obj/dda_vec_tb"
       if newer "$bin" "${deps[@]}"; then
         "$verilator" --binary --assert -Wall "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
-          "${srcs[@]}" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
+          "${srcs[@]}" -f "$flist" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
       fi
       run=("$bin" +vectors="$set_dir") ;;
     *) echo "unknown simulator $sim" >&2; exit 2 ;;

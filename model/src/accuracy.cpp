@@ -27,7 +27,7 @@ double start_offset(const Plan& plan) {
 double deviation_bound(const Plan& plan) {
   const double m = double(std::max(plan.spec.a, plan.spec.b));
   if (plan.rotated) {
-    // Measured (build/tb/deviation_survey): half preload at the default width or more
+    // Measured (build/bin/deviation_survey): half preload at the default width or more
     // and aspect ratio <= 4 stays within 1 step; elsewhere no bound is documented.
     const bool covered = plan.spec.preload == Preload::Half &&
                          plan.spec.bits >= smallest_valid_bits(plan.spec.a, plan.spec.b) + 4 &&
