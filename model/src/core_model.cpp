@@ -2,6 +2,8 @@
 // The cycle-level reference model: the next-state code of every register of the table.
 #include "dda/core_model.hpp"
 
+#include <iterator>
+
 namespace dda {
 
 namespace {
@@ -22,9 +24,22 @@ constexpr std::size_t kState = sig("u_ctrl.state_q"), kDone = sig("u_ctrl.done_q
 constexpr std::size_t kErr = sig("u_ctrl.err_q"), kIter = sig("u_ctrl.iter_q");
 constexpr std::size_t kSumX = sig("u_int_x.sum"), kSumY = sig("u_int_y.sum");
 
-constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJvY,   kJrY,  kIncYX,
-                                    kIncYY, kCntX,  kCntY,  kCap,   kCdirX, kCdirY, kDirX, kDirY,
-                                    kStepX, kStepY, kState, kDone,  kErr,   kIter,  kSumX, kSumY};
+// What a load takes from the command word: register <- field.
+struct Load {
+  std::size_t reg, field;
+};
+constexpr Load kLoads[] = {
+    {kJvX, hw::field("jv_x")},         {kJvY, hw::field("jv_y")},         {kJrX, hw::field("jr_x")},
+    {kJrY, hw::field("jr_y")},         {kCap, hw::field("cap")},          {kCntX, hw::field("cnt_x")},
+    {kCntY, hw::field("cnt_y")},       {kCdirX, hw::field("dir_x")},      {kCdirY, hw::field("dir_y")},
+    {kIncXX, hw::field("inc_x_on_x")}, {kIncXY, hw::field("inc_x_on_y")}, {kIncYX, hw::field("inc_y_on_x")},
+    {kIncYY, hw::field("inc_y_on_y")},
+};
+static_assert(std::size(kLoads) == hw::kCmdFields.size(), "core_model.cpp: a command field is not loaded");
+
+constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJrY,  kIncYX, kIncYY,
+                                    kCntX,  kCntY,  kCap,   kCdirX, kCdirY, kDirX, kDirY,  kStepX,
+                                    kStepY, kState, kDone,  kErr,   kIter,  kSumX, kSumY};
 // Every signal of the table has its next-state code here.
 constexpr bool covers_table() {
   for (std::size_t i = 0; i < hw::kNumSignals; ++i) {
@@ -140,20 +155,7 @@ CoreEdge CoreModel::edge(const CoreInputs& in) {
   n[kIter] = e.iterate;
   n[kState] = e.load ? kRun : (e.finishing || e.stalled) ? kIdle : s_[kState];
   if (e.load) {  // the load wins over the last iteration's register updates
-    const auto f = [&](std::string_view name) { return in.cmd[hw::field(name)]; };
-    n[kJvX] = f("jv_x");
-    n[kJvY] = f("jv_y");
-    n[kJrX] = f("jr_x");
-    n[kJrY] = f("jr_y");
-    n[kCap] = f("cap");
-    n[kCntX] = f("cnt_x");
-    n[kCntY] = f("cnt_y");
-    n[kCdirX] = f("dir_x");
-    n[kCdirY] = f("dir_y");
-    n[kIncXX] = f("inc_x_on_x");
-    n[kIncXY] = f("inc_x_on_y");
-    n[kIncYX] = f("inc_y_on_x");
-    n[kIncYY] = f("inc_y_on_y");
+    for (const auto& l : kLoads) n[l.reg] = in.cmd[l.field];
   }
   s_ = n;
   settle();

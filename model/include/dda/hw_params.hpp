@@ -118,21 +118,25 @@ inline constexpr std::array<Reg, 23> kSignals{{
 }};
 inline constexpr std::size_t kNumSignals = kSignals.size();
 
-// Index of a signal in kSignals; a name not in the table does not compile where the
-// index is a constant expression (core_model.cpp).
-constexpr std::size_t sig(std::string_view name) {
-  for (std::size_t i = 0; i < kSignals.size(); ++i) {
-    if (kSignals[i].name == name) return i;
+// Index of the entry named `name` in one of the tables; a name not in the table does
+// not compile where the index is a constant expression (core_model.cpp).
+template <typename Table>
+constexpr std::size_t index_of(const Table& t, std::string_view name) {
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i].name == name) return i;
   }
-  throw "hw::sig: no such signal in kSignals";
+  throw "hw::index_of: no such name in the table";
 }
-constexpr std::size_t count_regs() {
+// How many entries of a table satisfy `pred`.
+template <typename Table, typename Pred>
+constexpr std::size_t count_if(const Table& t, Pred pred) {
   std::size_t n = 0;
-  for (const auto& r : kSignals) n += r.kind == SigKind::Reg;
+  for (const auto& e : t) n += pred(e) ? 1 : 0;
   return n;
 }
+constexpr std::size_t sig(std::string_view name) { return index_of(kSignals, name); }
 // The architectural registers come first in the table.
-inline constexpr std::size_t kNumRegisters = count_regs();
+inline constexpr std::size_t kNumRegisters = count_if(kSignals, [](const Reg& r) { return r.kind == SigKind::Reg; });
 constexpr bool regs_first() {
   for (std::size_t i = 0; i < kSignals.size(); ++i) {
     if ((kSignals[i].kind == SigKind::Reg) != (i < kNumRegisters)) return false;
@@ -167,26 +171,9 @@ inline constexpr std::array<Port, 14> kPorts{{
     {"err_o", 1, PortDir::Out, "a command stalled on the edge", "Control"},
     {"iter_o", 1, PortDir::Out, "an iteration happened on the edge", "Control"},
 }};
-constexpr std::size_t port(std::string_view name) {
-  for (std::size_t i = 0; i < kPorts.size(); ++i) {
-    if (kPorts[i].name == name) return i;
-  }
-  throw "hw::port: no such port in kPorts";
-}
-constexpr std::size_t count_outputs() {
-  std::size_t n = 0;
-  for (const auto& p : kPorts) n += p.dir == PortDir::Out;
-  return n;
-}
-inline constexpr std::size_t kNumOutputs = count_outputs();
-
-// Index of a command field in kCmdFields.
-constexpr std::size_t field(std::string_view name) {
-  for (std::size_t i = 0; i < kCmdFields.size(); ++i) {
-    if (kCmdFields[i].name == name) return i;
-  }
-  throw "hw::field: no such field in kCmdFields";
-}
+constexpr std::size_t port(std::string_view name) { return index_of(kPorts, name); }
+inline constexpr std::size_t kNumOutputs = count_if(kPorts, [](const Port& p) { return p.dir == PortDir::Out; });
+constexpr std::size_t field(std::string_view name) { return index_of(kCmdFields, name); }
 
 // A copy of the register table that the consumers' checks take (the drift test hands
 // them a changed copy).
