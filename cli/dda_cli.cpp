@@ -55,18 +55,23 @@ Point parse_point(const std::string& name, const std::string& s) {
 }
 
 struct ArcOptions {
-  std::string a, b, bits, preload = "zero", from, to, from_theta, to_theta, center, dir = "ccw", angle,
+  bool line = false;
+  std::string a, b, bits, preload = "half", from, to, from_theta, to_theta, center, dir = "ccw", angle,
                           engine = "golden", out, format, vcd;
 };
 
 void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, const std::string& default_format) {
   o.format = default_format;
-  sub->add_option("--a", o.a, "semi-axis a (positive integer, steps)")->required();
-  sub->add_option("--b", o.b, "semi-axis b (positive integer, steps)")->required();
+  sub->add_flag("--line", o.line,
+                "a straight line from --from to --to through the same core (constant integrands; with half "
+                "preload Bresenham's line); takes no ellipse option");
+  sub->add_option("--a", o.a, "semi-axis a (positive integer, steps; required for an ellipse)");
+  sub->add_option("--b", o.b, "semi-axis b (positive integer, steps; required for an ellipse)");
   sub->add_option("--bits", o.bits,
                   "accumulator width n: capacity 2^n, needs 2^n >= max(a,b) "
                   "(default: smallest valid + 4)");
-  sub->add_option("--preload", o.preload, "accumulator preload: zero (the paper, default) or half");
+  sub->add_option("--preload", o.preload,
+                  "accumulator preload: half (default: the accurate mode) or zero (the paper's mode)");
   sub->add_option("--center", o.center, "centre lattice point X,Y (default 0,0)");
   sub->add_option("--angle", o.angle,
                   "turn the ellipse counter-clockwise by DEG degrees about its centre, so the "
@@ -92,7 +97,30 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, c
   sub->add_option("--vcd", o.vcd, "write a waveform of the run to FILE (systemc, rtl engines)");
 }
 
+Preload parse_preload(const std::string& v) {
+  if (v == "zero") return Preload::Zero;
+  if (v == "half") return Preload::Half;
+  throw InputError("preload = '" + v + "' is invalid: use zero or half");
+}
+
+Plan make_line(const ArcOptions& o) {
+  for (const auto& [name, v] :
+       {std::pair{"a", &o.a}, std::pair{"b", &o.b}, std::pair{"bits", &o.bits}, std::pair{"center", &o.center},
+        std::pair{"angle", &o.angle}, std::pair{"from-theta", &o.from_theta}, std::pair{"to-theta", &o.to_theta}}) {
+    if (!v->empty())
+      throw InputError(std::string("--") + name + " is invalid with --line: a line takes --from and --to");
+  }
+  if (o.dir != "ccw") throw InputError("--dir is invalid with --line: a line runs from --from to --to");
+  if (o.from.empty() || o.to.empty()) throw InputError("--line needs --from X,Y and --to X,Y");
+  return plan_line(parse_point("from", o.from), parse_point("to", o.to), parse_preload(o.preload));
+}
+
 Plan make_plan(const ArcOptions& o) {
+  if (o.line) return make_line(o);
+  if (o.a.empty() || o.b.empty()) {
+    throw InputError(std::string("--") + (o.a.empty() ? "a" : "b") +
+                     " is required: an ellipse needs --a and --b (or give --line)");
+  }
   ArcSpec s;
   const char* pos = "a semi-axis must be a positive integer";
   s.a = parse_int("a", o.a, pos);
@@ -104,13 +132,7 @@ Plan make_plan(const ArcOptions& o) {
     }
     s.bits = static_cast<int>(bits);
   }
-  if (o.preload == "zero") {
-    s.preload = Preload::Zero;
-  } else if (o.preload == "half") {
-    s.preload = Preload::Half;
-  } else {
-    throw InputError("preload = '" + o.preload + "' is invalid: use zero or half");
-  }
+  s.preload = parse_preload(o.preload);
   if (o.dir == "ccw") {
     s.dir = Direction::Ccw;
   } else if (o.dir == "cw") {

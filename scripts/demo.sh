@@ -9,7 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 "$root/scripts/build.sh" >/dev/null
 dda="$build/bin/dda"
-args=(--a 10 --b 6 --bits 4)
+args=(--a 10 --b 6 --bits 4 --preload zero)  # the paper's mode (half preload is the default)
 out="$build/demo"
 mkdir -p "$out"
 

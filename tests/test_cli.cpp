@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -62,7 +63,7 @@ Result run_dda(const Scratch& s, const std::string& args) {
   return r;
 }
 
-const std::string kPaper = "--a 10 --b 6 --bits 4";
+const std::string kPaper = "--a 10 --b 6 --bits 4 --preload zero";  // the paper's mode, named
 
 std::string fmt_distance(const std::string& prefix, double d) {
   char buf[64];
@@ -196,7 +197,7 @@ TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "
 }
 
 TEST_CASE("cli: bad options", "[cli][errors]") {
-  expect_usage_error("trace " + kPaper + " --preload full", "preload = 'full' is invalid: use zero or half");
+  expect_usage_error("trace --a 10 --b 6 --bits 4 --preload full", "preload = 'full' is invalid: use zero or half");
   expect_usage_error("trace " + kPaper + " --format xml", "format = 'xml' is invalid: use one of csv, json, table");
   expect_usage_error("stats " + kPaper + " --format csv", "format = 'csv' is invalid");
   expect_usage_error("trace " + kPaper + " --engine spice", "engine = 'spice' is invalid");
@@ -422,4 +423,76 @@ TEST_CASE("cli: plot refuses to write to stdout and names bad formats", "[cli][p
   CHECK(r.err == "dda: error: plot needs --out FILE.svg: it writes a picture, not text\n");
   expect_usage_error("plot " + kPaper + " --format png", "format = 'png' is invalid");
   expect_usage_error("plot --a 10 --b 6 --bits 2", "bits = 2 is invalid");
+}
+
+// Issue 11: half preload is every subcommand's default; the paper's mode is named.
+TEST_CASE("cli: half preload is the default, the paper's mode is --preload zero", "[cli]") {
+  Scratch s;
+  const Result d = run_dda(s, "stats --a 10 --b 6 --bits 4");
+  CHECK(d.status == 0);
+  CHECK(d.out.find("preload: half\n") != std::string::npos);
+  const Result h = run_dda(s, "trace --a 10 --b 6 --bits 4 --preload half");
+  CHECK(run_dda(s, "trace --a 10 --b 6 --bits 4").out == h.out);
+  CHECK(run_dda(s, "trace " + kPaper).out != h.out);
+}
+
+// A straight line through the same core: Bresenham's line with half preload (every point
+// within half a step of the segment, checked here against the segment itself), the same
+// rows on every engine, cut into pieces past the counters' range, in vectors and plots.
+TEST_CASE("cli: --line runs on every engine, in vectors and in plots", "[cli][line]") {
+  Scratch s;
+  for (const std::string& line :
+       {std::string("--line --from 3,-2 --to -17,5"), std::string("--line --from 0,0 --to 0,9"),
+        std::string("--line --from 1,1 --to 140000,-70001 --preload zero")}) {
+    INFO(line);
+    const Result g = run_dda(s, "path " + line);
+    REQUIRE(g.status == 0);
+    for (const std::string engine : {"systemc", "rtl"}) {
+      INFO("engine " << engine);
+      CHECK(run_dda(s, "path " + line + " --engine " + engine).out == g.out);
+      CHECK(run_dda(s, "trace " + line + " --engine " + engine).out == run_dda(s, "trace " + line).out);
+    }
+  }
+  // Every point of the half-preload line within half a step of the segment, the ends exact.
+  const Result p = run_dda(s, "path --line --from 3,-2 --to -17,5 --format csv");
+  std::istringstream rows(p.out);
+  std::string row;
+  std::getline(rows, row);  // header
+  int n = 0;
+  long long x = 0, y = 0;
+  while (std::getline(rows, row)) {
+    long long i = 0;
+    char c1 = 0, c2 = 0;
+    std::istringstream(row) >> i >> c1 >> x >> c2 >> y;
+    // Distance from the infinite line through (3,-2) and (-17,5): |7 (x - 3) + 20 (y + 2)| / sqrt(449).
+    CHECK(std::abs(7.0 * double(x - 3) + 20.0 * double(y + 2)) / std::sqrt(449.0) <= 0.5);
+    ++n;
+  }
+  CHECK(n == 21);  // one iteration per step of the longer axis: 20 moves
+  CHECK(x == -17);
+  CHECK(y == 5);
+  const Result st = run_dda(s, "stats --line --from 1,1 --to 140000,-70001 --format json");
+  REQUIRE(st.status == 0);
+  const auto j = nlohmann::json::parse(st.out);
+  CHECK(j["pieces"] == 2);  // longer than the 17-bit counters
+  CHECK(j["max_dev"].get<double>() <= 0.5);
+  CHECK(j["iterations"] == 139999);
+  const Result t = run_dda(s, "trace --line --from 0,0 --to 7,3 --format table");
+  CHECK(t.out.find("units: steps (scaled values / the capacity 7)") != std::string::npos);
+  // Vectors and a plot of a line.
+  const auto dir = s.dir / "vec_line";
+  CHECK(run_dda(s, "vectors --line --from 0,0 --to 7,3 --out-dir " + dir.string()).status == 0);
+  CHECK(std::filesystem::exists(dir / "manifest.json"));
+  const auto svg = s.dir / "line.svg";
+  CHECK(run_dda(s, "plot --line --from 0,0 --to 7,3 --out " + svg.string()).status == 0);
+  CHECK(std::filesystem::file_size(svg) > 0);
+}
+
+TEST_CASE("cli: --line with ellipse options, or of length 0, is bad usage", "[cli][line][errors]") {
+  expect_usage_error("path --line --from 0,0 --to 0,0", "has length 0");
+  expect_usage_error("path --line --from 0,0 --to 5,1 --a 3", "--a is invalid with --line");
+  expect_usage_error("path --line --from 0,0 --to 5,1 --angle 30", "--angle is invalid with --line");
+  expect_usage_error("path --line --from 0,0 --to 5,1 --dir cw", "--dir is invalid with --line");
+  expect_usage_error("path --line --from 0,0", "--line needs --from X,Y and --to X,Y");
+  expect_usage_error("path --b 5 --from 0,0", "--a is required");
 }

@@ -97,8 +97,14 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
              "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
              "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n",
              T + H / 2, T + H / 2);
-  // The ideal curve: the whole ellipse, sampled finely, clipped to the view.
-  {
+  // The ideal curve: the whole ellipse, sampled finely, clipped to the view (a line:
+  // its segment).
+  if (plan.line) {
+    fmt::print(os,
+               "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
+               "stroke-width=\"1.5\" points=\"{:.2f},{:.2f} {:.2f},{:.2f}\"/>\n",
+               sx(double(plan.from.x)), sy(double(plan.from.y)), sx(double(plan.to.x)), sy(double(plan.to.y)));
+  } else {
     const SinCos f = sincos_udeg(plan.spec.angle);
     const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
     const double a = double(plan.spec.a), b = double(plan.spec.b);

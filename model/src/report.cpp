@@ -58,7 +58,8 @@ const char* sign(bool neg) { return neg ? "-" : "+"; }
 }  // namespace
 
 bool paper_columns(const Plan& plan) {
-  return plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg && !plan.cmd().dir_y_neg;
+  return !plan.line && plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
+         !plan.cmd().dir_y_neg;
 }
 
 void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, TraceFormat fmt) {
@@ -86,9 +87,14 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
   }
   if (fmt == TraceFormat::Table) {
     // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
-    fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
-               plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload), to_string(plan.spec.dir),
-               plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+    if (plan.line) {
+      fmt::print(os, "line preload={} from ({},{}) to ({},{}), units: steps (scaled values / the capacity {})\n",
+                 to_string(plan.spec.preload), plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+    } else {
+      fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
+                 plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload), to_string(plan.spec.dir),
+                 plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+    }
     const auto line = [&](auto... c) {
       fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |", c...);
     };
@@ -110,6 +116,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
   }
   // JSON: the full records, exact scaled integers.
   nlohmann::ordered_json j;
+  if (plan.line) j["line"] = true;
   j["a"] = plan.spec.a;
   j["b"] = plan.spec.b;
   j["bits"] = plan.spec.bits;
@@ -254,6 +261,11 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
 
 std::string describe(const Plan& plan) {
   std::ostringstream s;
+  if (plan.line) {
+    s << "--line --from " << plan.from.x << ',' << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y
+      << " --preload " << to_string(plan.spec.preload);
+    return s.str();
+  }
   s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits << " --preload "
     << to_string(plan.spec.preload);
   if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;

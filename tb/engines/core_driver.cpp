@@ -23,13 +23,21 @@ void CoreHarness::set_command(bool valid, const CmdFields& cmd) {
   apply(in_, valid);
 }
 
+const Signals& CoreHarness::sample() {
+  if (!have_last_) {
+    last_ = read_signals();
+    have_last_ = true;
+  }
+  return last_;
+}
+
 void CoreHarness::tick() {
   if (checking_ && !sb_) sb_ = std::make_unique<Scoreboard>(name());
   if (!checking_) sb_.reset();
-  if (sb_) sb_->before_edge(in_, cmd_ready(), cycle_);
-  edge();
+  const bool ready = edge();
   ++cycle_;
-  if (sb_) sb_->after_edge(sample(), cycle_);
+  have_last_ = false;
+  if (sb_) sb_->after_edge(in_, ready, sample(), cycle_);
 }
 
 void reset_core(CoreHarness& h, int cycles) {
@@ -71,7 +79,7 @@ DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt)
     const bool ready = offering && h.cmd_ready();
     const Signals pre = h.sample();
     h.tick();
-    const Signals post = h.sample();
+    const Signals& post = h.sample();
     if (ready) {
       if (!started) res.initial = CoreModel::datapath_regs(post);
       started = true;

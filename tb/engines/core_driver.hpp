@@ -27,8 +27,8 @@ class CoreHarness {
   virtual bool cmd_ready() = 0;
   // One rising edge of the clock; an attached scoreboard checks it.
   void tick();
-  // Every signal of the register table now.
-  virtual Signals sample() = 0;
+  // Every signal of the register table now (read once after each edge).
+  const Signals& sample();
   std::uint64_t cycle() const { return cycle_; }
   virtual const char* name() const = 0;  // "systemc", "rtl", "cosim"
   // Every edge is checked against the reference model from the harness' first edge
@@ -40,11 +40,15 @@ class CoreHarness {
 
  protected:
   virtual void apply(const CoreInputs& in, bool cmd_changed) = 0;
-  virtual void edge() = 0;
+  // One rising edge; returns cmd_ready_o as it was just before it (inputs settled).
+  virtual bool edge() = 0;
+  virtual Signals read_signals() = 0;
   std::uint64_t cycle_ = 0;
 
  private:
   CoreInputs in_;
+  Signals last_{};
+  bool have_last_ = false;  // last_ holds the signals since the last edge
   bool checking_ = true;
   std::unique_ptr<Scoreboard> sb_;
 };

@@ -25,7 +25,6 @@ class CosimHarness : public CoreHarness {
   ~CosimHarness() override;
 
   bool cmd_ready() override;
-  Signals sample() override { return sc_sample(); }
   const char* name() const override { return "cosim"; }
 
   Signals sc_sample() const { return sc_sampler_->read(); }
@@ -37,7 +36,8 @@ class CosimHarness : public CoreHarness {
 
  protected:
   void apply(const CoreInputs& in, bool cmd_changed) override;
-  void edge() override;
+  bool edge() override;
+  Signals read_signals() override { return sc_sample(); }
 
  private:
   sc_core::sc_clock clk_{"clk", 10, sc_core::SC_NS, 0.5, 5, sc_core::SC_NS, true};

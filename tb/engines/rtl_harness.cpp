@@ -53,16 +53,18 @@ bool RtlHarness::cmd_ready() {
   return top_->cmd_ready_o;
 }
 
-void RtlHarness::edge() {
+bool RtlHarness::edge() {
   // Inputs were set while the clock is low; a 10-unit period, rising edge in the middle.
   top_->clk_i = 0;
   top_->eval();
+  const bool ready = top_->cmd_ready_o;
   ctx_->timeInc(5);
   if (vcd_) vcd_->dump(ctx_->time());
   top_->clk_i = 1;
   top_->eval();
   ctx_->timeInc(5);
   if (vcd_) vcd_->dump(ctx_->time());
+  return ready;
 }
 
 }  // namespace dda::rtl

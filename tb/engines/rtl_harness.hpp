@@ -22,13 +22,13 @@ class RtlHarness : public CoreHarness {
   ~RtlHarness() override;
 
   bool cmd_ready() override;
-  Signals sample() override { return sampler_->read(); }
   const char* name() const override { return "rtl"; }
   void close_trace();
 
  protected:
   void apply(const CoreInputs& in, bool cmd_changed) override;
-  void edge() override;
+  bool edge() override;
+  Signals read_signals() override { return sampler_->read(); }
 
  private:
   std::unique_ptr<VerilatedContext> ctx_;

@@ -96,9 +96,11 @@ bool ScHarness::cmd_ready() {
   return cmd_ready_.read();
 }
 
-void ScHarness::edge() {
+bool ScHarness::edge() {
+  const bool ready = cmd_ready();
   // The clock's rising edges are at 5, 15, 25, ... ns: one period moves over one edge.
   sc_core::sc_start(10, sc_core::SC_NS);
+  return ready;
 }
 
 }  // namespace dda::sc

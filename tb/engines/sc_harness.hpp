@@ -26,7 +26,6 @@ class ScHarness : public CoreHarness {
   ~ScHarness() override;
 
   bool cmd_ready() override;
-  Signals sample() override { return sampler_->read(); }
   const char* name() const override { return "systemc"; }
 
   dda_core& core() { return *core_; }
@@ -35,7 +34,8 @@ class ScHarness : public CoreHarness {
 
  protected:
   void apply(const CoreInputs& in, bool cmd_changed) override;
-  void edge() override;
+  bool edge() override;
+  Signals read_signals() override { return sampler_->read(); }
 
  private:
   sc_core::sc_clock clk_{"clk", 10, sc_core::SC_NS, 0.5, 5, sc_core::SC_NS, true};

@@ -22,18 +22,17 @@ class MismatchError : public GuardError {
 class Scoreboard {
  public:
   explicit Scoreboard(std::string engine) : engine_(std::move(engine)) {}
-  // Before an edge: the inputs about to be clocked in and the engine's cmd_ready_o.
-  void before_edge(const CoreInputs& in, bool ready, std::uint64_t cycle);
-  // After it: the engine's signals. Throws MismatchError naming the first signal of the
-  // table that differs, the iteration, the cycle and both values.
-  void after_edge(const Signals& got, std::uint64_t cycle);
+  // After an edge: the inputs it clocked in, the engine's cmd_ready_o before it (with
+  // rst_ni high) and its signals after it. Throws MismatchError naming cmd_ready_o, or
+  // the first signal of the table that differs (and the others), the iteration, the
+  // cycle and the values.
+  void after_edge(const CoreInputs& in, bool ready, const Signals& got, std::uint64_t cycle);
   std::uint64_t iterations() const { return iters_; }
   const CoreModel& model() const { return model_; }
 
  private:
   std::string engine_;
   CoreModel model_;
-  CoreInputs in_;
   std::uint64_t iters_ = 0;
 };
 

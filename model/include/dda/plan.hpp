@@ -36,12 +36,18 @@ struct ArcSpec {
   std::optional<std::int64_t> from_theta, to_theta;
 };
 
+// What a piece draws: part of the ellipse, or a straight line (constant integrands, no
+// corrections; the capacity is the line's longer extent, so with half preload it is
+// Bresenham's line).
+enum class PieceKind { Arc, Line };
+
 // One monotone piece of an arc (each axis moves one way): one hardware command.
 // Pieces of an axis-aligned ellipse meet at its vertices (lattice points), or where the
 // path stalled short of one; those of a rotated ellipse where an axis turns.
 struct Piece {
   Point from, to;
   int quadrant = 1;  // 1..4: the quadrant (about the centre) it runs in
+  PieceKind kind = PieceKind::Arc;
   Command cmd;
   std::uint64_t iteration_bound = 0;  // a run of this piece that passes it is stopped
 };
@@ -68,11 +74,12 @@ struct Plan {
   // preload and a parametric start it is the ideal curve point (the first piece's
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
+  bool line = false;            // a straight line (plan_line), not an ellipse arc
   bool full = false;            // one full turn: equal lattice ends or equal angles
   bool rotated = false;         // angle not a multiple of 90 degrees
   std::int64_t ax = 0, by = 0;  // quarter turns: semi-axes along X and Y (a, b swapped by
                                 // odd turns); rotated: a and b
-  std::int64_t scale = 1;       // a*b: divide register values by it for paper units
+  std::int64_t scale = 1;       // a*b (a line: its capacity): divide register values by it
   Coefficients coef;
   std::vector<Piece> pieces;
   std::uint64_t iteration_bound = 0;  // sum of the pieces' bounds

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "dda/fixed_trig.hpp"
 #include "dda/plan.hpp"
@@ -28,6 +29,16 @@ inline constexpr double kPointTolerance = 1.0;
 
 // Validate and plan. Throws InputError naming the value and the rule it breaks.
 Plan plan_arc(const ArcSpec& spec);
+
+// A straight line from `from` to `to` (different lattice points) through the same core:
+// constant integrands |dx|, |dy|, no corrections, capacity max(|dx|, |dy|); with half
+// preload the path is Bresenham's line (every point within half a step of the segment),
+// with zero preload it lags by up to a step. A line longer than the hardware's counters
+// is cut into pieces whose preloads carry the line's running remainder, so the path is
+// the same as one piece's. Throws InputError for a line of length 0 or out of range.
+Plan plan_line(Point from, Point to, Preload preload);
+// The pieces of such a line (also used inside arcs, near their ends).
+std::vector<Piece> line_pieces(Point from, Point to, Preload preload);
 
 // The curve point of parametric angle theta (micro-degrees) relative to the centre, in
 // Q(kPosFrac): (a cos theta, b sin theta) turned by the spec's angle, computed with the
@@ -56,7 +67,8 @@ double coefficient_drift_bound(const Plan& plan);
 inline constexpr double kMaxCoefficientDrift = 0.125;
 
 // Distance (steps) of absolute point (x, y) from the plan's ideal ellipse (turned and
-// moved). Measurement only (floating point): not used by the datapath.
+// moved), or from a line's segment. Measurement only (floating point): not used by the
+// datapath.
 double plan_distance(const Plan& plan, double x, double y);
 
 }  // namespace dda
