@@ -28,7 +28,9 @@ std::string check_run(const Plan& plan) {
     const RunSummary s = run(plan, [&](const Iteration& it) {
       if (!err.str().empty()) return;
       const auto& r = it.after;
-      const std::int64_t cap = plan.pieces[it.piece].cmd.cap;
+      // After a piece's last iteration the registers are the next piece's loaded ones.
+      const bool next = it.piece_end && it.piece + 1 < plan.pieces.size();
+      const std::int64_t cap = plan.pieces[it.piece + (next ? 1 : 0)].cmd.cap;
       if (r.jr_x < 0 || r.jr_x >= cap || r.jr_y < 0 || r.jr_y >= cap) {
         err << "iteration " << it.iter << ": accumulator outside [0, cap) after overflow removal";
       }

@@ -14,7 +14,7 @@ namespace dda {
 
 double start_offset(const Plan& plan) {
   const double fx = std::ldexp(double(plan.frac_x), -kPosFrac), fy = std::ldexp(double(plan.frac_y), -kPosFrac);
-  double u = double(plan.from.x - plan.spec.center.x) + fx, v = double(plan.from.y - plan.spec.center.y) + fy;
+  double u = double(plan.arc_from.x - plan.spec.center.x) + fx, v = double(plan.arc_from.y - plan.spec.center.y) + fy;
   double a = double(plan.ax), b = double(plan.by);
   if (plan.rotated) {
     std::tie(u, v) = to_frame(plan.spec.angle, u, v);

@@ -179,6 +179,44 @@ EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, con
 
 }  // namespace
 
+namespace {
+
+// The parametric angle (micro-degrees) of the curve point nearest to lattice point q,
+// found with the deterministic fixed-point curve points (the same on every machine): the
+// best of 1440 samples, then a ternary search of the bracket around it to the micro-degree.
+std::int64_t nearest_theta(const ArcSpec& spec, Point q) {
+  const i128 qx = i128(q.x - spec.center.x) << kPosFrac, qy = i128(q.y - spec.center.y) << kPosFrac;
+  const auto d2 = [&](std::int64_t t) {
+    const FixedPoint f = theta_ideal(spec, t);
+    const i128 dx = f.x - qx, dy = f.y - qy;
+    return dx * dx + dy * dy;
+  };
+  constexpr int kSamples = 1440;
+  constexpr std::int64_t kStep = kFullTurn / kSamples;
+  std::int64_t best = 0;
+  i128 best_d = d2(0);
+  for (int k = 1; k < kSamples; ++k) {
+    const i128 d = d2(k * kStep);
+    if (d < best_d) best_d = d, best = k * kStep;
+  }
+  std::int64_t lo = best - kStep, hi = best + kStep;
+  while (hi - lo > 2) {
+    const std::int64_t m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (d2(m1) <= d2(m2)) {
+      hi = m2;
+    } else {
+      lo = m1;
+    }
+  }
+  std::int64_t t = lo;
+  for (std::int64_t k = lo + 1; k <= hi; ++k) {
+    if (d2(k) < d2(t)) t = k;
+  }
+  return normalize_udeg(t);
+}
+
+}  // namespace
+
 Plan plan_arc(const ArcSpec& spec_in) {
   Plan p;
   p.spec = spec_in;
@@ -261,19 +299,76 @@ Plan plan_arc(const ArcSpec& spec_in) {
   // found by the walk, so its lattice point is not known yet).
   p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
                          : p.from == p.to;
-  std::optional<RayEnd> ray;
+  const Point start = p.from, target = p.to;  // the path's own ends (target: lattice ends)
+  const bool half = spec.preload == Preload::Half;
+  // docs/golden-model.md, "Start and end points". With half preload a lattice start maps
+  // to the nearest point of the curve: the arc starts from the lattice point nearest to
+  // that point, the rest of it in the preloads (so the DDA follows the ideal curve, not
+  // the level set through the lattice start), after a lead-in line from the start if
+  // that lattice point is another one. A lattice end (half preload, or zero preload when
+  // the path cannot reach it by counting its steps) ends the arc where the path crosses
+  // the ray through the end's nearest curve point, and a lead-out line goes on to the
+  // end. A full turn closes with a line to its start.
+  EndPoint arc_from = from;
+  std::optional<std::int64_t> theta_start;
+  if (half && !spec.from_theta) {
+    theta_start = nearest_theta(spec, start);
+    arc_from = resolve_point(spec, std::nullopt, *theta_start, 0, std::nullopt);
+  }
+  const auto ray_to = [&](FixedPoint e) {
+    const Point s0 = arc_from.lattice;
+    const FixedPoint rep{((s0.x - c.x) << kPosFrac) + arc_from.fx, ((s0.y - c.y) << kPosFrac) + arc_from.fy};
+    return RayEnd(e, spec.dir, p.full, spec.from_theta ? theta_ideal(spec, *spec.from_theta) : rep,
+                  Point{s0.x - c.x, s0.y - c.y});
+  };
+  const auto plan_pieces = [&](std::optional<RayEnd> ray) {
+    p.pieces.clear();
+    p.iteration_bound = 0;
+    p.from = arc_from.lattice;  // the piece planners start at the arc's own start
+    p.to = target;
+    if (p.rotated) {
+      detail::plan_rotated_pieces(p, sc, arc_from, ray);
+    } else {
+      detail::plan_quadrant_pieces(p, sc.cap, arc_from, ray);
+    }
+  };
+  const auto end_ray = [&] {
+    const std::int64_t te = p.full && theta_start ? *theta_start : nearest_theta(spec, target);
+    return ray_to(theta_ideal(spec, te));
+  };
   if (spec.to_theta) {
-    const FixedPoint start{((p.from.x - c.x) << kPosFrac) + from.fx, ((p.from.y - c.y) << kPosFrac) + from.fy};
-    ray.emplace(theta_ideal(spec, *spec.to_theta), spec.dir, p.full,
-                spec.from_theta ? theta_ideal(spec, *spec.from_theta) : start, Point{p.from.x - c.x, p.from.y - c.y});
-  }
-  if (p.rotated) {
-    detail::plan_rotated_pieces(p, sc, from, ray);
+    plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
+  } else if (!p.full && nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
+    // Both ends map to the same point of the curve: the arc between them is the line.
+    p.pieces = line_pieces(start, target, spec.preload);
+  } else if (half) {
+    plan_pieces(end_ray());
   } else {
-    detail::plan_quadrant_pieces(p, sc.cap, from, ray);
+    try {  // zero preload: the path counts its steps to the lattice end, as in the paper
+      plan_pieces(std::nullopt);
+      p.from = start;
+      check_reachable(p);
+    } catch (const InputError&) {
+      plan_pieces(end_ray());
+    }
   }
-
-  if (ray) p.to = p.pieces.back().to;
+  // The lead-in and lead-out lines; a full turn given by angles closes on its start.
+  const Point arc_end = p.pieces.back().to;
+  const Point end = spec.to_theta && !p.full ? arc_end : p.full && spec.to_theta ? start : target;
+  if (arc_end != end) {
+    for (const Piece& l : line_pieces(arc_end, end, spec.preload)) p.pieces.push_back(l);
+  }
+  if (p.pieces.front().from != start) {
+    std::vector<Piece> v = line_pieces(start, p.pieces.front().from, spec.preload);
+    p.pieces.insert(p.pieces.begin(), v.begin(), v.end());
+  }
+  p.from = start;
+  p.to = end;
+  p.arc_from = arc_from.lattice;
+  p.frac_x = arc_from.fx;
+  p.frac_y = arc_from.fy;
+  p.iteration_bound = 0;
+  for (const Piece& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
   // Reachability: the exact model decides whether every piece ends (no stall).
   check_reachable(p);
   return p;
@@ -353,7 +448,7 @@ Plan plan_line(Point from, Point to, Preload preload) {
   p.spec.to = to;
   p.spec.preload = preload;
   p.spec.center = from;
-  p.from = from;
+  p.from = p.arc_from = from;
   p.to = to;
   p.pieces = line_pieces(from, to, preload);
   p.scale = p.pieces.front().cmd.cap;

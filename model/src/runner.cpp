@@ -59,7 +59,8 @@ RunSummary run_piece(const Plan& plan, std::size_t k, std::uint64_t first_iter,
     Iteration it = dp.iterate();
     // Back to back, the edge of a piece's last iteration also loads the next piece's
     // command: the registers after it are that command's.
-    if (dp.done() && k + 1 < plan.pieces.size()) it.after = initial_regs(plan.pieces[k + 1].cmd);
+    it.piece_end = dp.done();
+    if (it.piece_end && k + 1 < plan.pieces.size()) it.after = initial_regs(plan.pieces[k + 1].cmd);
     it.iter += first_iter;
     it.piece = static_cast<std::uint32_t>(k);
     it.dir_x_neg = pc.cmd.dir_x_neg;

@@ -88,6 +88,7 @@ inline bool stalled(const RegState& r) {
 struct Iteration {
   std::uint64_t iter = 0;                     // 1-based, counted across the pieces of an arc
   std::uint32_t piece = 0;                    // index of the piece (command) it belongs to
+  bool piece_end = false;                     // the piece's last iteration (set by the runner)
   bool dir_x_neg = false, dir_y_neg = false;  // step directions of that piece
   bool active_x = false, active_y = false;    // counter was non-zero: the axis added
   std::int64_t jv_x = 0, jv_y = 0;            // integrands used in this iteration

@@ -69,8 +69,9 @@ inline constexpr int kPosFrac = 32;
 // A validated arc: resolved points and bits, its pieces, and the guard bound.
 struct Plan {
   ArcSpec spec;    // with bits resolved
-  Point from, to;  // lattice start and end
-  // The start the DDA represents: from + (frac_x, frac_y) / 2^kPosFrac. With half
+  Point from, to;  // lattice start and end of the path
+  Point arc_from;  // lattice start of the arc proper (after a lead-in line)
+  // The start the DDA represents: arc_from + (frac_x, frac_y) / 2^kPosFrac. With half
   // preload and a parametric start it is the ideal curve point (the first piece's
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
