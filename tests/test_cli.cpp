@@ -527,3 +527,14 @@ TEST_CASE("cli: lattice ends that the counted path missed are reached, full turn
     }
   }
 }
+
+// Issue 11: the default width fits the hardware's fields whenever some width does.
+TEST_CASE("cli: the default width runs on the hardware engines", "[cli][engines]") {
+  Scratch s;
+  const Result g = run_dda(s, "stats --a 50000 --b 50000");
+  REQUIRE(g.status == 0);
+  CHECK(g.out.find("bits: 18\n") != std::string::npos);  // 2^18 * 50000^2 < 2^50
+  const Result r = run_dda(s, "stats --a 50000 --b 50000 --engine rtl");
+  CHECK(r.status == 0);
+  CHECK(r.out == g.out);
+}

@@ -40,9 +40,12 @@ int smallest_valid_bits(std::int64_t a, std::int64_t b) {
 }
 
 int default_bits(std::int64_t a, std::int64_t b) {
-  // Four bits above the smallest valid width, fewer if the capacity would leave range.
-  int n = smallest_valid_bits(a, b) + 4;
-  while (n > smallest_valid_bits(a, b) && (__int128(a) * b << n) >= (__int128(1) << 61)) --n;
+  // Four bits above the smallest valid width, fewer if the capacity 2^n a b would not fit
+  // the hardware's capacity field (below 2^(AccWidth-1)), so the default runs on every
+  // engine whenever some width does.
+  const int nmin = smallest_valid_bits(a, b);
+  int n = nmin + 4;
+  while (n > nmin && (__int128(a) * b << n) >= (__int128(1) << (hw::kAccWidth - 1))) --n;
   return n;
 }
 

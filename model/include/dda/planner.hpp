@@ -21,7 +21,7 @@ int smallest_valid_bits(std::int64_t a, std::int64_t b);
 inline constexpr int kMaxExtraBits = 16;
 // The width used when none is given: four bits above the smallest valid width, where
 // half preload does its best (spec: more bits change nothing), fewer if the capacity
-// 2^n a b would reach 2^61.
+// 2^n a b would not fit the hardware's AccWidth-bit capacity field.
 int default_bits(std::int64_t a, std::int64_t b);
 
 // Largest distance (in steps) a start or end point may lie from the ellipse.
