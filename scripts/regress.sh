@@ -1,22 +1,43 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Long regressions (not in the default test suite), each in lockstep with the golden
-# model, random arcs back to back, some with random ce_i stalls, some reset halfway:
-#   systemc  the SystemC model                       (default 2,000 arcs)
-#   rtl      the RTL under Verilator (--cc)          (default 100,000 arcs, about 40 min)
-#   cosim    SystemC model and RTL on one sc_clock   (default 2,000 arcs)
-# usage: scripts/regress.sh [systemc|rtl|cosim|all] [arcs] [seed]
+# Long regressions (not in the default test suite), each checked edge by edge against the
+# reference model: random arcs back to back (quarter arcs, whole-ellipse arcs and arcs as
+# programs give them, lines among them), some with random ce_i stalls, some reset on a
+# random edge:
+#   systemc  the SystemC model                       (default 2,000 cases)
+#   rtl      the RTL under Verilator (--cc)          (default 100,000 cases)
+#   cosim    SystemC model and RTL on one sc_clock   (default 2,000 cases)
+# usage: scripts/regress.sh [systemc|rtl|cosim|all] [cases] [seed] [shards]
+# With shards > 1 the cases are cut into that many shards (--shard I/N), run with GNU
+# parallel (one job per core; add e.g. --sshlogin to PARALLEL_OPTS to spread them over
+# hosts that have the same build), and their JSON totals merged: every case draws from
+# its own (seed, index) stream, so the merged totals equal one unsharded run's.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 "$root/scripts/build.sh" >/dev/null
 which=${1:-all}
 seed=${3:-1}
-run() { "$build/bin/$1" --arcs "$2" --seed "$seed"; }
+shards=${4:-1}
+run() {  # run PROGRAM CASES
+  local prog=$build/bin/$1 cases=$2
+  if [ "$shards" -le 1 ]; then
+    "$prog" --arcs "$cases" --seed "$seed"
+    return
+  fi
+  local work
+  work=$(mktemp -d -t dda-regress.XXXXXX)
+  # shellcheck disable=SC2086
+  parallel --will-cite ${PARALLEL_OPTS:-} --halt now,fail=1 --line-buffer \
+    "$prog" --arcs "$cases" --seed "$seed" --shard {}/"$shards" --json "$work/shard{}.json" \
+    ::: $(seq 0 $((shards - 1)))
+  "$prog" --merge "$work"/shard*.json
+  rm -rf "$work"
+}
 case "$which" in
   systemc) run sc_regress "${2:-2000}" ;;
   rtl) run rtl_regress "${2:-100000}" ;;
   cosim) run cosim_regress "${2:-2000}" ;;
   all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
-  *) echo "usage: $0 [systemc|rtl|cosim|all] [arcs] [seed]" >&2; exit 2 ;;
+  *) echo "usage: $0 [systemc|rtl|cosim|all] [cases] [seed] [shards]" >&2; exit 2 ;;
 esac

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 namespace dda {
 
@@ -12,10 +13,90 @@ std::uint64_t test_seed(std::uint64_t default_seed) {
   return default_seed;
 }
 
+std::uint64_t case_seed(std::uint64_t seed, std::uint64_t index) {
+  // SplitMix64 of the pair: well mixed, and independent of how the cases are sharded.
+  std::uint64_t z = seed * 0x9e3779b97f4a7c15ULL + index + 0x632be59bd9b4e019ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  const auto bad = [&] { return std::invalid_argument("shard '" + text + "' is invalid: use I/N with 0 <= I < N"); };
+  if (slash == std::string::npos) throw bad();
+  char* end = nullptr;
+  const std::string i = text.substr(0, slash), n = text.substr(slash + 1);
+  Shard s;
+  s.index = std::strtoull(i.c_str(), &end, 10);
+  if (i.empty() || *end != '\0') throw bad();
+  s.count = std::strtoull(n.c_str(), &end, 10);
+  if (n.empty() || *end != '\0' || s.count == 0 || s.index >= s.count) throw bad();
+  return s;
+}
+
 RandomArcs::RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max, ArcKind kind)
     : rng_(seed), max_axis_(max_axis), extra_bits_max_(extra_bits_max), kind_(kind) {}
 
+std::optional<Plan> RandomArcs::next_program() {
+  const auto uni = [&](std::uint64_t n) { return rng_() % n; };
+  const auto log_axis = [&]() {
+    const double u = double(uni(1u << 30)) / double(1u << 30);
+    const double v = std::exp(u * std::log(double(max_axis_)));
+    return std::max<std::int64_t>(1, std::min<std::int64_t>(max_axis_, std::int64_t(v + 0.5)));
+  };
+  const Preload pre = uni(2) ? Preload::Half : Preload::Zero;
+  const Point center{std::int64_t(uni(2001)) - 1000, std::int64_t(uni(2001)) - 1000};
+  try {
+    if (uni(8) == 0) {  // a line of any length up to the largest axis, any direction
+      drawn_ = Drawn::Line;
+      const std::int64_t m = log_axis();
+      Point to{center.x + std::int64_t(uni(std::uint64_t(2 * m + 1))) - m,
+               center.y + std::int64_t(uni(std::uint64_t(2 * m + 1))) - m};
+      if (to == center) to.x += 1;
+      return plan_line(center, to, pre);
+    }
+    ArcSpec s;
+    s.a = log_axis();
+    s.b = log_axis();
+    while (std::max(s.a, s.b) > 1000 * std::min(s.a, s.b)) {  // aspect ratio at most 1000
+      (s.a > s.b ? s.b : s.a) *= 2;
+    }
+    s.preload = pre;
+    s.center = center;
+    s.dir = uni(2) ? Direction::Cw : Direction::Ccw;
+    const bool rotated = uni(2) != 0;
+    s.angle = rotated ? std::int64_t(uni(std::uint64_t(kFullTurn))) : kQuarterTurn * std::int64_t(uni(4));
+    if (rotated && s.angle % kQuarterTurn == 0) s.angle += 1;
+    drawn_ = rotated ? Drawn::Rotated : Drawn::AxisAligned;
+    // Start and end: lattice points rounded from random points of the curve (the
+    // nearest lattice point to the fixed-point curve point); one in eight a full turn by
+    // point, one in eight a full turn by angle.
+    const auto theta = [&]() { return std::int64_t(uni(std::uint64_t(kFullTurn))); };
+    const auto rounded = [&](std::int64_t t) {
+      const FixedPoint f = theta_ideal(s, t);
+      const auto r = [](std::int64_t v) {
+        const std::int64_t half = std::int64_t{1} << (kPosFrac - 1);
+        return v < 0 ? -((-v + half) >> kPosFrac) : (v + half) >> kPosFrac;
+      };
+      return Point{s.center.x + r(f.x), s.center.y + r(f.y)};
+    };
+    const unsigned shape = unsigned(uni(8));
+    if (shape == 0) {
+      s.from_theta = s.to_theta = theta();
+    } else {
+      s.from = rounded(theta());
+      s.to = shape == 1 ? *s.from : rounded(theta());
+    }
+    return plan_arc(s);
+  } catch (const InputError&) {
+    ++rejected_;
+    return std::nullopt;
+  }
+}
+
 std::optional<Plan> RandomArcs::next() {
+  if (kind_ == ArcKind::Program) return next_program();
   // Floating point only shapes the draw (axis lengths, angles); what is drawn is an exact
   // integer configuration and describe() prints it, so a failure is reproducible from its
   // printed options even where another libm would round a draw differently.

@@ -22,7 +22,22 @@ enum class ArcKind {
   Quarter,  // quadrant I, counter-clockwise, sub-arcs of the quarter (the paper's case)
   Whole,    // any arc: random centre, start and end anywhere on the ellipse, both
             // directions, full turns, circles, quarter turns of the axes
+  Program,  // as part programs give them (issue 11): lattice start and end points
+            // rounded from random points of the curve, full turns by point and by angle,
+            // aspect ratios up to 1000, half of the ellipses rotated, and lines
 };
+
+// The seed of case `index` of a run seeded `seed`: every case draws from its own stream,
+// so a run cut into shards draws the same cases as one unsharded run.
+std::uint64_t case_seed(std::uint64_t seed, std::uint64_t index);
+
+// A shard "I/N" (0 <= I < N) of a run's cases: those whose index is I modulo N.
+struct Shard {
+  std::uint64_t index = 0, count = 1;
+  bool has(std::uint64_t case_index) const { return case_index % count == index; }
+};
+// Parses "I/N"; throws std::invalid_argument naming the rule.
+Shard parse_shard(const std::string& text);
 
 class RandomArcs {
  public:
@@ -31,6 +46,9 @@ class RandomArcs {
   // (an unreachable end point, for example); rejected() counts those.
   std::optional<Plan> next();
   std::uint64_t rejected() const { return rejected_; }
+  // Program arcs: the kind of the last draw, for the sweep's classes.
+  enum class Drawn { Line, AxisAligned, Rotated };
+  Drawn drawn() const { return drawn_; }
 
  private:
   std::mt19937_64 rng_;
@@ -38,6 +56,8 @@ class RandomArcs {
   int extra_bits_max_;
   ArcKind kind_;
   std::uint64_t rejected_ = 0;
+  Drawn drawn_ = Drawn::AxisAligned;
+  std::optional<Plan> next_program();
 };
 
 }  // namespace dda

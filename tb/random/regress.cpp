@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "regress.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dda/hw_params.hpp"
 #include "dda_random.hpp"
@@ -21,22 +26,113 @@ int MixedStats::pairs_covered() const {
   return n;
 }
 
-MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
-  RandomArcs quarter(seed, 4096), whole(seed + 1, 4096, 8, ArcKind::Whole);
-  std::mt19937_64 rng(seed ^ 0x5eedULL);
+void MixedStats::add(const MixedStats& o) {
+  arcs += o.arcs;
+  iterations += o.iterations;
+  cycles += o.cycles;
+  ce_stalled += o.ce_stalled;
+  resets += o.resets;
+  pieces += o.pieces;
+  line_pieces += o.line_pieces;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 2; ++k) quadrant_pairs[i][j][k] += o.quadrant_pairs[i][j][k];
+  full += o.full;
+  circles += o.circles;
+  turned += o.turned;
+  rotated += o.rotated;
+  thin += o.thin;
+  lines += o.lines;
+  program += o.program;
+  refused += o.refused;
+}
+
+namespace {
+
+nlohmann::json to_json(const MixedStats& st) {
+  nlohmann::json j;
+  j["arcs"] = st.arcs;
+  j["iterations"] = st.iterations;
+  j["cycles"] = st.cycles;
+  j["ce_stalled"] = st.ce_stalled;
+  j["resets"] = st.resets;
+  j["pieces"] = st.pieces;
+  j["line_pieces"] = st.line_pieces;
+  nlohmann::json q = nlohmann::json::array();
+  for (const auto& s : st.quadrant_pairs)
+    for (const auto& e : s)
+      for (const long v : e) q.push_back(v);
+  j["quadrant_pairs"] = q;
+  for (const auto& [k, v] :
+       {std::pair{"full", st.full}, std::pair{"circles", st.circles}, std::pair{"turned", st.turned},
+        std::pair{"rotated", st.rotated}, std::pair{"thin", st.thin}, std::pair{"lines", st.lines},
+        std::pair{"program", st.program}, std::pair{"refused", st.refused}}) {
+    j[k] = v;
+  }
+  return j;
+}
+
+MixedStats from_json(const nlohmann::json& j) {
+  MixedStats st;
+  st.arcs = j.at("arcs");
+  st.iterations = j.at("iterations");
+  st.cycles = j.at("cycles");
+  st.ce_stalled = j.at("ce_stalled");
+  st.resets = j.at("resets");
+  st.pieces = j.at("pieces");
+  st.line_pieces = j.at("line_pieces");
+  const auto& q = j.at("quadrant_pairs");
+  int n = 0;
+  for (auto& s : st.quadrant_pairs)
+    for (auto& e : s)
+      for (long& v : e) v = q.at(std::size_t(n++));
+  for (auto [k, v] : {std::pair{"full", &st.full}, std::pair{"circles", &st.circles}, std::pair{"turned", &st.turned},
+                      std::pair{"rotated", &st.rotated}, std::pair{"thin", &st.thin}, std::pair{"lines", &st.lines},
+                      std::pair{"program", &st.program}, std::pair{"refused", &st.refused}}) {
+    *v = j.at(k);
+  }
+  return st;
+}
+
+void print(const char* name, const std::string& what, const MixedStats& st) {
+  std::printf(
+      "%s regression: %s: %ld arcs in %llu pieces (%llu line pieces; %llu with ce stalls, %llu reset "
+      "mid-arc), %llu iterations and %llu cycles compared, 0 mismatches\n",
+      name, what.c_str(), st.arcs, static_cast<unsigned long long>(st.pieces),
+      static_cast<unsigned long long>(st.line_pieces), static_cast<unsigned long long>(st.ce_stalled),
+      static_cast<unsigned long long>(st.resets), static_cast<unsigned long long>(st.iterations),
+      static_cast<unsigned long long>(st.cycles));
+  std::printf(
+      "coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
+      "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
+      "with aspect ratio > 100, %ld lines, %ld arcs with lattice ends as programs give them; %ld "
+      "draws refused by the planner\n",
+      st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin, st.lines, st.program, st.refused);
+}
+
+}  // namespace
+
+MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long cases, Shard shard) {
   reset_core(h);
   MixedStats st;
-  while (st.arcs < arcs) {
-    const auto plan = (st.arcs % 2 ? whole : quarter).next();
-    if (!plan) continue;
+  for (long i = 0; i < cases; ++i) {
+    if (!shard.has(std::uint64_t(i))) continue;
+    const std::uint64_t cs = case_seed(seed, std::uint64_t(i));
+    const ArcKind kind = i % 3 == 0 ? ArcKind::Quarter : i % 3 == 1 ? ArcKind::Whole : ArcKind::Program;
+    RandomArcs gen(cs, 4096, 8, kind);
+    std::optional<Plan> plan;
+    while (!(plan = gen.next())) {
+    }
+    st.refused += long(gen.rejected());
+    std::mt19937_64 rng(cs ^ 0x5eedULL);
     DriveOptions opt;
     opt.keep_records = false;
-    const unsigned kind = unsigned(rng() % 8);
-    if (kind == 0 || (kind == 1 && rng() % 2)) {  // random ce_i stalls
+    const unsigned what = unsigned(rng() % 8);
+    if (what == 0 || (what == 1 && rng() % 2)) {  // random ce_i stalls
       opt.ce = [&](std::uint64_t) { return rng() % 4 != 0; };
       ++st.ce_stalled;
     }
-    if (kind == 1) {  // a reset on any edge the arc runs through (with ce high)
+    if (what == 1) {  // a reset on any edge the arc runs through (with ce high)
       const std::uint64_t span = run(*plan).iterations + 2 * plan->pieces.size() + 1;
       opt.reset_at_cycle = 1 + rng() % span;
     }
@@ -45,14 +141,19 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
       st.iterations += r.iterations;
       st.cycles += r.cycles;
       st.pieces += plan->pieces.size();
+      for (const Piece& pc : plan->pieces) st.line_pieces += pc.kind == PieceKind::Line;
       if (!r.was_reset) {
         const Plan& p = *plan;
         ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1][p.spec.dir == Direction::Cw];
-        st.full += p.full;
-        st.circles += p.spec.a == p.spec.b;
-        st.turned += quarter_turns(p.spec) == 1 || quarter_turns(p.spec) == 3;
-        st.rotated += p.rotated;
-        st.thin += std::max(p.spec.a, p.spec.b) > 100 * std::min(p.spec.a, p.spec.b);
+        st.lines += p.line;
+        st.program += kind == ArcKind::Program && !p.line;
+        if (!p.line) {
+          st.full += p.full;
+          st.circles += p.spec.a == p.spec.b;
+          st.turned += quarter_turns(p.spec) == 1 || quarter_turns(p.spec) == 3;
+          st.rotated += p.rotated;
+          st.thin += std::max(p.spec.a, p.spec.b) > 100 * std::min(p.spec.a, p.spec.b);
+        }
       }
       if (r.was_reset) {
         ++st.resets;
@@ -66,7 +167,7 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
         }
       }
     } catch (const GuardError& e) {
-      const std::string where = "arc " + std::to_string(st.arcs) + " (" + describe(*plan) + "): " + e.what();
+      const std::string where = "case " + std::to_string(i) + " (" + describe(*plan) + "): " + e.what();
       if (dynamic_cast<const MismatchError*>(&e)) throw MismatchError(where);
       throw GuardError(where);
     }
@@ -76,43 +177,54 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long arcs) {
 }
 
 int regress_main(CoreHarness& h, int argc, char* argv[]) {
-  long arcs = 2000;
+  CLI::App app{std::string(h.name()) + " regression against the reference model (scripts/regress.sh)"};
+  long cases = 2000;
   std::uint64_t seed = 1;
-  for (int i = 1; i < argc; i += 2) {
-    char* end = nullptr;
-    if (i + 1 < argc && !std::strcmp(argv[i], "--arcs")) {
-      arcs = std::strtol(argv[i + 1], &end, 10);
-      if (*end != '\0' || arcs < 1) {
-        std::fprintf(stderr, "%s: --arcs '%s' is invalid: a positive integer\n", argv[0], argv[i + 1]);
-        return 2;
-      }
-    } else if (i + 1 < argc && !std::strcmp(argv[i], "--seed")) {
-      seed = std::strtoull(argv[i + 1], &end, 0);
-      if (*end != '\0' || argv[i + 1][0] == '-' || argv[i + 1][0] == '\0') {
-        std::fprintf(stderr, "%s: --seed '%s' is invalid: a non-negative integer\n", argv[0], argv[i + 1]);
-        return 2;
-      }
-    } else {
-      std::fprintf(stderr, "usage: %s [--arcs N] [--seed S]\n", argv[0]);
-      return 2;
-    }
+  std::string shard_text = "0/1", json;
+  std::vector<std::string> merge;
+  app.add_option("--arcs", cases, "number of cases of the run (default 2000)")->check(CLI::PositiveNumber);
+  app.add_option("--seed", seed, "seed of the run (default 1)");
+  app.add_option("--shard", shard_text, "run only the cases I, I+N, I+2N, ... (I/N, default 0/1)");
+  app.add_option("--json", json, "also write the totals as JSON to FILE");
+  app.add_option("--merge", merge, "sum the JSON files of a run's shards and print the totals (runs nothing)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
   }
   try {
-    const MixedStats st = run_mixed(h, seed, arcs);
-    std::printf(
-        "%s regression: seed %llu: %ld arcs in %llu pieces (%llu with ce stalls, %llu reset "
-        "mid-arc), %llu iterations and %llu cycles compared, 0 mismatches\n",
-        h.name(), static_cast<unsigned long long>(seed), st.arcs, static_cast<unsigned long long>(st.pieces),
-        static_cast<unsigned long long>(st.ce_stalled), static_cast<unsigned long long>(st.resets),
-        static_cast<unsigned long long>(st.iterations), static_cast<unsigned long long>(st.cycles));
-    std::printf(
-        "coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
-        "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
-        "with aspect ratio > 100\n",
-        st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin);
+    if (!merge.empty()) {
+      MixedStats total;
+      std::string what;
+      for (const std::string& f : merge) {
+        std::ifstream in(f);
+        if (!in) throw std::runtime_error("cannot read " + f);
+        const nlohmann::json j = nlohmann::json::parse(in);
+        const std::string run = j.at("run");
+        if (!what.empty() && run != what) throw std::runtime_error(f + " is of another run: " + run + ", not " + what);
+        what = run;
+        total.add(from_json(j.at("totals")));
+      }
+      print(h.name(), what + ", " + std::to_string(merge.size()) + " shards merged", total);
+      return 0;
+    }
+    const Shard shard = parse_shard(shard_text);
+    const MixedStats st = run_mixed(h, seed, cases, shard);
+    const std::string run = "seed " + std::to_string(seed) + ", " + std::to_string(cases) + " cases";
+    print(h.name(), run + (shard.count > 1 ? ", shard " + shard_text : ""), st);
+    if (!json.empty()) {
+      nlohmann::json j;
+      j["engine"] = h.name();
+      j["run"] = run;
+      j["shard"] = shard_text;
+      j["totals"] = to_json(st);
+      std::ofstream out(json);
+      out << j.dump(1) << '\n';
+      if (!out) throw std::runtime_error("cannot write " + json);
+    }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld): %s\n", h.name(), argv[0],
-                 static_cast<unsigned long long>(seed), arcs, e.what());
+    std::fprintf(stderr, "%s regression: FAIL (rerun: %s --seed %llu --arcs %ld --shard %s): %s\n", h.name(), argv[0],
+                 static_cast<unsigned long long>(seed), cases, shard_text.c_str(), e.what());
     return 1;
   }
   return 0;
