@@ -69,6 +69,7 @@ std::optional<Plan> RandomArcs::next_program() {
     s.angle = rotated ? std::int64_t(uni(std::uint64_t(kFullTurn))) : kQuarterTurn * std::int64_t(uni(4));
     if (rotated && s.angle % kQuarterTurn == 0) s.angle += 1;
     drawn_ = rotated ? Drawn::Rotated : Drawn::AxisAligned;
+    drawn_thin_ = std::max(s.a, s.b) > 4 * std::min(s.a, s.b);
     // Start and end: lattice points rounded from random points of the curve (the
     // nearest lattice point to the fixed-point curve point); one in eight a full turn by
     // point, one in eight a full turn by angle.

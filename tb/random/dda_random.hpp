@@ -49,6 +49,7 @@ class RandomArcs {
   // Program arcs: the kind of the last draw, for the sweep's classes.
   enum class Drawn { Line, AxisAligned, Rotated };
   Drawn drawn() const { return drawn_; }
+  bool drawn_thin() const { return drawn_thin_; }  // aspect ratio above 4
 
  private:
   std::mt19937_64 rng_;
@@ -57,6 +58,7 @@ class RandomArcs {
   ArcKind kind_;
   std::uint64_t rejected_ = 0;
   Drawn drawn_ = Drawn::AxisAligned;
+  bool drawn_thin_ = false;
   std::optional<Plan> next_program();
 };
 
