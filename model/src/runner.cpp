@@ -47,10 +47,13 @@ RunSummary run_piece(const Plan& plan, std::size_t k, std::uint64_t first_iter,
       throw GuardError("stall guard: " + m.str());
     }
     if (dp.iterations() >= pc.iteration_bound) {
+      // While planning, a piece that passes its bound does not reach its end: the input's
+      // fault (the planner then tries another way, or refuses it); while running, a guard.
       std::ostringstream m;
-      m << "iteration guard: the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound
-        << " iterations";
-      throw GuardError(m.str());
+      m << "the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound << " iterations";
+      if (for_validation)
+        throw InputError("end point " + pt(plan.to) + " is unreachable from " + pt(plan.from) + ": " + m.str());
+      throw GuardError("iteration guard: " + m.str());
     }
     if (!on_iter || !*on_iter) {
       dp.step();

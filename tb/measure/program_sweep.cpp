@@ -178,7 +178,12 @@ int main(int argc, char** argv) {
     for (long i = 0; i < cases; ++i) {
       if (!shard.has(std::uint64_t(i))) continue;
       RandomArcs gen(case_seed(seed, std::uint64_t(i)), max_axis, 8, ArcKind::Program);
-      const auto drawn = gen.next();
+      std::optional<Plan> drawn;
+      try {
+        drawn = gen.next();
+      } catch (const GuardError& e) {  // a planner fault: name the case and stop
+        throw std::runtime_error("case " + std::to_string(i) + " (dda path " + gen.drawn_options() + "): " + e.what());
+      }
       if (!drawn) {  // refused: counted in the class drawn (a line, or an ellipse's kind)
         const auto k = gen.drawn();
         ++half[k == RandomArcs::Drawn::Line ? 0
@@ -197,6 +202,9 @@ int main(int argc, char** argv) {
           row.exact_ends += measure(p, row);
         } catch (const InputError&) {
           ++row.refused;
+        } catch (const GuardError& e) {
+          throw std::runtime_error("case " + std::to_string(i) + " (dda path " + describe(*drawn) + ", preload " +
+                                   (z ? "zero" : "half") + "): " + e.what());
         }
       }
     }

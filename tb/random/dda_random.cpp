@@ -54,6 +54,8 @@ std::optional<Plan> RandomArcs::next_program() {
       Point to{center.x + std::int64_t(uni(std::uint64_t(2 * m + 1))) - m,
                center.y + std::int64_t(uni(std::uint64_t(2 * m + 1))) - m};
       if (to == center) to.x += 1;
+      drawn_options_ = "--line --from " + std::to_string(center.x) + "," + std::to_string(center.y) + " --to " +
+                       std::to_string(to.x) + "," + std::to_string(to.y) + " --preload " + to_string(pre);
       return plan_line(center, to, pre);
     }
     ArcSpec s;
@@ -89,6 +91,13 @@ std::optional<Plan> RandomArcs::next_program() {
       s.from = rounded(theta());
       s.to = shape == 1 ? *s.from : rounded(theta());
     }
+    std::ostringstream o;
+    o << "--a " << s.a << " --b " << s.b << " --preload " << to_string(s.preload) << " --center " << s.center.x << ','
+      << s.center.y << " --angle " << format_degrees(s.angle) << " --dir " << to_string(s.dir);
+    if (s.from) o << " --from " << s.from->x << ',' << s.from->y << " --to " << s.to->x << ',' << s.to->y;
+    if (s.from_theta)
+      o << " --from-theta " << format_degrees(*s.from_theta) << " --to-theta " << format_degrees(*s.to_theta);
+    drawn_options_ = o.str();
     return plan_arc(s);
   } catch (const InputError&) {
     ++rejected_;

@@ -50,6 +50,8 @@ class RandomArcs {
   enum class Drawn { Line, AxisAligned, Rotated };
   Drawn drawn() const { return drawn_; }
   bool drawn_thin() const { return drawn_thin_; }  // aspect ratio above 4
+  // The options of the last draw (for a report when planning it failed).
+  const std::string& drawn_options() const { return drawn_options_; }
 
  private:
   std::mt19937_64 rng_;
@@ -59,6 +61,7 @@ class RandomArcs {
   std::uint64_t rejected_ = 0;
   Drawn drawn_ = Drawn::AxisAligned;
   bool drawn_thin_ = false;
+  std::string drawn_options_;
   std::optional<Plan> next_program();
 };
 
