@@ -435,7 +435,7 @@ TEST_CASE("cli: half preload is the default, the paper's mode is --preload zero"
 }
 
 // A straight line through the same core: Bresenham's line with half preload (every point
-// within half a step of the segment, checked here against the segment itself), the same
+// within half a step of the line between its ends, checked here against that line itself), the same
 // rows on every engine, cut into pieces past the counters' range, in vectors and plots.
 TEST_CASE("cli: --line runs on every engine, in vectors and in plots", "[cli][line]") {
   Scratch s;
@@ -451,7 +451,7 @@ TEST_CASE("cli: --line runs on every engine, in vectors and in plots", "[cli][li
       CHECK(run_dda(s, "trace " + line + " --engine " + engine).out == run_dda(s, "trace " + line).out);
     }
   }
-  // Every point of the half-preload line within half a step of the segment, the ends exact.
+  // Every point of the half-preload line within half a step of the line between its ends, the ends exact.
   const Result p = run_dda(s, "path --line --from 3,-2 --to -17,5 --format csv");
   std::istringstream rows(p.out);
   std::string row;

@@ -98,7 +98,7 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
              "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n",
              T + H / 2, T + H / 2);
   // The ideal curve: the whole ellipse, sampled finely, clipped to the view (a line:
-  // its segment).
+  // the line between its ends).
   if (plan.line) {
     fmt::print(os,
                "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "

@@ -4,7 +4,7 @@
 // aspect ratios up to 1000, half of the ellipses rotated, and lines; a, b log-uniform in
 // [1, M], default width. Every case runs with half preload (the accuracy targets) and,
 // every fourth case, with zero preload (reported). Per class: cases, refusals, the worst
-// and mean distance of every path point from the ideal curve (a line: from its segment)
+// and mean distance of every path point from the ideal curve (a line: from the line between its ends)
 // with the case that gave the worst, whether every path started and ended on its points
 // (full turns: closed), and the share of the arcs' steps that ran in line pieces.
 //   usage: program_sweep [--cases N] [--seed S] [--max-axis M] [--shard I/N] [--json FILE]

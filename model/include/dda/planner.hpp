@@ -32,7 +32,7 @@ Plan plan_arc(const ArcSpec& spec);
 
 // A straight line from `from` to `to` (different lattice points) through the same core:
 // constant integrands |dx|, |dy|, no corrections, capacity max(|dx|, |dy|); with half
-// preload the path is Bresenham's line (every point within half a step of the segment),
+// preload the path is Bresenham's line (every point within half a step of the line between its ends),
 // with zero preload it lags by up to a step. A line longer than the hardware's counters
 // is cut into pieces whose preloads carry the line's running remainder, so the path is
 // the same as one piece's. Throws InputError for a line of length 0 or out of range.
@@ -67,7 +67,7 @@ double coefficient_drift_bound(const Plan& plan);
 inline constexpr double kMaxCoefficientDrift = 0.125;
 
 // Distance (steps) of absolute point (x, y) from the plan's ideal ellipse (turned and
-// moved), or from a line's segment. Measurement only (floating point): not used by the
+// moved), or from a line between its ends. Measurement only (floating point): not used by the
 // datapath.
 double plan_distance(const Plan& plan, double x, double y);
 
