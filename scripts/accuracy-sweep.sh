@@ -11,13 +11,4 @@ build=${DDA_BUILD_DIR:-$root/build}
 arcs=${1:-2000} seed=${2:-2026}
 table=$("$build/bin/accuracy_sweep" --arcs "$arcs" --seed "$seed")
 echo "$table"
-doc="$root/docs/results.md"
-begin='<!-- BEGIN GENERATED: scripts/accuracy-sweep.sh -->'
-end='<!-- END GENERATED: scripts/accuracy-sweep.sh -->'
-tmp=$(mktemp)
-awk -v b="$begin" -v e="$end" -v t="$table" -v cmd="scripts/accuracy-sweep.sh $arcs $seed" '
-  $0 == b { print; print "Command: `" cmd "`, " strftime("%Y-%m-%d") "."; print ""; print t; skip = 1; next }
-  $0 == e { skip = 0 }
-  !skip { print }' "$doc" > "$tmp"
-mv "$tmp" "$doc"
-echo "wrote the table into docs/results.md"
+echo "$table" | "$root/scripts/results-table.sh" scripts/accuracy-sweep.sh "scripts/accuracy-sweep.sh $arcs $seed"

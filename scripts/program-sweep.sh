@@ -18,14 +18,4 @@ parallel --will-cite ${PARALLEL_OPTS:-} --halt now,fail=1 \
   ::: $(seq 0 $((shards - 1)))
 table=$("$build/bin/program_sweep" --merge "$work"/s*.json)
 echo "$table"
-doc="$root/docs/results.md"
-begin='<!-- BEGIN GENERATED: scripts/program-sweep.sh -->'
-end='<!-- END GENERATED: scripts/program-sweep.sh -->'
-grep -qF "$begin" "$doc" || { echo "program-sweep: $doc has no $begin marker" >&2; exit 1; }
-tmp=$(mktemp)
-awk -v b="$begin" -v e="$end" -v t="$table" -v cmd="scripts/program-sweep.sh $cases $seed $shards" '
-  $0 == b { print; print "Command: `" cmd "`, " strftime("%Y-%m-%d") "."; print ""; print t; skip = 1; next }
-  $0 == e { skip = 0 }
-  !skip { print }' "$doc" > "$tmp"
-mv "$tmp" "$doc"
-echo "wrote the table into docs/results.md"
+echo "$table" | "$root/scripts/results-table.sh" scripts/program-sweep.sh "scripts/program-sweep.sh $cases $seed $shards"
