@@ -21,7 +21,7 @@ TEST_CASE("cosim: paper example, both models equal every cycle and to the golden
   CHECK(h.compared_cycles() >= 27);
 }
 
-TEST_CASE("cosim: 100 random arcs (quarter and whole ellipses) back to back with ce stalls and resets",
+TEST_CASE("cosim: 100 random arcs (quarter, whole, as programs give them) back to back with ce stalls and resets",
           "[cosim][random]") {
   cosim::CosimHarness h;
   const std::uint64_t seed = test_seed(51);
@@ -31,6 +31,7 @@ TEST_CASE("cosim: 100 random arcs (quarter and whole ellipses) back to back with
   CHECK(st.arcs == 100);
   CHECK(st.ce_stalled > 0);
   CHECK(st.resets > 0);
+  CHECK(st.line_pieces > 0);  // lines and the lines next to arcs' ends ran too
 }
 
 TEST_CASE("cosim: reset in the middle of an arc, then the next command", "[cosim]") {

@@ -22,6 +22,12 @@ TEST_CASE("rtl: 300 random whole-ellipse arcs (every quadrant, both directions) 
   random_arcs(h, test_seed(43), 300, ArcKind::Whole);
 }
 
+TEST_CASE("rtl: 300 random arcs as part programs give them (lattice ends, full turns, lines) in lockstep",
+          "[rtl][random]") {
+  rtl::RtlHarness h;
+  random_arcs(h, test_seed(45), 300, ArcKind::Program);
+}
+
 TEST_CASE("rtl: a random ce pattern stretches the same pulse sequence", "[rtl][random]") {
   rtl::RtlHarness h;
   ce_stretch(h, test_seed(6), 40);

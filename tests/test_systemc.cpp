@@ -36,6 +36,12 @@ TEST_CASE("systemc: 60 random whole-ellipse arcs in lockstep with the golden mod
   random_arcs(h, test_seed(33), 60, ArcKind::Whole);
 }
 
+TEST_CASE("systemc: 60 random arcs as part programs give them (lattice ends, full turns, lines) in lockstep",
+          "[systemc][random]") {
+  sc::ScHarness h;
+  random_arcs(h, test_seed(35), 60, ArcKind::Program);
+}
+
 TEST_CASE("systemc: a random ce pattern stretches the same pulse sequence", "[systemc][random]") {
   sc::ScHarness h;
   ce_stretch(h, test_seed(5), 20);
