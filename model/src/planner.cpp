@@ -67,7 +67,8 @@ void check_axes_and_center(const ArcSpec& spec) {
                      " is out of range: semi-axes must be at most 2^" + (rotated ? "20 for a rotated ellipse" : "30"));
   }
   const std::int64_t coord_lim = std::int64_t{1} << 40;
-  if (std::llabs(spec.center.x) > coord_lim || std::llabs(spec.center.y) > coord_lim) {
+  const auto out = [&](std::int64_t v) { return v < -coord_lim || v > coord_lim; };  // no llabs(INT64_MIN)
+  if (out(spec.center.x) || out(spec.center.y)) {
     throw InputError("center " + pt(spec.center) + " is out of range: coordinates must be within 2^40");
   }
 }
@@ -283,8 +284,13 @@ Plan plan_arc(const ArcSpec& spec_in) {
   const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
   for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
     if (spec.to_theta && std::string(name) == "to") continue;  // found by the walk
-    const Point r{q.x - c.x, q.y - c.y};
     const std::int64_t reach = 2 * std::max(a, b) + 2;
+    const std::int64_t far = std::int64_t{1} << 42;  // beyond any centre plus reach: no overflow below
+    if (q.x < -far || q.x > far || q.y < -far || q.y > far) {
+      throw InputError(std::string(name) + " point " + pt(q) +
+                       " is far from the ellipse: start and end must lie within 1 step of it");
+    }
+    const Point r{q.x - c.x, q.y - c.y};
     if (std::llabs(r.x) > reach || std::llabs(r.y) > reach) {
       throw InputError(std::string(name) + " point " + pt(q) +
                        " is far from the ellipse: start and end must lie within 1 step of it");
@@ -438,12 +444,17 @@ std::vector<Piece> line_pieces(Point from, Point to, Preload preload) {
 Plan plan_line(Point from, Point to, Preload preload) {
   const std::int64_t lim = std::int64_t{1} << 40;
   for (const auto& [name, q] : {std::pair{"from", from}, std::pair{"to", to}}) {
-    if (std::llabs(q.x) > lim || std::llabs(q.y) > lim) {
+    if (q.x < -lim || q.x > lim || q.y < -lim || q.y > lim) {
       throw InputError(std::string(name) + " point " + pt(q) + " is out of range: coordinates must be within 2^40");
     }
   }
   if (from == to) {
     throw InputError("line from " + pt(from) + " to " + pt(to) + " has length 0: a line needs two different points");
+  }
+  const std::int64_t len = std::max(std::llabs(to.x - from.x), std::llabs(to.y - from.y));
+  if (len > kMaxLineSteps) {
+    throw InputError("line from " + pt(from) + " to " + pt(to) + " is " + std::to_string(len) +
+                     " steps long: at most 2^30 steps on its longer axis (cut it into several lines)");
   }
   Plan p;
   p.line = true;
@@ -456,7 +467,8 @@ Plan plan_line(Point from, Point to, Preload preload) {
   p.pieces = line_pieces(from, to, preload);
   p.scale = p.pieces.front().cmd.cap;
   for (const auto& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
-  check_reachable(p);
+  // No run to check reachability: a line's pieces end on their points by construction
+  // (one iteration per step of the longer axis; tested against the runner).
   return p;
 }
 

@@ -34,10 +34,10 @@ const Signals& CoreHarness::sample() {
 void CoreHarness::tick() {
   if (checking_ && !sb_) sb_ = std::make_unique<Scoreboard>(name());
   if (!checking_) sb_.reset();
+  have_last_ = false;  // the registers change on the edge (also if it throws)
   const bool ready = edge();
   ++cycle_;
-  have_last_ = false;
-  if (sb_) sb_->after_edge(in_, ready, sample(), cycle_);
+  if (sb_) sb_->after_edge(in_, ready, sample(), read_ports(), cycle_);
 }
 
 void reset_core(CoreHarness& h, int cycles) {

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/core_model.hpp"
@@ -15,6 +17,24 @@
 #include "scoreboard.hpp"
 
 namespace dda {
+
+// The output ports in kPorts order from (name, value) pairs: a harness names each port
+// it reads; a port of the table it does not name is an error here.
+template <std::size_t N>
+PortValues port_values(const std::pair<const char*, std::uint64_t> (&named)[N]) {
+  PortValues v{};
+  std::size_t o = 0;
+  for (const auto& p : hw::kPorts) {
+    if (p.dir != hw::PortDir::Out) continue;
+    bool found = false;
+    for (const auto& [name, value] : named) {
+      if (p.name == name) v[o] = value, found = true;
+    }
+    if (!found) throw GuardError("harness: no value for output port " + std::string(p.name));
+    ++o;
+  }
+  return v;
+}
 
 class CoreHarness {
  public:
@@ -43,6 +63,8 @@ class CoreHarness {
   // One rising edge; returns cmd_ready_o as it was just before it (inputs settled).
   virtual bool edge() = 0;
   virtual Signals read_signals() = 0;
+  // The output ports now (kPorts order; cmd_ready_o as it is now).
+  virtual PortValues read_ports() = 0;
   std::uint64_t cycle_ = 0;
 
  private:

@@ -116,4 +116,13 @@ bool CosimHarness::edge() {
   throw MismatchError(m.str());
 }
 
+PortValues CosimHarness::read_ports() {  // the SystemC model's (the RTL's are compared with them)
+  const Outputs& o = sc_out_;
+  const std::pair<const char*, std::uint64_t> ports[] = {
+      {"cmd_ready_o", o.cmd_ready.read()}, {"step_x_o", o.step_x.read()}, {"step_y_o", o.step_y.read()},
+      {"dir_x_o", o.dir_x.read()},         {"dir_y_o", o.dir_y.read()},   {"busy_o", o.busy.read()},
+      {"done_o", o.done.read()},           {"err_o", o.err.read()},       {"iter_o", o.iter.read()}};
+  return port_values(ports);
+}
+
 }  // namespace dda::cosim

@@ -38,6 +38,7 @@ class CosimHarness : public CoreHarness {
   void apply(const CoreInputs& in, bool cmd_changed) override;
   bool edge() override;
   Signals read_signals() override { return sc_sample(); }
+  PortValues read_ports() override;
 
  private:
   sc_core::sc_clock clk_{"clk", 10, sc_core::SC_NS, 0.5, 5, sc_core::SC_NS, true};

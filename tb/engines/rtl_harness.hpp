@@ -29,6 +29,7 @@ class RtlHarness : public CoreHarness {
   void apply(const CoreInputs& in, bool cmd_changed) override;
   bool edge() override;
   Signals read_signals() override { return sampler_->read(); }
+  PortValues read_ports() override;
 
  private:
   std::unique_ptr<VerilatedContext> ctx_;

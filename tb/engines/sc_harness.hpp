@@ -36,6 +36,7 @@ class ScHarness : public CoreHarness {
   void apply(const CoreInputs& in, bool cmd_changed) override;
   bool edge() override;
   Signals read_signals() override { return sampler_->read(); }
+  PortValues read_ports() override;
 
  private:
   sc_core::sc_clock clk_{"clk", 10, sc_core::SC_NS, 0.5, 5, sc_core::SC_NS, true};

@@ -5,7 +5,23 @@
 
 namespace dda {
 
-void Scoreboard::after_edge(const CoreInputs& in, bool ready, const Signals& got, std::uint64_t cycle) {
+void Scoreboard::check_ports(const Signals& want, const PortValues& ports, std::uint64_t cycle) const {
+  // The ports after the edge (cmd_ready_o, combinational, was compared before it).
+  const PortValues want_ports = CoreModel::outputs(want, false);
+  for (std::size_t k = 0, o = 0; k < hw::kPorts.size(); ++k) {
+    if (hw::kPorts[k].dir != hw::PortDir::Out) continue;
+    if (hw::kPorts[k].name != "cmd_ready_o" && want_ports[o] != ports[o]) {
+      std::ostringstream m;
+      m << engine_ << " mismatch: output " << hw::kPorts[k].name << " at iteration " << iters_ << " (cycle " << cycle
+        << "): golden " << want_ports[o] << ", " << engine_ << ' ' << ports[o];
+      throw MismatchError(m.str());
+    }
+    ++o;
+  }
+}
+
+void Scoreboard::after_edge(const CoreInputs& in, bool ready, const Signals& got, const PortValues& ports,
+                            std::uint64_t cycle) {
   const CoreEdge e = model_.edge(in);
   iters_ += e.iterate;
   if (in.rst_n && e.ready != ready) {
@@ -15,7 +31,10 @@ void Scoreboard::after_edge(const CoreInputs& in, bool ready, const Signals& got
     throw MismatchError(m.str());
   }
   const Signals& want = model_.state();
-  if (want == got) return;  // the common case: no message to build
+  if (want == got) {  // the common case: no message to build; then the ports
+    check_ports(want, ports, cycle);
+    return;
+  }
   std::ostringstream m;
   int differ = 0;
   for (std::size_t i = 0; i < hw::kNumSignals; ++i) {

@@ -23,14 +23,16 @@ class Scoreboard {
  public:
   explicit Scoreboard(std::string engine) : engine_(std::move(engine)) {}
   // After an edge: the inputs it clocked in, the engine's cmd_ready_o before it (with
-  // rst_ni high) and its signals after it. Throws MismatchError naming cmd_ready_o, or
+  // rst_ni high), its signals and its output ports after it. Throws MismatchError naming cmd_ready_o, or
   // the first signal of the table that differs (and the others), the iteration, the
   // cycle and the values.
-  void after_edge(const CoreInputs& in, bool ready, const Signals& got, std::uint64_t cycle);
+  void after_edge(const CoreInputs& in, bool ready, const Signals& got, const PortValues& ports, std::uint64_t cycle);
   std::uint64_t iterations() const { return iters_; }
   const CoreModel& model() const { return model_; }
 
  private:
+  // The output ports after an edge against those the reference state drives.
+  void check_ports(const Signals& want, const PortValues& ports, std::uint64_t cycle) const;
   std::string engine_;
   CoreModel model_;
   std::uint64_t iters_ = 0;

@@ -78,9 +78,11 @@ bool measure(const Plan& p, Row& row) {
   double worst = dev(p.from), sum = worst;
   long points = 1;
   Point end = p.from;
+  bool joined = true;  // every piece starts where the previous one ended, and ends on its point
   for (const Piece& pc : p.pieces) {
-    Datapath dp(pc.cmd, pc.from);
-    Point last = pc.from;
+    joined = joined && pc.from == end;
+    Datapath dp(pc.cmd, end);
+    Point last = end;
     while (!dp.done()) {
       dp.step();
       if (dp.pos() == last) continue;
@@ -95,6 +97,7 @@ bool measure(const Plan& p, Row& row) {
       }
     }
     end = dp.pos();
+    joined = joined && end == pc.to;
   }
   row.sum += sum;
   row.points += points;
@@ -102,7 +105,7 @@ bool measure(const Plan& p, Row& row) {
     row.worst = std::max(row.worst, worst);
     row.worst_case = "dda path " + describe(p);
   }
-  return end == p.to && (!p.full || p.to == p.from);
+  return joined && end == p.to && (!p.full || p.to == p.from);
 }
 
 Plan with_preload(const Plan& p, Preload pre) {
@@ -184,7 +187,7 @@ int main(int argc, char** argv) {
       } catch (const GuardError& e) {  // a planner fault: name the case and stop
         throw std::runtime_error("case " + std::to_string(i) + " (dda path " + gen.drawn_options() + "): " + e.what());
       }
-      if (!drawn) {  // refused: counted in the class drawn (a line, or an ellipse's kind)
+      if (!drawn) {  // refused (with the preload drawn): counted in the class drawn, half rows
         const auto k = gen.drawn();
         ++half[k == RandomArcs::Drawn::Line ? 0
                                             : (k == RandomArcs::Drawn::Rotated ? 3 : 1) + (gen.drawn_thin() ? 1 : 0)]

@@ -194,16 +194,29 @@ int regress_main(CoreHarness& h, int argc, char* argv[]) {
   }
   try {
     if (!merge.empty()) {
+      // The shards of one run, each once: same run and engine, indices 0 .. N-1.
       MixedStats total;
       std::string what;
+      std::vector<bool> seen;
       for (const std::string& f : merge) {
         std::ifstream in(f);
         if (!in) throw std::runtime_error("cannot read " + f);
         const nlohmann::json j = nlohmann::json::parse(in);
-        const std::string run = j.at("run");
+        const std::string run = j.at("run"), engine = j.at("engine");
         if (!what.empty() && run != what) throw std::runtime_error(f + " is of another run: " + run + ", not " + what);
+        if (engine != h.name()) throw std::runtime_error(f + " is of engine " + engine + ", not " + h.name());
+        const Shard sh = parse_shard(j.at("shard"));
+        if (seen.empty()) seen.assign(sh.count, false);
+        if (sh.count != seen.size())
+          throw std::runtime_error(f + ": shard " + std::string(j.at("shard")) + " of another cut");
+        if (seen[sh.index]) throw std::runtime_error(f + ": shard " + std::string(j.at("shard")) + " given twice");
+        seen[sh.index] = true;
         what = run;
         total.add(from_json(j.at("totals")));
+      }
+      for (std::size_t k = 0; k < seen.size(); ++k) {
+        if (!seen[k])
+          throw std::runtime_error("shard " + std::to_string(k) + "/" + std::to_string(seen.size()) + " is missing");
       }
       print(h.name(), what + ", " + std::to_string(merge.size()) + " shards merged", total);
       return 0;

@@ -64,8 +64,10 @@ inline StepOut next_state(const Command& cmd, RegState& r) {
   o.active_y = r.cnt_y != 0;
   o.sum_x = o.active_x && r.jv_x > 0 ? r.jr_x + r.jv_x : r.jr_x;
   o.sum_y = o.active_y && r.jv_y > 0 ? r.jr_y + r.jv_y : r.jr_y;
-  o.step_x = o.active_x && o.sum_x >= cmd.cap;
-  o.step_y = o.active_y && o.sum_y >= cmd.cap;
+  // (A negative integrand neither adds nor carries, as in the RTL, even for a command
+  // whose preload breaks jr < cap.)
+  o.step_x = o.active_x && r.jv_x >= 0 && o.sum_x >= cmd.cap;
+  o.step_y = o.active_y && r.jv_y >= 0 && o.sum_y >= cmd.cap;
   r.jr_x = o.step_x ? o.sum_x - cmd.cap : o.sum_x;
   r.jr_y = o.step_y ? o.sum_y - cmd.cap : o.sum_y;
   r.cnt_x -= o.step_x ? 1 : 0;

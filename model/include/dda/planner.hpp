@@ -35,7 +35,9 @@ Plan plan_arc(const ArcSpec& spec);
 // preload the path is Bresenham's line (every point within half a step of the line between its ends),
 // with zero preload it lags by up to a step. A line longer than the hardware's counters
 // is cut into pieces whose preloads carry the line's running remainder, so the path is
-// the same as one piece's. Throws InputError for a line of length 0 or out of range.
+// the same as one piece's. Throws InputError for a line of length 0, a point beyond
+// 2^40 or a line longer than kMaxLineSteps on its longer axis.
+inline constexpr std::int64_t kMaxLineSteps = std::int64_t{1} << 30;
 Plan plan_line(Point from, Point to, Preload preload);
 // The pieces of such a line (also used inside arcs, near their ends).
 std::vector<Piece> line_pieces(Point from, Point to, Preload preload);
