@@ -18,23 +18,11 @@
 
 namespace dda {
 
-// The output ports in kPorts order from (name, value) pairs: a harness names each port
-// it reads; a port of the table it does not name is an error here.
-template <std::size_t N>
-PortValues port_values(const std::pair<const char*, std::uint64_t> (&named)[N]) {
-  PortValues v{};
-  std::size_t o = 0;
-  for (const auto& p : hw::kPorts) {
-    if (p.dir != hw::PortDir::Out) continue;
-    bool found = false;
-    for (const auto& [name, value] : named) {
-      if (p.name == name) v[o] = value, found = true;
-    }
-    if (!found) throw GuardError("harness: no value for output port " + std::string(p.name));
-    ++o;
-  }
-  return v;
-}
+// The output ports a harness reads, in kPorts order (checked by a static_assert beside
+// each harness' read_ports()).
+inline constexpr std::array<std::string_view, hw::kNumOutputs> kHarnessOutputs = {
+    "cmd_ready_o", "step_x_o", "step_y_o", "dir_x_o", "dir_y_o", "busy_o", "done_o", "err_o", "iter_o"};
+static_assert(hw::outputs_are(kHarnessOutputs), "kHarnessOutputs no longer lists hw::kPorts' outputs in order");
 
 class CoreHarness {
  public:

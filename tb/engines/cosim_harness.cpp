@@ -118,11 +118,9 @@ bool CosimHarness::edge() {
 
 PortValues CosimHarness::read_ports() {  // the SystemC model's (the RTL's are compared with them)
   const Outputs& o = sc_out_;
-  const std::pair<const char*, std::uint64_t> ports[] = {
-      {"cmd_ready_o", o.cmd_ready.read()}, {"step_x_o", o.step_x.read()}, {"step_y_o", o.step_y.read()},
-      {"dir_x_o", o.dir_x.read()},         {"dir_y_o", o.dir_y.read()},   {"busy_o", o.busy.read()},
-      {"done_o", o.done.read()},           {"err_o", o.err.read()},       {"iter_o", o.iter.read()}};
-  return port_values(ports);
+  // The order of kHarnessOutputs.
+  return {o.cmd_ready.read(), o.step_x.read(), o.step_y.read(), o.dir_x.read(), o.dir_y.read(),
+          o.busy.read(),      o.done.read(),   o.err.read(),    o.iter.read()};
 }
 
 }  // namespace dda::cosim

@@ -68,11 +68,9 @@ bool RtlHarness::edge() {
 }
 
 PortValues RtlHarness::read_ports() {
-  const std::pair<const char*, std::uint64_t> ports[] = {
-      {"cmd_ready_o", top_->cmd_ready_o}, {"step_x_o", top_->step_x_o}, {"step_y_o", top_->step_y_o},
-      {"dir_x_o", top_->dir_x_o},         {"dir_y_o", top_->dir_y_o},   {"busy_o", top_->busy_o},
-      {"done_o", top_->done_o},           {"err_o", top_->err_o},       {"iter_o", top_->iter_o}};
-  return port_values(ports);
+  // The order of kHarnessOutputs.
+  return {top_->cmd_ready_o, top_->step_x_o, top_->step_y_o, top_->dir_x_o, top_->dir_y_o,
+          top_->busy_o,      top_->done_o,   top_->err_o,    top_->iter_o};
 }
 
 }  // namespace dda::rtl

@@ -104,11 +104,9 @@ bool ScHarness::edge() {
 }
 
 PortValues ScHarness::read_ports() {
-  const std::pair<const char*, std::uint64_t> ports[] = {
-      {"cmd_ready_o", cmd_ready_.read()}, {"step_x_o", step_x_.read()}, {"step_y_o", step_y_.read()},
-      {"dir_x_o", dir_x_.read()},         {"dir_y_o", dir_y_.read()},   {"busy_o", busy_.read()},
-      {"done_o", done_.read()},           {"err_o", err_.read()},       {"iter_o", iter_.read()}};
-  return port_values(ports);
+  // The order of kHarnessOutputs.
+  return {cmd_ready_.read(), step_x_.read(), step_y_.read(), dir_x_.read(), dir_y_.read(),
+          busy_.read(),      done_.read(),   err_.read(),    iter_.read()};
 }
 
 }  // namespace dda::sc

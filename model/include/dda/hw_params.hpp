@@ -173,6 +173,16 @@ inline constexpr std::array<Port, 14> kPorts{{
 }};
 constexpr std::size_t port(std::string_view name) { return index_of(kPorts, name); }
 inline constexpr std::size_t kNumOutputs = count_if(kPorts, [](const Port& p) { return p.dir == PortDir::Out; });
+// Are these the output ports, in kPorts order? (A harness that lists the ports it reads
+// checks its list with it at compile time.)
+constexpr bool outputs_are(const std::array<std::string_view, kNumOutputs>& names) {
+  std::size_t o = 0;
+  for (const auto& p : kPorts) {
+    if (p.dir != PortDir::Out) continue;
+    if (names[o++] != p.name) return false;
+  }
+  return true;
+}
 constexpr std::size_t field(std::string_view name) { return index_of(kCmdFields, name); }
 
 // A copy of the register table that the consumers' checks take (the drift test hands
