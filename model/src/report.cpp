@@ -36,6 +36,14 @@ struct Row {
   Point pos;
 };
 
+// The scale of a row's values: the plan's (a b, or a line's capacity), or, for a line
+// piece inside an arc (lead-in, lead-out, closing), that line's capacity: its values are
+// in steps.
+std::int64_t row_scale(const Plan& plan, std::uint32_t piece) {
+  const Piece& pc = plan.pieces[std::min<std::size_t>(piece, plan.pieces.size() - 1)];
+  return pc.kind == PieceKind::Line ? pc.cmd.cap : plan.scale;
+}
+
 std::vector<Row> rows(const Plan& plan, const RegState& init, const std::vector<Iteration>& iters) {
   std::vector<Row> v;
   v.reserve(iters.size() + 1);
@@ -78,8 +86,9 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
         fmt::print(os, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s),
                    r.dx, r.remx, paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy, r.remy);
       } else {
-        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.piece, paper_units(r.jvx, s),
-                   acc_cell(r.ax, r.jrx, s), r.dx, r.remx, paper_units(r.jvy, s), acc_cell(r.ay, r.jry, s), r.dy,
+        const std::int64_t rs = row_scale(plan, r.piece);
+        fmt::print(os, "{},{},{},{},{:d},{},{},{},{:d},{},{},{},{},{}\n", r.iter, r.piece, paper_units(r.jvx, rs),
+                   acc_cell(r.ax, r.jrx, rs), r.dx, r.remx, paper_units(r.jvy, rs), acc_cell(r.ay, r.jry, rs), r.dy,
                    r.remy, sign(r.negx), sign(r.negy), r.pos.x, r.pos.y);
       }
     }
@@ -91,9 +100,12 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
       fmt::print(os, "line preload={} from ({},{}) to ({},{}), units: steps (scaled values / the capacity {})\n",
                  to_string(plan.spec.preload), plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
     } else {
-      fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {})\n",
+      bool lines = false;
+      for (const Piece& pc : plan.pieces) lines = lines || pc.kind == PieceKind::Line;
+      fmt::print(os, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {}{})\n",
                  plan.spec.a, plan.spec.b, plan.spec.bits, to_string(plan.spec.preload), to_string(plan.spec.dir),
-                 plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
+                 plan.from.x, plan.from.y, plan.to.x, plan.to.y, s,
+                 lines ? "; rows of line pieces: steps, values / their capacity" : "");
     }
     const auto line = [&](auto... c) {
       fmt::print(os, "| {:>5} | {:>10} | {:>10} | {:>2} | {:>5} | {:>10} | {:>10} | {:>2} | {:>5} |", c...);
@@ -104,8 +116,9 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
        << (paper ? "\n" : "-----|------|--------|--------|\n");
     for (const Row& r : rows(plan, initial, iters)) {
       if (r.iter != 0 && !r.dx && !r.dy) continue;
-      line(r.iter, paper_units(r.jvx, s), acc_cell(r.ax, r.jrx, s), int(r.dx), r.remx, paper_units(r.jvy, s),
-           acc_cell(r.ay, r.jry, s), int(r.dy), r.remy);
+      const std::int64_t rs = row_scale(plan, r.piece);
+      line(r.iter, paper_units(r.jvx, rs), acc_cell(r.ax, r.jrx, rs), int(r.dx), r.remx, paper_units(r.jvy, rs),
+           acc_cell(r.ay, r.jry, rs), int(r.dy), r.remy);
       if (paper) {
         os << '\n';
       } else {
