@@ -204,7 +204,6 @@ TEST_CASE("cli: bad options", "[cli][errors]") {
                      "angle = '30.1234567' is invalid: an angle in degrees, a decimal with at most 6 decimals");
   expect_usage_error("trace " + kPaper + " --angle 1e3", "angle = '1e3' is invalid");
   expect_usage_error("trace " + kPaper + " --from-theta 1234567890", "from-theta = '1234567890' is invalid");
-  expect_usage_error("path --a 100 --b 4 --angle 30", "a = 100, b = 4 is too thin to turn by 30 degrees");
   expect_usage_error("path --a 32768 --b 100 --angle 30 --bits 31", "bits = 31 is too large for this rotated ellipse");
   expect_usage_error("path --a 500 --b 300 --angle 30 --from-theta 10 --to 0,0", "to point (0,0) is");
   expect_usage_error("trace " + kPaper + " --angle x", "angle = 'x' is invalid");
@@ -513,6 +512,9 @@ TEST_CASE("cli: lattice ends that the counted path missed are reached, full turn
        "-1452,-3118"},
       {"--a 13 --b 442 --center 1004,1488 --dir cw --angle 346.452379 --from 1099,1851 --to 1088,1864", "1099,1851",
        "1088,1864"},
+      // Tips sharper than the lattice, refused before issue 11's anchored pieces.
+      {"--a 2 --b 113 --angle 280.613133 --from-theta 0 --to-theta 0", "0,-2", "0,-2"},
+      {"--a 100 --b 4 --angle 30 --from-theta 10 --to-theta 10", "85,50", "85,50"},
   };
   for (const auto& c : cases) {
     INFO(c.arc);

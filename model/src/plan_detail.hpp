@@ -100,9 +100,20 @@ struct Scaled {
   i128 level = 0;  // quad_form on the nominal curve: a^2 b^2 (exact) or a b 2^(K-n)
 };
 
+// A start or end given as a lattice point or a parametric angle (planner.cpp): a lattice
+// point as given (or the default when neither is given), an angle as the lattice point
+// of theta_point() with, for half preload, the ideal point's fraction.
+EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, const std::optional<std::int64_t>& theta,
+                       std::int64_t default_theta, const std::optional<Point>& default_pnt);
+
 // Quarter turns: pieces meet at the vertices (plan_quadrant.cpp).
 void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray);
 // Other angles: pieces found by running the datapath to each turn (plan_rotated.cpp).
 void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray);
+// Rotated ellipses anchored on the ideal curve at every turn (plan_rotated.cpp): the arc
+// from parametric angle theta_from (its first piece starting at `from`) to theta_to, or
+// a full turn.
+void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::int64_t theta_from,
+                          std::int64_t theta_to);
 
 }  // namespace dda::detail

@@ -165,7 +165,7 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
   return Point{c.x + best.x, c.y + best.y};
 }
 
-namespace {
+namespace detail {
 
 EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, const std::optional<std::int64_t>& theta,
                        std::int64_t default_theta, const std::optional<Point>& default_pnt) {
@@ -181,7 +181,7 @@ EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, con
   return e;
 }
 
-}  // namespace
+}  // namespace detail
 
 namespace {
 
@@ -249,14 +249,6 @@ Plan plan_arc(const ArcSpec& spec_in) {
       throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" + std::to_string(spec.bits) + " * " +
                        std::to_string(a) + " * " + std::to_string(b) + " is out of range: it must be below 2^61");
     }
-  } else if (4 * __int128(std::min(a, b)) * std::min(a, b) <= std::max(a, b)) {
-    std::ostringstream m;
-    m.precision(3);
-    m << "a = " << a << ", b = " << b << " is too thin to turn by " << format_degrees(spec.angle)
-      << " degrees: the radius of curvature at the tips, min(a,b)^2 / max(a,b) = "
-      << double(std::min(a, b)) * double(std::min(a, b)) / double(std::max(a, b))
-      << " steps, must exceed 1/4 step for a rotated ellipse (the lattice path cannot follow a sharper tip)";
-    throw InputError(m.str());
   } else if (coefficient_drift_bound(p) > kMaxCoefficientDrift || spec.bits > kRotCapBits) {
     std::ostringstream m;
     m << "bits = " << spec.bits << " is too large for this rotated ellipse: its fixed-point coefficients "
@@ -341,15 +333,48 @@ Plan plan_arc(const ArcSpec& spec_in) {
       detail::plan_quadrant_pieces(p, sc.cap, arc_from, ray);
     }
   };
+  // Rotated ellipses with half preload, and with zero preload where the DDA's own turns
+  // lose the curve (always at tips sharper than a quarter step: radius of curvature
+  // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
+  const bool sharp_tips = 4 * i128(std::min(a, b)) * std::min(a, b) <= std::max(a, b);
+  const auto plan_anchored = [&] {
+    p.pieces.clear();
+    p.from = arc_from.lattice;
+    p.to = target;
+    const std::int64_t t0 = spec.from_theta ? *spec.from_theta
+                            : theta_start   ? *theta_start
+                                            : nearest_theta(spec, start);
+    const std::int64_t t1 = spec.to_theta ? *spec.to_theta : p.full ? t0 : nearest_theta(spec, target);
+    detail::plan_anchored_pieces(p, sc, arc_from, normalize_udeg(t0), normalize_udeg(t1));
+  };
   const auto end_ray = [&] {
     const std::int64_t te = p.full && theta_start ? *theta_start : nearest_theta(spec, target);
     return ray_to(theta_ideal(spec, te));
   };
-  if (spec.to_theta) {
-    plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
-  } else if (!p.full && nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
+  if (!spec.to_theta && !p.full &&
+      nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
     // Both ends map to the same point of the curve: the arc between them is the line.
     p.pieces = line_pieces(start, target, spec.preload);
+  } else if (p.rotated && (half || sharp_tips)) {
+    plan_anchored();
+  } else if (p.rotated) {
+    try {  // zero preload: the DDA's own turns, as in issue 5, unless they lose the curve
+      if (spec.to_theta) {
+        plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
+      } else {
+        try {
+          plan_pieces(std::nullopt);
+          p.from = start;
+          check_reachable(p);
+        } catch (const InputError&) {
+          plan_pieces(end_ray());
+        }
+      }
+    } catch (const InputError&) {
+      plan_anchored();
+    }
+  } else if (spec.to_theta) {
+    plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
   } else if (half) {
     plan_pieces(end_ray());
   } else {
@@ -362,14 +387,18 @@ Plan plan_arc(const ArcSpec& spec_in) {
     }
   }
   // The lead-in and lead-out lines; a full turn given by angles closes on its start.
-  const Point arc_end = p.pieces.back().to;
+  const Point arc_start = p.pieces.empty() ? arc_from.lattice : p.pieces.front().from;
+  const Point arc_end = p.pieces.empty() ? arc_from.lattice : p.pieces.back().to;
   const Point end = spec.to_theta && !p.full ? arc_end : p.full && spec.to_theta ? start : target;
   if (arc_end != end) {
     for (const Piece& l : line_pieces(arc_end, end, spec.preload)) p.pieces.push_back(l);
   }
-  if (p.pieces.front().from != start) {
-    std::vector<Piece> v = line_pieces(start, p.pieces.front().from, spec.preload);
+  if (arc_start != start) {
+    std::vector<Piece> v = line_pieces(start, arc_start, spec.preload);
     p.pieces.insert(p.pieces.begin(), v.begin(), v.end());
+  }
+  if (p.pieces.empty()) {  // (every section of a full turn on one lattice point: not seen with a, b >= 1)
+    throw InputError("the arc from " + pt(start) + " to " + pt(end) + " has no step on the lattice");
   }
   p.from = start;
   p.to = end;

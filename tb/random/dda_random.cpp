@@ -128,11 +128,6 @@ std::optional<Plan> RandomArcs::next() {
     s.dir = uni(2) ? Direction::Cw : Direction::Ccw;
     // Half the ellipses are turned by a uniform angle (micro-degrees), half by quarter turns.
     s.angle = uni(2) ? std::int64_t(uni(std::uint64_t(kFullTurn))) : kQuarterTurn * std::int64_t(uni(4));
-    // Ellipses too thin to turn (tip radius of curvature at most 1/4 step, refused by
-    // the planner) take a quarter turn instead.
-    if (4 * std::min(s.a, s.b) * std::min(s.a, s.b) <= std::max(s.a, s.b)) {
-      s.angle = kQuarterTurn * std::int64_t(s.angle % 4);
-    }
     const auto theta = [&]() { return std::int64_t(uni(std::uint64_t(kFullTurn))); };
     s.from_theta = theta();
     // One in eight is a full turn, one in eight starts on a vertex (parametric 0, 90, 180
