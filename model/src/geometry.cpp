@@ -21,7 +21,7 @@ std::pair<double, double> to_frame(std::int64_t angle_udeg, double x, double y) 
 // in a bracket where F is monotone; bisection runs until the bracket cannot shrink.
 namespace {
 
-double robust_length(double v0, double v1) { return std::hypot(v0, v1); }
+double robust_length(double v0, double v1) { return std::sqrt(v0 * v0 + v1 * v1); }
 
 double get_root(double r0, double z0, double z1, double g) {
   const double n0 = r0 * z0;
@@ -54,7 +54,7 @@ double distance_sorted(double e0, double e1, double y0, double y1) {
       const double r0 = (e0 / e1) * (e0 / e1);
       const double sbar = get_root(r0, z0, z1, g);
       const double x0 = r0 * y0 / (sbar + r0), x1 = y1 / (sbar + 1.0);
-      return std::hypot(x0 - y0, x1 - y1);
+      return robust_length(x0 - y0, x1 - y1);
     }
     return std::fabs(y1 - e1);
   }
@@ -62,7 +62,7 @@ double distance_sorted(double e0, double e1, double y0, double y1) {
   if (numer0 < denom0) {
     const double xde0 = numer0 / denom0;
     const double x0 = e0 * xde0, x1 = e1 * std::sqrt(1.0 - xde0 * xde0);
-    return std::hypot(x0 - y0, x1);
+    return robust_length(x0 - y0, x1);
   }
   return std::fabs(y0 - e0);
 }

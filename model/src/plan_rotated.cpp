@@ -373,6 +373,28 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
     }
     return v;
   };
+  // The command of a section starting on the curve point `a` with step directions (sx, sy),
+  // counts 0 (set from its walk).
+  const auto section_command = [&](const EndPoint& a, int sx, int sy) {
+    Command cm;
+    cm.cap = sc.cap;
+    cm.dir_x_neg = sx < 0;
+    cm.dir_y_neg = sy < 0;
+    const i128 jvx = sx * tx(rel(a.lattice)), jvy = sy * ty(rel(a.lattice));
+    if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
+      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                       pt(a.lattice) + " exceeds the capacity (use more bits)");
+    }
+    cm.jv_x = std::int64_t(jvx);
+    cm.jv_y = std::int64_t(jvy);
+    cm.jr_x = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_x_neg, a.fx) : 0;
+    cm.jr_y = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_y_neg, a.fy) : 0;
+    cm.inc_x_on_x = D * k.p;
+    cm.inc_x_on_y = -D * sx * sy * k.qx;
+    cm.inc_y_on_x = D * sx * sy * k.qy;
+    cm.inc_y_on_y = -D * k.p;
+    return cm;
+  };
   char prev_axis = 0;
   EndPoint anchor = from;  // the curve point the next section starts on
   Point pos = from.lattice;
@@ -476,23 +498,7 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
     // Step directions: the curve's, in the middle of the section.
     const auto [mtx, mty] = ideal_tangent(spec, mid);
     const int sx = D * mtx >= 0 ? 1 : -1, sy = D * mty >= 0 ? 1 : -1;
-    Command cm;
-    cm.cap = sc.cap;
-    cm.dir_x_neg = sx < 0;
-    cm.dir_y_neg = sy < 0;
-    const i128 jvx = sx * tx(rel(start)), jvy = sy * ty(rel(start));
-    if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
-      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
-                       pt(start) + " exceeds the capacity (use more bits)");
-    }
-    cm.jv_x = std::int64_t(jvx);
-    cm.jv_y = std::int64_t(jvy);
-    cm.jr_x = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_x_neg, anchor.fx) : 0;
-    cm.jr_y = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_y_neg, anchor.fy) : 0;
-    cm.inc_x_on_x = D * k.p;
-    cm.inc_x_on_y = -D * sx * sy * k.qx;
-    cm.inc_y_on_x = D * sx * sy * k.qy;
-    cm.inc_y_on_y = -D * k.p;
+    Command cm = section_command(anchor, sx, sy);
     // Run to the ray; the turning axis at most to the end's lattice coordinate.
     Command probe = cm;
     constexpr std::int64_t kOpen = std::int64_t{1} << 40;
@@ -507,7 +513,7 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
     Datapath dp(probe, start);
     while (!dp.stalled() && dp.iterations() < guard) {
       const RegState& r = dp.regs();
-      if (std::max(std::llabs(r.jv_x), std::llabs(r.jv_y)) > cm.cap) {
+      if ((r.cnt_x != 0 && std::llabs(r.jv_x) > cm.cap) || (r.cnt_y != 0 && std::llabs(r.jv_y) > cm.cap)) {
         throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
                          pt(dp.pos()) + " exceeds the capacity (use more bits)");
       }
@@ -528,6 +534,18 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
     }
     anchor = next;
     done = dist;
+  }
+  if (p.pieces.empty()) {
+    // An arc shorter than a step (its ends' curve points round to one lattice point): one
+    // command without a step, as the other planners' last piece.
+    const auto [t0x, t0y] = ideal_tangent(spec, theta_from);
+    const int sx = D * t0x >= 0 ? 1 : -1, sy = D * t0y >= 0 ? 1 : -1;
+    Piece pc;
+    pc.quadrant = quadrant_of_steps(sx, sy, spec.dir);
+    pc.from = pc.to = from.lattice;
+    pc.cmd = section_command(from, sx, sy);
+    pc.iteration_bound = 1;
+    p.pieces.push_back(pc);
   }
 }
 

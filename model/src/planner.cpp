@@ -336,7 +336,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
   // Rotated ellipses with half preload, and with zero preload where the DDA's own turns
   // lose the curve (always at tips sharper than a quarter step: radius of curvature
   // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
-  const bool sharp_tips = 4 * i128(std::min(a, b)) * std::min(a, b) <= std::max(a, b);
+  const bool quarter_step_tips = 4 * i128(std::min(a, b)) * std::min(a, b) <= std::max(a, b);
   const auto plan_anchored = [&] {
     p.pieces.clear();
     p.from = arc_from.lattice;
@@ -355,7 +355,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
       nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
     // Both ends map to the same point of the curve: the arc between them is the line.
     p.pieces = line_pieces(start, target, spec.preload);
-  } else if (p.rotated && (half || sharp_tips)) {
+  } else if (p.rotated && (half || quarter_step_tips)) {
     plan_anchored();
   } else if (p.rotated) {
     try {  // zero preload: the DDA's own turns, as in issue 5, unless they lose the curve
@@ -397,9 +397,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
     std::vector<Piece> v = line_pieces(start, arc_start, spec.preload);
     p.pieces.insert(p.pieces.begin(), v.begin(), v.end());
   }
-  if (p.pieces.empty()) {  // (every section of a full turn on one lattice point: not seen with a, b >= 1)
-    throw InputError("the arc from " + pt(start) + " to " + pt(end) + " has no step on the lattice");
-  }
+  if (p.pieces.empty()) throw GuardError("planner fault: the arc from " + pt(start) + " has no piece");
   p.from = start;
   p.to = end;
   p.arc_from = arc_from.lattice;

@@ -141,7 +141,7 @@ void print_table(const Row (&half)[kNumClasses], const Row (&zero)[kNumClasses])
   for (int c = 1; c < kNumClasses; ++c) arcs.add(half[c]);
   std::printf(
       "\nHalf preload, all arcs: %llu steps, %llu of them (%.3f%%) in line pieces inside arcs (lead-in, "
-      "lead-out and closing lines).\n",
+      "lead-out, closing and anchoring lines, lines across sharp tips).\n",
       static_cast<unsigned long long>(arcs.steps), static_cast<unsigned long long>(arcs.line_steps),
       arcs.steps ? 100.0 * double(arcs.line_steps) / double(arcs.steps) : 0.0);
 }
