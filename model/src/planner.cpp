@@ -162,6 +162,13 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
   // (Rounded coefficients of a rotated ellipse can leave all four just inside: then the
   // outermost of them.)
   if (best_q < 0) best = outermost;
+  // Beside a thin ellipse the lattice point just outside can be more than a step from the
+  // curve (a start the planner would refuse): then the lattice point nearest to the
+  // ideal point (within half a step per axis of it).
+  const auto [u, v] = to_frame(spec.angle, double(best.x), double(best.y));
+  if (ellipse_distance(double(spec.a), double(spec.b), u, v) > kPointTolerance) {
+    best = Point{std::int64_t(round_shift(f.x, kPosFrac)), std::int64_t(round_shift(f.y, kPosFrac))};
+  }
   return Point{c.x + best.x, c.y + best.y};
 }
 

@@ -38,6 +38,24 @@ Shard parse_shard(const std::string& text) {
 RandomArcs::RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max, ArcKind kind)
     : rng_(seed), max_axis_(max_axis), extra_bits_max_(extra_bits_max), kind_(kind) {}
 
+namespace {
+
+// The dda options of a drawn configuration (before the planner resolves it).
+std::string options_of(const ArcSpec& s) {
+  std::ostringstream o;
+  o << "--a " << s.a << " --b " << s.b;
+  if (s.bits != 0) o << " --bits " << s.bits;
+  o << " --preload " << to_string(s.preload) << " --center " << s.center.x << ',' << s.center.y << " --angle "
+    << format_degrees(s.angle) << " --dir " << to_string(s.dir);
+  if (s.from) o << " --from " << s.from->x << ',' << s.from->y;
+  if (s.to) o << " --to " << s.to->x << ',' << s.to->y;
+  if (s.from_theta) o << " --from-theta " << format_degrees(*s.from_theta);
+  if (s.to_theta) o << " --to-theta " << format_degrees(*s.to_theta);
+  return o.str();
+}
+
+}  // namespace
+
 std::optional<Plan> RandomArcs::next_program() {
   const auto uni = [&](std::uint64_t n) { return rng_() % n; };
   const auto log_axis = [&]() {
@@ -91,16 +109,11 @@ std::optional<Plan> RandomArcs::next_program() {
       s.from = rounded(theta());
       s.to = shape == 1 ? *s.from : rounded(theta());
     }
-    std::ostringstream o;
-    o << "--a " << s.a << " --b " << s.b << " --preload " << to_string(s.preload) << " --center " << s.center.x << ','
-      << s.center.y << " --angle " << format_degrees(s.angle) << " --dir " << to_string(s.dir);
-    if (s.from) o << " --from " << s.from->x << ',' << s.from->y << " --to " << s.to->x << ',' << s.to->y;
-    if (s.from_theta)
-      o << " --from-theta " << format_degrees(*s.from_theta) << " --to-theta " << format_degrees(*s.to_theta);
-    drawn_options_ = o.str();
+    drawn_options_ = options_of(s);
     return plan_arc(s);
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
     ++rejected_;
+    last_refusal_ = e.what();
     return std::nullopt;
   }
 }
@@ -148,10 +161,12 @@ std::optional<Plan> RandomArcs::next() {
     s.from = Point{std::llround(double(s.a) * std::cos(t0)), std::llround(double(s.b) * std::sin(t0))};
     s.to = Point{std::llround(double(s.a) * std::cos(t1)), std::llround(double(s.b) * std::sin(t1))};
   }
+  drawn_options_ = options_of(s);
   try {
     return plan_arc(s);
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
     ++rejected_;
+    last_refusal_ = e.what();
     return std::nullopt;
   }
 }

@@ -46,6 +46,8 @@ class RandomArcs {
   // (an unreachable end point, for example); rejected() counts those.
   std::optional<Plan> next();
   std::uint64_t rejected() const { return rejected_; }
+  // The planner's message for the last rejected draw.
+  const std::string& last_refusal() const { return last_refusal_; }
   // Program arcs: the kind of the last draw, for the sweep's classes.
   enum class Drawn { Line, AxisAligned, Rotated };
   Drawn drawn() const { return drawn_; }
@@ -59,6 +61,7 @@ class RandomArcs {
   int extra_bits_max_;
   ArcKind kind_;
   std::uint64_t rejected_ = 0;
+  std::string last_refusal_;
   Drawn drawn_ = Drawn::AxisAligned;
   bool drawn_thin_ = false;
   std::string drawn_options_;
