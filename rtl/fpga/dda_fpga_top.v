@@ -1,42 +1,76 @@
 // SPDX-License-Identifier: Apache-2.0
-// FPGA wrapper for synthesis figures (scripts/synth): the command word is far wider
-// than a package's pins, so it is shifted in one bit per clock (cmd_bit_i while
-// cmd_shift_i is high, least significant bit first) and offered to the core with
-// cmd_valid_i. Outputs are the core's own registered outputs. Not part of the IP: it
-// exists so that place and route sees the core with realistic I/O.
+// Place-and-route wrapper that counts the core's own cells (scripts/synth,
+// core_logic_cells): the core runs a command list from block RAM, so the only logic
+// beside it is this wrapper's control. The command memory holds CMD_DEPTH words of
+// DDA_CMD_WIDTH bits as 16-bit lanes, one iCE40 EBR (SB_RAM40_4K, 256 x 16) per lane
+// (31 at the default widths); EBRs are not logic cells. A host writes it 16 bits at a
+// time on its own clock (wclk_i, we_i, waddr_i = {word, lane}, wdata_i; no read-during-write
+// logic then), so synthesis cannot see its contents
+// and the core stays general; after reset the words 0 .. end_i-1 are offered to the
+// core back to back. Not part of the IP: it exists so that place and route sees the
+// core as a design would use it, without a 495-bit shift register in front of it.
 `include "dda_params.vh"
 
-module dda_fpga_top (
-  input  wire clk_i,
-  input  wire rst_ni,
-  input  wire ce_i,
-  input  wire cmd_shift_i,
-  input  wire cmd_bit_i,
-  input  wire cmd_valid_i,
-  output wire cmd_ready_o,
-  output wire step_x_o,
-  output wire step_y_o,
-  output wire dir_x_o,
-  output wire dir_y_o,
-  output wire busy_o,
-  output wire done_o,
-  output wire err_o,
-  output wire iter_o
+module dda_fpga_top #(
+  parameter integer CMD_DEPTH = 256
+) (
+  input  wire                                  clk_i,
+  input  wire                                  rst_ni,
+  input  wire                                  ce_i,
+  input  wire                                  wclk_i,   // the host's write clock
+  input  wire                                  we_i,
+  input  wire [$clog2(CMD_DEPTH)+5-1:0]        waddr_i,  // {word, lane}
+  input  wire [15:0]                           wdata_i,
+  input  wire [$clog2(CMD_DEPTH)-1:0]          end_i,    // commands to run: 0 .. end_i-1
+  output wire                                  cmd_ready_o,
+  output wire                                  step_x_o,
+  output wire                                  step_y_o,
+  output wire                                  dir_x_o,
+  output wire                                  dir_y_o,
+  output wire                                  busy_o,
+  output wire                                  done_o,
+  output wire                                  err_o,
+  output wire                                  iter_o
 );
 
-  reg [`DDA_CMD_WIDTH-1:0] cmd_q;
+  localparam integer AddrWidth = $clog2(CMD_DEPTH);
+  localparam integer Lanes = (`DDA_CMD_WIDTH + 15) / 16;
+
+  // cmd_q always holds word addr_q one edge after addr_q changes: the read address is
+  // the next address, so an accepted command is followed by the next word at once and
+  // the core can load it on its finishing edge (back to back).
+  reg  [AddrWidth-1:0] addr_q;
+  reg                  primed_q;  // cmd_q holds word addr_q
+  wire [16*Lanes-1:0]  cmd_q;
+  wire                 cmd_valid = primed_q & (addr_q != end_i);
+  wire                 accept = cmd_valid & cmd_ready_o;
+  wire [AddrWidth-1:0] addr_d = !rst_ni ? '0 : accept ? addr_q + 1'b1 : addr_q;
 
   always @(posedge clk_i) begin
-    if (cmd_shift_i) cmd_q <= {cmd_bit_i, cmd_q[`DDA_CMD_WIDTH-1:1]};
+    if (!rst_ni) begin
+      addr_q   <= '0;
+      primed_q <= 1'b0;
+    end else begin
+      addr_q   <= addr_d;
+      primed_q <= 1'b1;
+    end
+  end
+
+  for (genvar l = 0; l < Lanes; l++) begin : g_lane
+    reg [15:0] mem [0:CMD_DEPTH-1];
+    reg [15:0] rd_q;
+    always @(posedge wclk_i) if (we_i && waddr_i[4:0] == l) mem[waddr_i[AddrWidth+4:5]] <= wdata_i;
+    always @(posedge clk_i) rd_q <= mem[addr_d];
+    assign cmd_q[16*l+:16] = rd_q;
   end
 
   dda_core u_core (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .ce_i        (ce_i),
-    .cmd_valid_i (cmd_valid_i),
+    .cmd_valid_i (cmd_valid),
     .cmd_ready_o (cmd_ready_o),
-    .cmd_i       (cmd_q),
+    .cmd_i       (cmd_q[`DDA_CMD_WIDTH-1:0]),
     .step_x_o    (step_x_o),
     .step_y_o    (step_y_o),
     .dir_x_o     (dir_x_o),
