@@ -47,6 +47,23 @@ inline constexpr int kSv[5] = {0, +1, +1, -1, -1};
 inline int step_sx(int q, Direction dir) { return dir == Direction::Ccw ? -kSv[q] : kSv[q]; }
 inline int step_sy(int q, Direction dir) { return dir == Direction::Ccw ? kSu[q] : -kSu[q]; }
 
+// The quadrant (about the centre) whose steps, for direction dir, have signs (sx, sy).
+inline int quadrant_of_steps(int sx, int sy, Direction dir) {
+  for (int q = 1; q <= 4; ++q) {
+    if (step_sx(q, dir) == sx && step_sy(q, dir) == sy) return q;
+  }
+  return 1;
+}
+
+// Iteration guard of a rotated ellipse's piece: a piece has at most 4 max(a, b) + 8
+// steps, and between two steps at most 2^(n+2) / min(a, b) + 4 iterations (the larger
+// integrand is at least about half the tangent's length, which is at least
+// a b min(a, b) times the scale).
+inline std::uint64_t rotated_piece_guard(const ArcSpec& spec) {
+  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
+  return std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
+}
+
 // A resolved start or end point: lattice point and the fraction of the ideal point.
 struct EndPoint {
   Point lattice;
@@ -110,7 +127,7 @@ EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, con
 void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray);
 // Other angles: pieces found by running the datapath to each turn (plan_rotated.cpp).
 void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray);
-// Rotated ellipses anchored on the ideal curve at every turn (plan_rotated.cpp): the arc
+// Rotated ellipses anchored on the ideal curve at every turn (plan_anchored.cpp): the arc
 // from parametric angle theta_from (its first piece starting at `from`) to theta_to, or
 // a full turn.
 void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::int64_t theta_from,

@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: Apache-2.0
+// The planner for rotated ellipses anchored on the ideal curve at every turn (half
+// preload, and zero preload where the DDA's own turns fail): sections between the
+// curve's turns, and lines across tips sharper than the lattice.
+#include <algorithm>
+#include <cstdlib>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "plan_detail.hpp"
+
+namespace dda::detail {
+
+namespace {
+
+// The tangent of the ideal curve at parametric angle theta, counter-clockwise, in the
+// ellipse's own scale: d/dtheta of R(angle) (a cos theta, b sin theta), Q(2 kTrigFrac).
+std::pair<i128, i128> ideal_tangent(const ArcSpec& spec, std::int64_t theta) {
+  const SinCos t = sincos_udeg(theta), f = sincos_udeg(spec.angle);
+  const i128 du = -i128(spec.a) * t.s, dv = i128(spec.b) * t.c;
+  return {du * f.c - dv * f.s, du * f.s + dv * f.c};
+}
+
+// A turn of the ideal curve: where its tangent is parallel to an axis.
+struct Turn {
+  std::int64_t theta;  // micro-degrees in [0, 360 degrees)
+  char axis;           // 'X': the X component of the tangent changes sign there; 'Y'
+};
+
+// The four turns of a rotated ellipse, found on the deterministic fixed-point sines (the
+// same on every machine): the sign changes among 1440 samples, each bisected to the
+// micro-degree; a turn's angle is the first micro-degree with the new sign.
+std::vector<Turn> turns_of(const ArcSpec& spec) {
+  constexpr int kSamples = 1440;
+  constexpr std::int64_t kStep = kFullTurn / kSamples;
+  std::vector<Turn> v;
+  for (const char axis : {'X', 'Y'}) {
+    const auto pos = [&](std::int64_t t) {
+      const auto [tx, ty] = ideal_tangent(spec, normalize_udeg(t));
+      return (axis == 'X' ? tx : ty) > 0;
+    };
+    for (int k = 0; k < kSamples; ++k) {
+      std::int64_t lo = k * kStep, hi = lo + kStep;
+      const bool s = pos(lo);
+      if (pos(hi) == s) continue;
+      while (hi - lo > 1) {
+        const std::int64_t m = lo + (hi - lo) / 2;
+        (pos(m) == s ? lo : hi) = m;
+      }
+      v.push_back(Turn{normalize_udeg(hi), axis});
+    }
+  }
+  return v;
+}
+
+// Tips sharper than the lattice (docs/golden-model.md, "Tips sharper than the lattice").
+// Near the tip of the major axis the curve's motion along that axis is proportional to
+// its distance from the axis, which a lattice point beside it gets wrong by up to half a
+// step: where the tip's radius of curvature min(a,b)^2 / max(a,b) is below kTipRadius
+// steps, the path crosses the zone where the curve lies within kZoneOffset16 / 16 step of
+// the major axis in lines, and re-anchors on the curve where it is kReanchorOffsets16 / 16
+// steps from the axis on the way in and out. (Tuned on scripts/program-sweep.sh's draws:
+// docs/results.md gives the figures.)
+constexpr std::int64_t kTipRadius = 4;
+constexpr int kZoneOffset16 = 16;
+constexpr int kReanchorOffsets16[] = {24, 36, 54, 81};
+constexpr std::int64_t kZoneChord = 8;  // steps between the way points of the lines across a zone
+
+bool sharp_tips(const ArcSpec& spec) {
+  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
+  return i128(mn) * mn < i128(kTipRadius) * mx;
+}
+
+// The parametric angle from a tip of the major axis to where the curve is w16 / 16 step
+// from that axis (minor * sin(angle) = w16 / 16), to the micro-degree on the fixed-point
+// sines; 90 degrees if the minor semi-axis is no longer than that.
+std::int64_t offset_angle(const ArcSpec& spec, int w16) {
+  const i128 mn = std::min(spec.a, spec.b);
+  const i128 width = (i128(w16) << kTrigFrac) / 16;
+  if (mn << kTrigFrac <= width) return kQuarterTurn;
+  std::int64_t lo = 0, hi = kQuarterTurn;  // minor * sin(hi) >= width > minor * sin(lo)
+  while (hi - lo > 1) {
+    const std::int64_t m = lo + (hi - lo) / 2;
+    (mn * sincos_udeg(m).s >= width ? hi : lo) = m;
+  }
+  return hi;
+}
+
+// The end of a section: where the path passes the section's last curve point e along
+// the travel direction t there (the curve's tangent, times the direction of travel), or
+// comes within half a step of it: the first position q with (q - e) . t >= -(|tx| +
+// |ty|) / 2. Both axes move one way in a section, the ways of t's components (or t's
+// component is 0), so (q - e) . t only grows: the first such position is where it stays.
+struct PassEnd {
+  FixedPoint e;  // relative, Q(kPosFrac)
+  i128 tx = 0, ty = 0;
+  PassEnd(const ArcSpec& spec, std::int64_t theta) : e(theta_ideal(spec, theta)) {
+    const int D = spec.dir == Direction::Ccw ? 1 : -1;
+    auto [x, y] = ideal_tangent(spec, theta);
+    const auto mag = [](i128 v) { return v < 0 ? -v : v; };
+    while (mag(x) >= (i128(1) << 60) || mag(y) >= (i128(1) << 60)) x /= 2, y /= 2;
+    tx = D * x;
+    ty = D * y;
+  }
+  bool reached(Point q) const {
+    const i128 dx = (i128(q.x) << kPosFrac) - e.x, dy = (i128(q.y) << kPosFrac) - e.y;
+    const auto mag = [](i128 v) { return v < 0 ? -v : v; };
+    return dx * tx + dy * ty >= -((mag(tx) + mag(ty)) << (kPosFrac - 1));
+  }
+};
+
+// The signed parametric angle from b to a, in (-180, 180] degrees.
+std::int64_t angle_diff(std::int64_t a, std::int64_t b) {
+  const std::int64_t d = normalize_udeg(a - b);
+  return d > kFullTurn / 2 ? d - kFullTurn : d;
+}
+
+}  // namespace
+
+// docs/golden-model.md, "Rotated ellipses". The arc is cut at the turns of the ideal
+// curve (where its tangent is parallel to an axis) into sections in which both axes move
+// one way. Each section starts on the ideal curve at its first angle: from the lattice
+// point nearest to that curve point (zero preload: theta_point()'s), with half preload
+// the rest of it in the preloads, and runs until the path passes the section's last
+// curve point (PassEnd); the axis that turns there takes at most the steps to that
+// point's lattice point. The next section starts on the ideal curve again, after a short
+// line from where the path stopped if that is another lattice point. So the DDA never
+// runs past a turn on its own (where the lattice position's tangent points the other way
+// than the curve's): every turn is re-anchored on the curve. A section whose start and
+// end have the same lattice point is skipped; one that cannot move ends where it stands,
+// and the line goes on to the next anchor.
+// Around a tip sharper than the lattice (sharp_tips()) the path re-anchors more often on
+// the way in and out, and crosses the zone where the curve lies within a step of the
+// major axis in lines: through a lattice point near the zone's entry, one near the tip
+// and one near its exit, chosen among the nearest and its neighbours so that the lines'
+// points keep closest to the curve.
+void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::int64_t theta_from,
+                          std::int64_t theta_to) {
+  const ArcSpec& spec = p.spec;
+  const Coefficients k = sc.k;
+  const int D = spec.dir == Direction::Ccw ? 1 : -1;
+  const Point c = spec.center;
+  const auto rel = [&](Point q) { return Point{q.x - c.x, q.y - c.y}; };
+  const auto tx = [&](Point r) { return D * (i128(k.p) * r.x - i128(k.qx) * r.y); };
+  const auto ty = [&](Point r) { return D * (i128(k.qy) * r.x - i128(k.p) * r.y); };
+  const auto at = [&](std::int64_t dist) { return normalize_udeg(theta_from + D * dist); };
+  // Travel in parametric angle; the turns, tips and tip zones' ends inside it.
+  std::int64_t span = normalize_udeg(D * (theta_to - theta_from));
+  if (span == 0) span = kFullTurn;
+  const std::int64_t delta = sharp_tips(spec) ? offset_angle(spec, kZoneOffset16) : 0;
+  const std::int64_t tip0 = spec.a >= spec.b ? 0 : kQuarterTurn;
+  const auto in_zone = [&](std::int64_t theta) {
+    if (delta == 0) return false;
+    const std::int64_t d = angle_diff(theta, tip0);
+    return std::llabs(d) < delta || kFullTurn / 2 - std::llabs(d) < delta;
+  };
+  std::vector<std::pair<std::int64_t, char>> cuts;  // (distance travelled, 'X'/'Y': that axis turns)
+  const auto cut = [&](std::int64_t theta, char what) {
+    const std::int64_t d = normalize_udeg(D * (theta - theta_from));
+    if (d > 0 && d < span) cuts.emplace_back(d, what);
+  };
+  for (const Turn& t : turns_of(spec)) {
+    if (!in_zone(t.theta)) cut(t.theta, t.axis);
+  }
+  if (delta != 0) {
+    for (const std::int64_t tip : {tip0, tip0 + kFullTurn / 2}) {
+      cut(normalize_udeg(tip - delta), 'E');
+      cut(normalize_udeg(tip), 'T');
+      cut(normalize_udeg(tip + delta), 'E');
+      for (const int w : kReanchorOffsets16) {
+        const std::int64_t d = offset_angle(spec, w);
+        if (d >= kQuarterTurn) break;
+        cut(normalize_udeg(tip - d), 'R');
+        cut(normalize_udeg(tip + d), 'R');
+      }
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.emplace_back(span, 0);
+  const std::uint64_t guard = rotated_piece_guard(spec);
+  const auto line_to = [&](Point a, Point b) {
+    if (a != b) {
+      for (const Piece& l : line_pieces(a, b, spec.preload)) p.pieces.push_back(l);
+    }
+  };
+  // The largest distance from the curve of the points of the lines through the lattice
+  // points `way` (as line_pieces() draws them), and their steps.
+  const auto chain_cost = [&](std::initializer_list<Point> way) {
+    double worst = 0;
+    std::int64_t steps = 0;
+    const Point* prev = nullptr;
+    for (const Point& q : way) {
+      if (prev && *prev != q) {
+        for (const Piece& l : line_pieces(*prev, q, spec.preload)) {
+          Datapath dp(l.cmd, l.from);
+          while (!dp.done()) {
+            dp.step();
+            worst = std::max(worst, plan_distance(p, double(dp.pos().x), double(dp.pos().y)));
+          }
+        }
+        steps += std::max(std::llabs(q.x - prev->x), std::llabs(q.y - prev->y));
+      } else if (!prev) {
+        worst = plan_distance(p, double(q.x), double(q.y));
+      }
+      prev = &q;
+    }
+    return std::pair<double, std::int64_t>{worst, steps};
+  };
+  // Lattice points around the curve point at theta: the nearest and its 8 neighbours.
+  const auto around = [&](std::int64_t theta, std::vector<Point> v) {
+    const FixedPoint f = theta_ideal(spec, theta);
+    const Point r0{c.x + std::int64_t(round_shift(f.x, kPosFrac)), c.y + std::int64_t(round_shift(f.y, kPosFrac))};
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) v.push_back(Point{r0.x + dx, r0.y + dy});
+    }
+    return v;
+  };
+  // The command of a section starting on the curve point `a` with step directions (sx, sy),
+  // counts 0 (set from its walk).
+  const auto section_command = [&](const EndPoint& a, int sx, int sy) {
+    Command cm;
+    cm.cap = sc.cap;
+    cm.dir_x_neg = sx < 0;
+    cm.dir_y_neg = sy < 0;
+    const i128 jvx = sx * tx(rel(a.lattice)), jvy = sy * ty(rel(a.lattice));
+    if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
+      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                       pt(a.lattice) + " exceeds the capacity (use more bits)");
+    }
+    cm.jv_x = std::int64_t(jvx);
+    cm.jv_y = std::int64_t(jvy);
+    cm.jr_x = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_x_neg, a.fx) : 0;
+    cm.jr_y = spec.preload == Preload::Half ? fraction_preload(cm.cap, cm.dir_y_neg, a.fy) : 0;
+    cm.inc_x_on_x = D * k.p;
+    cm.inc_x_on_y = -D * sx * sy * k.qx;
+    cm.inc_y_on_x = D * sx * sy * k.qy;
+    cm.inc_y_on_y = -D * k.p;
+    return cm;
+  };
+  char prev_axis = 0;
+  EndPoint anchor = from;  // the curve point the next section starts on
+  Point pos = from.lattice;
+  std::int64_t done = 0;
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    const auto [dist, turn_axis] = cuts[i];
+    const std::int64_t th_b = at(dist), mid = at(done + (dist - done) / 2);
+    const EndPoint next = resolve_point(spec, std::nullopt, th_b, 0, std::nullopt);
+    if (in_zone(mid)) {
+      // Across a tip zone: lines through lattice points near curve points no more than
+      // kZoneChord steps apart (the zone's entry, the tip, its exit and points between),
+      // each chosen among the nearest lattice point and its 8 neighbours so that the
+      // lines' points keep closest to the curve (then the fewest steps), from where the
+      // path is to the next section's start.
+      std::size_t j = i;
+      std::vector<std::int64_t> marks{done};  // distances travelled: entry, tip, exit
+      while (j + 1 < cuts.size() && in_zone(at(cuts[j].first + (cuts[j + 1].first - cuts[j].first) / 2))) {
+        if (cuts[j].second == 'T') marks.push_back(cuts[j].first);
+        ++j;
+      }
+      marks.push_back(cuts[j].first);
+      const bool exit = cuts[j].second == 'E';
+      const EndPoint out = resolve_point(spec, std::nullopt, at(cuts[j].first), 0, std::nullopt);
+      const auto nearest = [&](std::int64_t d) {
+        const FixedPoint f = theta_ideal(spec, at(d));
+        return Point{c.x + std::int64_t(round_shift(f.x, kPosFrac)), c.y + std::int64_t(round_shift(f.y, kPosFrac))};
+      };
+      std::vector<std::int64_t> way{marks.front()};
+      for (std::size_t m = 1; m < marks.size(); ++m) {
+        // Halve each stretch until its ends' lattice points are at most kZoneChord apart.
+        std::vector<std::int64_t> stack{marks[m]};
+        while (!stack.empty()) {
+          const std::int64_t d0 = way.back(), d1 = stack.back();
+          const Point q0 = nearest(d0), q1 = nearest(d1);
+          if (d1 - d0 > 1 && std::max(std::llabs(q1.x - q0.x), std::llabs(q1.y - q0.y)) > kZoneChord) {
+            stack.push_back(d0 + (d1 - d0) / 2);
+          } else {
+            way.push_back(d1);
+            stack.pop_back();
+          }
+        }
+      }
+      // Candidates per way point; the first is where the path is (and, after an arc, the
+      // points near the entry), the last goes on to `out` (or is it, at the arc's end).
+      std::vector<std::vector<Point>> cand(way.size());
+      for (std::size_t w = 0; w < way.size(); ++w) {
+        if (w == 0 && prev_axis != 'E') {
+          cand[w] = {pos};
+        } else if (w + 1 == way.size() && !exit) {
+          cand[w] = {out.lattice};
+        } else {
+          cand[w] = around(at(way[w]), w == 0 ? std::vector<Point>{pos} : std::vector<Point>{});
+        }
+      }
+      using Cost = std::pair<double, std::int64_t>;
+      const auto plus = [](Cost u, Cost v) { return Cost{std::max(u.first, v.first), u.second + v.second}; };
+      // Bottleneck shortest path over the way points (dynamic programming).
+      std::vector<std::vector<Cost>> best(way.size());
+      std::vector<std::vector<std::size_t>> from_idx(way.size());
+      for (std::size_t q = 0; q < cand[0].size(); ++q) {
+        best[0].push_back(cand[0][q] == pos ? Cost{0.0, 0} : chain_cost({pos, cand[0][q]}));
+        from_idx[0].push_back(0);
+      }
+      for (std::size_t w = 1; w < way.size(); ++w) {
+        for (const Point& q : cand[w]) {
+          std::optional<Cost> b;
+          std::size_t bi = 0;
+          for (std::size_t r = 0; r < cand[w - 1].size(); ++r) {
+            Cost cst = plus(best[w - 1][r], chain_cost({cand[w - 1][r], q}));
+            if (w + 1 == way.size() && exit) cst = plus(cst, chain_cost({q, out.lattice}));
+            if (!b || cst < *b) b = cst, bi = r;
+          }
+          best[w].push_back(*b);
+          from_idx[w].push_back(bi);
+        }
+      }
+      std::size_t k = std::size_t(std::min_element(best.back().begin(), best.back().end()) - best.back().begin());
+      std::vector<Point> pts(way.size());
+      for (std::size_t w = way.size(); w-- > 0;) {
+        pts[w] = cand[w][k];
+        k = from_idx[w][k];
+      }
+      Point at_pt = pos;
+      for (const Point& q : pts) line_to(at_pt, q), at_pt = q;
+      line_to(at_pt, out.lattice);
+      pos = out.lattice;
+      prev_axis = cuts[j].second;
+      anchor = out;
+      done = cuts[j].first;
+      i = j;
+      continue;
+    }
+    prev_axis = turn_axis;
+    if (next.lattice == anchor.lattice) {  // nothing to run: the next section starts here
+      anchor = next;
+      done = dist;
+      continue;
+    }
+    line_to(pos, anchor.lattice);
+    const Point start = pos = anchor.lattice;
+    // Step directions: the curve's, in the middle of the section.
+    const auto [mtx, mty] = ideal_tangent(spec, mid);
+    const int sx = D * mtx >= 0 ? 1 : -1, sy = D * mty >= 0 ? 1 : -1;
+    Command cm = section_command(anchor, sx, sy);
+    // Run to the ray; the turning axis at most to the end's lattice coordinate.
+    Command probe = cm;
+    constexpr std::int64_t kOpen = std::int64_t{1} << 40;
+    probe.cnt_x = turn_axis == 'X' ? std::max<std::int64_t>(0, sx * (next.lattice.x - start.x)) : kOpen;
+    probe.cnt_y = turn_axis == 'Y' ? std::max<std::int64_t>(0, sy * (next.lattice.y - start.y)) : kOpen;
+    const PassEnd end(spec, th_b);
+    if (end.reached(rel(start))) {  // already there: the next section starts from here
+      anchor = next;
+      done = dist;
+      continue;
+    }
+    Datapath dp(probe, start);
+    while (!dp.stalled() && dp.iterations() < guard) {
+      const RegState& r = dp.regs();
+      if ((r.cnt_x != 0 && std::llabs(r.jv_x) > cm.cap) || (r.cnt_y != 0 && std::llabs(r.jv_y) > cm.cap)) {
+        throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                         pt(dp.pos()) + " exceeds the capacity (use more bits)");
+      }
+      dp.step();
+      if (end.reached(rel(dp.pos()))) break;
+    }
+    pos = dp.pos();
+    cm.cnt_x = std::llabs(pos.x - start.x);
+    cm.cnt_y = std::llabs(pos.y - start.y);
+    if (pos != start) {
+      Piece pc;
+      pc.quadrant = quadrant_of_steps(sx, sy, spec.dir);
+      pc.from = start;
+      pc.to = pos;
+      pc.cmd = cm;
+      pc.iteration_bound = dp.iterations();  // exact: the run above is the piece's run
+      p.pieces.push_back(pc);
+    }
+    anchor = next;
+    done = dist;
+  }
+  if (p.pieces.empty()) {
+    // An arc shorter than a step (its ends' curve points round to one lattice point): one
+    // command without a step, as the other planners' last piece.
+    const auto [t0x, t0y] = ideal_tangent(spec, theta_from);
+    const int sx = D * t0x >= 0 ? 1 : -1, sy = D * t0y >= 0 ? 1 : -1;
+    Piece pc;
+    pc.quadrant = quadrant_of_steps(sx, sy, spec.dir);
+    pc.from = pc.to = from.lattice;
+    pc.cmd = section_command(from, sx, sy);
+    pc.iteration_bound = 1;
+    p.pieces.push_back(pc);
+  }
+}
+
+}  // namespace dda::detail
