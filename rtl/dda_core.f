@@ -4,6 +4,7 @@
 //   verilator -f rtl/dda_core.f ...     iverilog -c rtl/dda_core.f ...
 // CMake reads it (cmake/dda_rtl.cmake); scripts/rtl-files.sh expands it for Yosys.
 +incdir+$(DDA_RTL)
+$(DDA_RTL)/dda_add.v
 $(DDA_RTL)/dda_counter.v
 $(DDA_RTL)/dda_integrator.v
 $(DDA_RTL)/dda_ctrl.v

@@ -4,13 +4,21 @@
 // (u_cnt_x, u_cnt_y), the control (u_ctrl), and here the shared capacity cap_q, the
 // directions dir_*_q and the registered step pulses step_*_q.
 //
+// Impl chooses the implementation of the datapath and control (docs/design.md,
+// "Implementations"): "small" (the default, fewest logic cells) or "fast" (derived
+// registers that keep the carries one edge ahead). Both are cycle-exact at the ports
+// and hold the same architectural registers; formal/ proves them equal to the
+// reference core.
+//
 // The command word cmd_i is sliced with the DDA_CMD_<FIELD>_LSB/_WIDTH macros of the
 // generated dda_params.vh, so the widths are fixed by it (localparams, not parameters:
 // overriding them would not change the command layout).
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
-module dda_core (
+module dda_core #(
+  parameter Impl = "small"  // "small" | "fast"
+) (
   input  wire                      clk_i,
   input  wire                      rst_ni,       // synchronous, active low
   input  wire                      ce_i,         // one iteration per edge while high
@@ -65,8 +73,10 @@ module dda_core (
   wire load;
   wire iterate;
   wire ovf_x, ovf_y;
+  wire ovf_d_x, ovf_d_y;  // the carries after this edge (Impl "fast")
   wire can_x, can_y;
   wire active_x, active_y;
+  wire active_d_x, active_d_y;
   wire last_x, last_y;
 
   dda_ctrl u_ctrl (
@@ -89,7 +99,7 @@ module dda_core (
     .iter_o      (iter_o)
   );
 
-  dda_integrator #(.AccWidth(AccWidth)) u_int_x (
+  dda_integrator #(.AccWidth(AccWidth), .Impl(Impl), .IsY(0)) u_int_x (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .load_i     (load),
@@ -97,16 +107,21 @@ module dda_core (
     .jr_i       (cmd_jr_x),
     .inc_on_x_i (cmd_inc_x_on_x),
     .inc_on_y_i (cmd_inc_x_on_y),
+    .cap_cmd_i  (cmd_cap),
     .iterate_i  (iterate),
     .cap_i      (cap_q),
     .active_i   (active_x),
+    .active_d_i (active_d_x),
     .ovf_x_i    (ovf_x),
     .ovf_y_i    (ovf_y),
     .ovf_o      (ovf_x),
+    .ovf_d_o    (ovf_d_x),
+    .ovf_x_d_i  (ovf_d_x),
+    .ovf_y_d_i  (ovf_d_y),
     .can_o      (can_x)
   );
 
-  dda_integrator #(.AccWidth(AccWidth)) u_int_y (
+  dda_integrator #(.AccWidth(AccWidth), .Impl(Impl), .IsY(1)) u_int_y (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .load_i     (load),
@@ -114,16 +129,21 @@ module dda_core (
     .jr_i       (cmd_jr_y),
     .inc_on_x_i (cmd_inc_y_on_x),
     .inc_on_y_i (cmd_inc_y_on_y),
+    .cap_cmd_i  (cmd_cap),
     .iterate_i  (iterate),
     .cap_i      (cap_q),
     .active_i   (active_y),
+    .active_d_i (active_d_y),
     .ovf_x_i    (ovf_x),
     .ovf_y_i    (ovf_y),
     .ovf_o      (ovf_y),
+    .ovf_d_o    (ovf_d_y),
+    .ovf_x_d_i  (ovf_d_x),
+    .ovf_y_d_i  (ovf_d_y),
     .can_o      (can_y)
   );
 
-  dda_counter #(.CntWidth(CntWidth)) u_cnt_x (
+  dda_counter #(.CntWidth(CntWidth), .Impl(Impl)) u_cnt_x (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .load_i    (load),
@@ -131,10 +151,11 @@ module dda_core (
     .iterate_i (iterate),
     .dec_i     (ovf_x),
     .active_o  (active_x),
+    .active_d_o(active_d_x),
     .last_o    (last_x)
   );
 
-  dda_counter #(.CntWidth(CntWidth)) u_cnt_y (
+  dda_counter #(.CntWidth(CntWidth), .Impl(Impl)) u_cnt_y (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .load_i    (load),
@@ -142,6 +163,7 @@ module dda_core (
     .iterate_i (iterate),
     .dec_i     (ovf_y),
     .active_o  (active_y),
+    .active_d_o(active_d_y),
     .last_o    (last_y)
   );
 

@@ -1,17 +1,38 @@
 // SPDX-License-Identifier: Apache-2.0
 // One DDA integrator (docs/design.md, "Integrator"): integrand jv_q, accumulator jr_q
-// and the two integrand corrections inc_on_x_q, inc_on_y_q.
+// and the two integrand corrections inc_on_x_q, inc_on_y_q, the architectural registers
+// both implementations hold.
 //
-// Combinationally: sum = jr_q + jv_q (AccWidth + 1 bits) and the carry
-// ovf_o = add & (sum >= cap_i), where add = active_i and the integrand is not negative
-// (top bit clear). On an iteration (iterate_i) the accumulator keeps sum - cap_i if it
-// carried, sum if it did not, and holds if the axis does not add; the
-// integrand adds the corrections selected by both axes' carries of the same iteration,
-// modulo 2^AccWidth (the corrections are two's complement).
+// Behaviour (both implementations): the carry ovf_o = add & (jr_q + jv_q >= cap_i),
+// where add = active and the integrand is not negative (top bit clear). On an iteration
+// (iterate_i) the accumulator keeps jr_q + jv_q - cap_i if it carried, jr_q + jv_q if it
+// did not, and holds if the axis does not add; the integrand adds the corrections
+// selected by both axes' carries of the same iteration, modulo 2^AccWidth.
+//
+// Impl (docs/design.md, "Implementations"):
+//   "small"  computes the carry from the registers in the cycle it is used: the adder
+//            jr_q + jv_q, its compare with the capacity and the integrand's correction
+//            in series. Fewest registers; the SystemC model mirrors it.
+//   "fast"   keeps the carry one edge ahead in registers of its own, derived from the
+//            architectural ones (every one has an assertion saying what it equals):
+//              e_q      = jr_q + jv_q - cap_q        (AccWidth + 1 bits, jv_q signed)
+//              incmc_q  = inc_on_<own axis>_q - cap_q
+//              incsum_q = inc_on_x_q + inc_on_y_q    (both signed, AccWidth + 1 bits)
+//              add_q, ovf_q, jvz_q (jv_q == 0), and copies of the carries and of
+//              add_q so that no flip-flop drives more than about a hundred LUTs
+//            so the carry is a register, the control decides from registers only, and
+//            each iteration is one carry chain per register behind a carry-save layer:
+//              e' = e + (add ? jv : 0) + (ovf_x ? K_x : 0) + (ovf_y ? K_y : 0),
+//            K_own = incmc, K_other = inc_on_<other axis>.
+//            The e_q invariant needs the driver's guarantee that an active
+//            integrand stays in [-cap, cap] (docs/design.md).
 `include "dda_params.vh"
+`include "dda_assert.vh"
 
 module dda_integrator #(
-  parameter integer AccWidth = `DDA_ACC_WIDTH
+  parameter integer AccWidth = `DDA_ACC_WIDTH,
+  parameter         Impl     = "small",
+  parameter integer IsY      = 0         // 1: the Y integrator (its "own" carry is Y; fast only)
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,       // synchronous, active low
@@ -22,13 +43,18 @@ module dda_integrator #(
   input  wire [AccWidth-1:0] jr_i,
   input  wire [AccWidth-1:0] inc_on_x_i,
   input  wire [AccWidth-1:0] inc_on_y_i,
+  input  wire [AccWidth-1:0] cap_cmd_i,    // the command's capacity (fast: derived registers)
   // iterate (run, ce_i high, neither finished nor stalled)
   input  wire                iterate_i,
   input  wire [AccWidth-1:0] cap_i,        // shared capacity (dda_core.cap_q)
   input  wire                active_i,     // this axis' counter is non-zero
+  input  wire                active_d_i,   // ... after this edge (fast only)
   input  wire                ovf_x_i,      // X carry of this iteration
   input  wire                ovf_y_i,      // Y carry of this iteration
   output wire                ovf_o,        // this integrator's carry
+  output wire                ovf_d_o,      // ... after this edge (fast only)
+  input  wire                ovf_x_d_i,    // both carries after this edge (fast only)
+  input  wire                ovf_y_d_i,
   output wire                can_o         // active and non-zero integrand: can still carry
 );
 
@@ -37,53 +63,172 @@ module dda_integrator #(
   reg [AccWidth-1:0] inc_on_x_q /* verilator public_flat_rd */;
   reg [AccWidth-1:0] inc_on_y_q /* verilator public_flat_rd */;
 
-  reg [AccWidth-1:0] jv_d;
-  reg [AccWidth-1:0] jr_d;
-  reg [AccWidth-1:0] inc_on_x_d;
-  reg [AccWidth-1:0] inc_on_y_d;
-
-  // The adder is one bit wider than the registers: jr_q + jv_q < 2^(AccWidth + 1).
+  // The adder of the architectural registers (the probe `sum` of the register table):
+  // jr_q + jv_q < 2^(AccWidth + 1).
   wire [AccWidth:0] sum /* verilator public_flat_rd */ = {1'b0, jr_q} + {1'b0, jv_q};
-  // (sum - cap_i) mod 2^AccWidth: only the low AccWidth bits are stored.
-  wire [AccWidth-1:0] sum_minus_cap = sum[AccWidth-1:0] - cap_i;
-  wire [AccWidth-1:0] corr_x = ovf_x_i ? inc_on_x_q : {AccWidth{1'b0}};
-  wire [AccWidth-1:0] corr_y = ovf_y_i ? inc_on_y_q : {AccWidth{1'b0}};
-
   // A negative integrand (top bit set) holds its axis: no add, no carry.
   wire add = active_i & ~jv_q[AccWidth-1];
-  assign ovf_o = add & (sum >= {1'b0, cap_i});
-  assign can_o = add & (jv_q != {AccWidth{1'b0}});
 
-  always @(*) begin
-    jv_d       = jv_q;
-    jr_d       = jr_q;
-    inc_on_x_d = inc_on_x_q;
-    inc_on_y_d = inc_on_y_q;
-    if (load_i) begin
-      jv_d       = jv_i;
-      jr_d       = jr_i;
-      inc_on_x_d = inc_on_x_i;
-      inc_on_y_d = inc_on_y_i;
-    end else if (iterate_i) begin
-      if (add) begin
-        jr_d = ovf_o ? sum_minus_cap : sum[AccWidth-1:0];
-      end
-      jv_d = jv_q + corr_x + corr_y;
+  // The registers that change only on a load: the corrections.
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      inc_on_x_q <= {AccWidth{1'b0}};
+      inc_on_y_q <= {AccWidth{1'b0}};
+    end else if (load_i) begin
+      inc_on_x_q <= inc_on_x_i;
+      inc_on_y_q <= inc_on_y_i;
     end
   end
 
-  always @(posedge clk_i) begin
-    if (!rst_ni) begin
-      jv_q       <= {AccWidth{1'b0}};
-      jr_q       <= {AccWidth{1'b0}};
-      inc_on_x_q <= {AccWidth{1'b0}};
-      inc_on_y_q <= {AccWidth{1'b0}};
-    end else begin
-      jv_q       <= jv_d;
-      jr_q       <= jr_d;
-      inc_on_x_q <= inc_on_x_d;
-      inc_on_y_q <= inc_on_y_d;
+  if (Impl == "fast") begin : g_fast
+    localparam integer EW = AccWidth + 1;  // width of the derived sums
+    reg [EW-1:0]       e_q      /* verilator public_flat_rd */;
+    reg [EW-1:0]       incmc_q  /* verilator public_flat_rd */;
+    reg [EW-1:0]       incsum_q /* verilator public_flat_rd */;
+    reg                add_q    /* verilator public_flat_rd */;
+    reg                ovf_q    /* verilator public_flat_rd */;
+    reg                jvz_q    /* verilator public_flat_rd */;
+
+    function automatic [EW-1:0] sx(input [AccWidth-1:0] v);
+      sx = {v[AccWidth-1], v};
+    endfunction
+
+    // ---- the values a load writes (from the command word) ----
+    wire [AccWidth-1:0] inc_own_i = (IsY != 0) ? inc_on_y_i : inc_on_x_i;
+    // e = jr + jv - cap as one carry-save layer and one chain: jr + jv + ~cap + 1.
+    wire [EW-1:0] ld_a = {1'b0, jr_i};
+    wire [EW-1:0] ld_b = sx(jv_i);
+    wire [EW-1:0] ld_c = ~{1'b0, cap_cmd_i};
+    wire [EW-1:0] ld_s = ld_a ^ ld_b ^ ld_c;
+    wire [EW-2:0] ld_k = (ld_a[EW-2:0] & ld_b[EW-2:0]) | (ld_a[EW-2:0] & ld_c[EW-2:0]) | (ld_b[EW-2:0] & ld_c[EW-2:0]);
+    wire [EW-1:0] e_ld;
+    dda_add #(.Width(EW), .Split(EW / 2)) u_add_ld (.a_i(ld_s), .b_i({ld_k, 1'b1}), .s_o(e_ld));
+    wire          add_ld = active_d_i & ~jv_i[AccWidth-1];
+
+    // ---- one iteration ----
+    // Copies of both carries for the two datapaths (each drives about a hundred LUTs;
+    // ovf_q drives the control): registers of their own, loaded with the same next value.
+    (* keep *) reg cw_x_q, cw_y_q;  // for the integrand's correction
+    (* keep *) reg ce_x_q, ce_y_q;  // for e's carry-save layers
+    (* keep *) reg ce_a_q;          // a copy of add_q for them
+    // The integrand's correction: one of 0, inc_on_x, inc_on_y, their sum (4:1 on the
+    // carries), then one chain. The sum is AccWidth + 1 bits; jv_q keeps the low bits.
+    wire [EW-1:0] w = cw_x_q ? (cw_y_q ? incsum_q : sx(inc_on_x_q))
+                             : (cw_y_q ? sx(inc_on_y_q) : {EW{1'b0}});
+    wire [EW-1:0] jv_it;
+    dda_add #(.Width(EW), .Split(EW / 2)) u_add_jv (.a_i(sx(jv_q)), .b_i(w), .s_o(jv_it));
+    // jv_q + w == 0 (mod 2^AccWidth) without the carry chain: every bit's sum is 0 iff the
+    // carry into it is jv | w of the bit below (0 into bit 0).
+    wire [AccWidth-1:0] zc = {jv_q[AccWidth-2:0] | w[AccWidth-2:0], 1'b0};
+    wire          jvz_it = &(~(jv_q ^ w[AccWidth-1:0] ^ zc));
+    // e' = e + (add ? jv : 0) + (ovf_x ? K_x : 0) + (ovf_y ? K_y : 0): two carry-save layers, one chain.
+    wire [EW-1:0] k_x = (IsY != 0) ? sx(inc_on_x_q) : incmc_q;
+    wire [EW-1:0] k_y = (IsY != 0) ? incmc_q : sx(inc_on_y_q);
+    wire [EW-1:0] t_a = e_q;
+    wire [EW-1:0] t_b = {1'b0, ce_a_q ? jv_q : {AccWidth{1'b0}}};  // what the accumulator adds
+    wire [EW-1:0] t_c = ce_x_q ? k_x : {EW{1'b0}};
+    wire [EW-1:0] t_d = ce_y_q ? k_y : {EW{1'b0}};
+    wire [EW-1:0] s1 = t_a ^ t_b ^ t_c;
+    wire [EW-2:0] m1 = (t_a[EW-2:0] & t_b[EW-2:0]) | (t_a[EW-2:0] & t_c[EW-2:0]) | (t_b[EW-2:0] & t_c[EW-2:0]);
+    wire [EW-1:0] k1 = {m1, 1'b0};
+    wire [EW-1:0] s2 = s1 ^ k1 ^ t_d;
+    wire [EW-2:0] m2 = (s1[EW-2:0] & k1[EW-2:0]) | (s1[EW-2:0] & t_d[EW-2:0]) | (k1[EW-2:0] & t_d[EW-2:0]);
+    wire [EW-1:0] k2 = {m2, 1'b0};
+    wire [EW-1:0] e_it;
+    dda_add #(.Width(EW), .Split(EW / 2)) u_add_e (.a_i(s2), .b_i(k2), .s_o(e_it));
+    wire [AccWidth-1:0] jr_it = ovf_q ? e_q[AccWidth-1:0] : sum[AccWidth-1:0];
+
+    // The flags' next values, written so that the two late signals (the signs at the
+    // ends of the chains) pass through one LUT: early terms are kept as nets of their own.
+    (* keep *) wire jvt = jv_it[AccWidth-1];  // the integrand's sign after the iteration
+    (* keep *) wire et  = e_it[EW-1];         // e's sign after the iteration
+    (* keep *) wire sel_it = rst_ni & ~load_i & iterate_i;
+    (* keep *) wire p_ovf = !rst_ni ? 1'b0 : load_i ? add_ld & ~e_ld[EW-1] : iterate_i ? active_d_i : ovf_q;
+    (* keep *) wire p_add = !rst_ni ? 1'b0 : load_i ? add_ld : iterate_i ? active_d_i : add_q;
+    wire ovf_d   = sel_it ? p_ovf & ~jvt & ~et : p_ovf;
+    wire add_d   = sel_it ? p_add & ~jvt : p_add;
+    assign ovf_d_o = ovf_d;
+    always @(posedge clk_i) begin
+      ce_a_q <= add_d;
+      cw_x_q <= ovf_x_d_i;
+      cw_y_q <= ovf_y_d_i;
+      ce_x_q <= ovf_x_d_i;
+      ce_y_q <= ovf_y_d_i;
     end
+
+    assign ovf_o = ovf_q;
+    assign can_o = add_q & ~jvz_q;
+
+    always @(posedge clk_i) begin
+      ovf_q <= ovf_d;
+      add_q <= add_d;
+      if (!rst_ni) begin
+        jv_q     <= {AccWidth{1'b0}};
+        jr_q     <= {AccWidth{1'b0}};
+        e_q      <= {EW{1'b0}};
+        incmc_q  <= {EW{1'b0}};
+        incsum_q <= {EW{1'b0}};
+        jvz_q    <= 1'b1;
+      end else if (load_i) begin
+        jv_q     <= jv_i;
+        jr_q     <= jr_i;
+        e_q      <= e_ld;
+        incmc_q  <= sx(inc_own_i) - {1'b0, cap_cmd_i};
+        incsum_q <= sx(inc_on_x_i) + sx(inc_on_y_i);
+        jvz_q    <= jv_i == {AccWidth{1'b0}};
+      end else if (iterate_i) begin
+        jv_q     <= jv_it[AccWidth-1:0];
+        if (add_q) jr_q <= jr_it;
+        e_q      <= e_it;
+        jvz_q    <= jvz_it;
+      end
+    end
+
+`ifndef SYNTHESIS
+    // The derived registers equal what they are derived from (the e_q one
+    // while the axis is active: the driver's integrand range holds for active axes).
+    wire [EW-1:0] e_ref = {1'b0, jr_q} + sx(jv_q) - {1'b0, cap_i};
+    wire [EW-1:0] cap_x = {1'b0, cap_i};
+    always @(posedge clk_i) begin
+      if (rst_ni) begin
+        `DDA_ASSERT(add_q == add, "ASSERTION dda_integrator(fast): add_q differs from active & jv_q >= 0")
+        `DDA_ASSERT(jvz_q == (jv_q == {AccWidth{1'b0}}), "ASSERTION dda_integrator(fast): jvz_q differs from jv_q == 0")
+        `DDA_ASSERT(ce_a_q == add_q, "ASSERTION dda_integrator(fast): the copy of add_q differs from it")
+        `DDA_ASSERT(incmc_q == sx((IsY != 0) ? inc_on_y_q : inc_on_x_q) - cap_x,
+                    "ASSERTION dda_integrator(fast): incmc_q differs from inc_on_own_q - cap_q")
+        `DDA_ASSERT(incsum_q == sx(inc_on_x_q) + sx(inc_on_y_q),
+                    "ASSERTION dda_integrator(fast): incsum_q differs from inc_on_x_q + inc_on_y_q")
+        `DDA_ASSERT(!active_i || e_q == e_ref, "ASSERTION dda_integrator(fast): e_q differs from jr_q + jv_q - cap_q")
+        `DDA_ASSERT(ovf_q == (add && sum >= cap_x), "ASSERTION dda_integrator(fast): ovf_q differs from the carry")
+        `DDA_ASSERT(cw_x_q == ovf_x_i && ce_x_q == ovf_x_i, "ASSERTION dda_integrator(fast): a copy of the X carry differs from it")
+        `DDA_ASSERT(cw_y_q == ovf_y_i && ce_y_q == ovf_y_i, "ASSERTION dda_integrator(fast): a copy of the Y carry differs from it")
+      end
+    end
+`endif
+  end else begin : g_small
+    // (sum - cap_i) mod 2^AccWidth: only the low AccWidth bits are stored.
+    wire [AccWidth-1:0] sum_minus_cap = sum[AccWidth-1:0] - cap_i;
+    wire [AccWidth-1:0] corr_x = ovf_x_i ? inc_on_x_q : {AccWidth{1'b0}};
+    wire [AccWidth-1:0] corr_y = ovf_y_i ? inc_on_y_q : {AccWidth{1'b0}};
+    wire ovf = add & (sum >= {1'b0, cap_i});
+    assign ovf_o = ovf;
+    assign can_o = add & (jv_q != {AccWidth{1'b0}});
+
+    always @(posedge clk_i) begin
+      if (!rst_ni) begin
+        jv_q <= {AccWidth{1'b0}};
+        jr_q <= {AccWidth{1'b0}};
+      end else if (load_i) begin
+        jv_q <= jv_i;
+        jr_q <= jr_i;
+      end else if (iterate_i) begin
+        if (add) jr_q <= ovf ? sum_minus_cap : sum[AccWidth-1:0];
+        jv_q <= jv_q + corr_x + corr_y;
+      end
+    end
+
+    assign ovf_d_o = 1'b0;
+    wire unused_small = &{1'b0, cap_cmd_i, active_d_i, ovf_x_d_i, ovf_y_d_i};
   end
 
 endmodule

@@ -12,7 +12,8 @@
 `include "dda_params.vh"
 
 module dda_fpga_top #(
-  parameter integer CMD_DEPTH = 256
+  parameter integer CMD_DEPTH = 256,
+  parameter         Impl      = "small"  // the core's implementation (dda_core.Impl)
 ) (
   input  wire                                  clk_i,
   input  wire                                  rst_ni,
@@ -64,7 +65,7 @@ module dda_fpga_top #(
     assign cmd_q[16*l+:16] = rd_q;
   end
 
-  dda_core u_core (
+  dda_core #(.Impl(Impl)) u_core (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .ce_i        (ce_i),
