@@ -16,8 +16,17 @@
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
+// The default implementation is "small"; defining DDA_IMPL_FAST (verilator/iverilog
+// -DDDA_IMPL_FAST, yosys read_verilog -DDDA_IMPL_FAST) makes it "fast" for builds that
+// cannot pass a string parameter easily (the CMake harnesses, scripts/vector-bench.sh).
+`ifdef DDA_IMPL_FAST
+`define DDA_IMPL_DEFAULT "fast"
+`else
+`define DDA_IMPL_DEFAULT "small"
+`endif
+
 module dda_core #(
-  parameter Impl = "small"  // "small" | "fast"
+  parameter Impl = `DDA_IMPL_DEFAULT  // "small" | "fast"
 ) (
   input  wire                      clk_i,
   input  wire                      rst_ni,       // synchronous, active low

@@ -140,11 +140,16 @@ module dda_integrator #(
 
     // The flags' next values, written so that the two late signals (the signs at the
     // ends of the chains) pass through one LUT: early terms are kept as nets of their own.
-    (* keep *) wire jvt = jv_it[AccWidth-1];  // the integrand's sign after the iteration
-    (* keep *) wire et  = e_it[EW-1];         // e's sign after the iteration
-    (* keep *) wire sel_it = rst_ni & ~load_i & iterate_i;
-    (* keep *) wire p_ovf = !rst_ni ? 1'b0 : load_i ? add_ld & ~e_ld[EW-1] : iterate_i ? active_d_i : ovf_q;
-    (* keep *) wire p_add = !rst_ni ? 1'b0 : load_i ? add_ld : iterate_i ? active_d_i : add_q;
+    (* keep *) wire jvt;  // the integrand's sign after the iteration
+    assign jvt = jv_it[AccWidth-1];
+    (* keep *) wire et;         // e's sign after the iteration
+    assign et = e_it[EW-1];
+    (* keep *) wire sel_it;
+    assign sel_it = rst_ni & ~load_i & iterate_i;
+    (* keep *) wire p_ovf;
+    assign p_ovf = !rst_ni ? 1'b0 : load_i ? add_ld & ~e_ld[EW-1] : iterate_i ? active_d_i : ovf_q;
+    (* keep *) wire p_add;
+    assign p_add = !rst_ni ? 1'b0 : load_i ? add_ld : iterate_i ? active_d_i : add_q;
     wire ovf_d   = sel_it ? p_ovf & ~jvt & ~et : p_ovf;
     wire add_d   = sel_it ? p_add & ~jvt : p_add;
     assign ovf_d_o = ovf_d;

@@ -3,11 +3,12 @@
 # Runs the self-checking bench tb/hdl/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
 #   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]
-#                                  [--sim icarus|verilator|both] DIR
+#                                  [--sim icarus|verilator|both] [--impl small|fast] DIR
 # --corrupt flips the lowest bit of FIELD in the expected word of CYCLE (in a copy of the
 # set) and then passes only if every simulator fails with exactly that MISMATCH.
 # --rtl runs a copy of the RTL (the sources of rtl/dda_core.f found in RTLDIR) and passes
 # only if every simulator fails with a line containing TEXT (an assertion's message).
+# --impl fast builds the core's fast implementation (-DDDA_IMPL_FAST; default small).
 # The RTL's immediate assertions are on in both simulators (Verilator --assert).
 # Builds go to $DDA_BUILD_DIR/vec_bench (default build/vec_bench). Registered in ctest
 # (tests/rtl_checks.cmake, vectors.*).
@@ -15,20 +16,28 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 iverilog=${IVERILOG:-iverilog} vvp=${VVP:-vvp} verilator=${VERILATOR:-verilator}
-corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect=""
+corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect="" impl=small
 while [ $# -gt 1 ]; do
   case "$1" in
     --corrupt) corrupt_cycle=$2 corrupt_field=$3; shift 3 ;;
     --rtl) rtl_dir=$(cd "$2" && pwd); shift 2 ;;
     --expect) expect=$2; shift 2 ;;
     --sim) sims=$2; [ "$sims" = both ] && sims="icarus verilator"; shift 2 ;;
+    --impl) impl=$2; shift 2 ;;
     *) break ;;
   esac
 done
-[ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] DIR" >&2; exit 2; }
+[ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] [--impl small|fast] DIR" >&2; exit 2; }
+defs=()
+case "$impl" in
+  small) ;;
+  fast) defs=(-DDDA_IMPL_FAST) ;;
+  *) echo "vector-bench: --impl must be small or fast, not '$impl'" >&2; exit 2 ;;
+esac
 set_dir=$(cd "$1" && pwd)
 out="$build/vec_bench"
 [ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
+[ "$impl" = small ] || out="${out}_$impl"
 mkdir -p "$out"
 # The RTL comes from its file list, rtl/dda_core.f, with DDA_RTL naming the folder
 # (a mutated copy is the same list pointed at another folder).
@@ -70,12 +79,12 @@ for sim in $sims; do
   case "$sim" in
     icarus)
       bin="$out/dda_vec_tb.vvp"
-      if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${incs[@]}" -o "$bin" "${srcs[@]}" -c "$flist"; fi
+      if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${defs[@]}" "${incs[@]}" -o "$bin" "${srcs[@]}" -c "$flist"; fi
       run=("$vvp" -n "$bin" +vectors="$set_dir") ;;
     verilator)
       bin="$out/obj/dda_vec_tb"
       if newer "$bin" "${deps[@]}"; then
-        "$verilator" --binary --assert -Wall "${vl_extra[@]}" "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
+        "$verilator" --binary --assert -Wall "${defs[@]}" "${vl_extra[@]}" "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
           "${srcs[@]}" -f "$flist" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
       fi
       run=("$bin" +vectors="$set_dir") ;;

@@ -61,6 +61,17 @@ foreach(_set paper paper_half paper_ce second_quadrant lathe back_to_back)
   set_tests_properties(vectors.${_set} PROPERTIES FIXTURES_REQUIRED vec_${_set}
                        ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build)
 endforeach()
+# The same sets on the fast implementation (its architectural registers are the same).
+foreach(_set paper paper_half paper_ce second_quadrant lathe back_to_back)
+  dda_rtl_test(vectors.fast.${_set} NEEDS IVERILOG VVP VERILATOR
+               COMMAND ${_dda_scripts}/vector-bench.sh --impl fast ${_dda_vec}/${_set})
+  set_tests_properties(vectors.fast.${_set} PROPERTIES FIXTURES_REQUIRED vec_${_set}
+                       ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_fast)
+endforeach()
+dda_rtl_test(vectors.fast.detects_corruption NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/vector-bench.sh --impl fast --corrupt 12 u_int_y.jr_q ${_dda_vec}/paper)
+set_tests_properties(vectors.fast.detects_corruption PROPERTIES FIXTURES_REQUIRED vec_paper
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_fast)
 dda_rtl_test(vectors.detects_corruption NEEDS IVERILOG VVP VERILATOR
              COMMAND ${_dda_scripts}/vector-bench.sh --corrupt 12 u_int_y.jr_q ${_dda_vec}/paper)
 set_tests_properties(vectors.detects_corruption PROPERTIES FIXTURES_REQUIRED vec_paper
@@ -78,5 +89,9 @@ set_tests_properties(baseline.vector_sets PROPERTIES FIXTURES_REQUIRED "vec_pape
 # (--assert) and Icarus, on the paper's vector set (tb/hdl/dda_vec_tb.v).
 dda_rtl_test(rtl.assertions_fire NEEDS IVERILOG VVP VERILATOR
              COMMAND ${_dda_scripts}/assert-mutants.sh ${_dda_vec}/paper)
+dda_rtl_test(rtl.fast.assertions_fire NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/assert-mutants.sh --impl fast ${_dda_vec}/paper)
 set_tests_properties(rtl.assertions_fire PROPERTIES FIXTURES_REQUIRED vec_paper
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
+set_tests_properties(rtl.fast.assertions_fire PROPERTIES FIXTURES_REQUIRED vec_paper
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
