@@ -294,12 +294,18 @@ int main(int argc, char** argv) {
   auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
   add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
+  int gp_acc = hw::kAccWidth, gp_cnt = hw::kCntWidth;
   auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
   gen->add_option("--kind", gp_kind,
                   "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
                   "the largest semi-axis they hold at the default width), vector-fields "
-                  "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw)");
+                  "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
+                  "architectural registers and their widths: scripts/formal.sh)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
+  gen->add_option("--acc-width", gp_acc, "--kind verilog at another accumulator width (formal proofs)")
+      ->check(CLI::Range(4, hw::kAccWidth));
+  gen->add_option("--cnt-width", gp_cnt, "--kind verilog at another counter width (formal proofs)")
+      ->check(CLI::Range(2, hw::kCntWidth));
 
   try {
     if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 && std::strcmp(argv[1], "-h") != 0 &&
@@ -397,11 +403,24 @@ int main(int argc, char** argv) {
     } else if (gen->parsed()) {
       const int kind = parse_enum<int>(
           "kind", gp_kind,
-          {{"verilog", 0}, {"markdown", 1}, {"json", 2}, {"vector-fields", 3}, {"gtkw-systemc", 4}, {"gtkw-rtl", 5}});
+          {{"verilog", 0},
+           {"markdown", 1},
+           {"json", 2},
+           {"vector-fields", 3},
+           {"gtkw-systemc", 4},
+           {"gtkw-rtl", 5},
+           {"registers", 6}});
+      if (kind != 0 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
+        throw InputError("--acc-width and --cnt-width go with --kind verilog only");
+      }
       Output out(gp_out);
       if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
         out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",
                                  kind == 4 ? "SystemC" : "dut.dda_core");
+      } else if (kind == 6) {  // the architectural registers: "name width" (scripts/formal.sh)
+        for (const auto& r : hw::kSignals) {
+          if (r.kind == hw::SigKind::Reg) out.stream() << r.name << ' ' << r.width << '\n';
+        }
       } else if (kind == 3) {
         out.stream() << vec::verilog_fields();
       } else if (kind == 2) {
@@ -412,7 +431,7 @@ int main(int argc, char** argv) {
         j["max_semi_axis"] = hw::max_semi_axis(4);  // default width: smallest valid + 4
         out.stream() << j.dump(1) << '\n';
       } else {
-        out.stream() << (kind == 0 ? hw::verilog_header() : hw::markdown_tables());
+        out.stream() << (kind == 0 ? hw::verilog_header(gp_acc, gp_cnt) : hw::markdown_tables());
       }
       out.commit();
     }

@@ -221,13 +221,14 @@ module dda_core #(
 
 `ifndef SYNTHESIS
   // Assertions (rtl/dda_assert.vh): a direction register changes only with a step of
-  // its axis; a loaded command is well formed (0 < cap < 2^(AccWidth-1), jr < cap: the
+  // its axis; steps only on iterations (one pulse per axis and iteration); a loaded command is well formed (0 < cap < 2^(AccWidth-1), jr < cap: the
   // planner's guarantee, docs/design.md).
   wire cmd_cap_ok = cmd_cap != {AccWidth{1'b0}} && !cmd_cap[AccWidth-1];
   always @(posedge clk_i) begin
     if (rst_ni) begin
       `DDA_ASSERT(dir_x_d == dir_x_q || step_x_d, "ASSERTION dda_core: dir_x_q changes without an X step")
       `DDA_ASSERT(dir_y_d == dir_y_q || step_y_d, "ASSERTION dda_core: dir_y_q changes without a Y step")
+      `DDA_ASSERT((!step_x_q && !step_y_q) || iter_o, "ASSERTION dda_core: a step without an iteration")
       `DDA_ASSERT(!load || (cmd_cap_ok && cmd_jr_x < cmd_cap && cmd_jr_y < cmd_cap),
                   "ASSERTION dda_core: a loaded command is malformed (needs 0 < cap < 2^(AccWidth-1), jr < cap)")
     end

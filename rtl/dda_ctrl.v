@@ -92,12 +92,15 @@ module dda_ctrl (
 
 `ifndef SYNTHESIS
   // Assertions (rtl/dda_assert.vh): in run with ce_i exactly one of finished, stalled
-  // and iterate; done and err never together.
+  // and iterate; done and err never together; in run with ce_i low no load and no
+  // iteration (so only the pulse registers change); busy_o is the run state.
   always @(posedge clk_i) begin
     if (rst_ni) begin
       `DDA_ASSERT(!run_ce || ({2'b00, finished} + {2'b00, stalled} + {2'b00, iterate}) == 3'd1,
                   "ASSERTION dda_ctrl: in run with ce_i not exactly one of finished, stalled, iterate")
       `DDA_ASSERT(!(done_d && err_d), "ASSERTION dda_ctrl: done and err together")
+      `DDA_ASSERT(!(state_q == StRun && !ce_i) || (!load_o && !iterate), "ASSERTION dda_ctrl: run with ce_i low changes state")
+      `DDA_ASSERT(busy_o == (state_q == StRun), "ASSERTION dda_ctrl: busy_o differs from running")
     end
   end
 `endif

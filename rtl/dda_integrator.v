@@ -95,14 +95,10 @@ module dda_integrator #(
 
     // ---- the values a load writes (from the command word) ----
     wire [AccWidth-1:0] inc_own_i = (IsY != 0) ? inc_on_y_i : inc_on_x_i;
-    // e = jr + jv - cap as one carry-save layer and one chain: jr + jv + ~cap + 1.
-    wire [EW-1:0] ld_a = {1'b0, jr_i};
-    wire [EW-1:0] ld_b = sx(jv_i);
-    wire [EW-1:0] ld_c = ~{1'b0, cap_cmd_i};
-    wire [EW-1:0] ld_s = ld_a ^ ld_b ^ ld_c;
-    wire [EW-2:0] ld_k = (ld_a[EW-2:0] & ld_b[EW-2:0]) | (ld_a[EW-2:0] & ld_c[EW-2:0]) | (ld_b[EW-2:0] & ld_c[EW-2:0]);
+    // e = jr + jv - cap = jr + jv + ~cap + 1: carry-save layers and one carry-select chain.
     wire [EW-1:0] e_ld;
-    dda_add #(.Width(EW), .Split(EW / 2)) u_add_ld (.a_i(ld_s), .b_i({ld_k, 1'b1}), .s_o(e_ld));
+    dda_add4 #(.Width(EW)) u_add_ld (.a_i({1'b0, jr_i}), .b_i(sx(jv_i)), .c_i(~{1'b0, cap_cmd_i}),
+                                     .d_i({{(EW-1){1'b0}}, 1'b1}), .s_o(e_ld));
     wire          add_ld = active_d_i & ~jv_i[AccWidth-1];
 
     // ---- one iteration ----
@@ -117,25 +113,18 @@ module dda_integrator #(
                              : (cw_y_q ? sx(inc_on_y_q) : {EW{1'b0}});
     wire [EW-1:0] jv_it;
     dda_add #(.Width(EW), .Split(EW / 2)) u_add_jv (.a_i(sx(jv_q)), .b_i(w), .s_o(jv_it));
-    // jv_q + w == 0 (mod 2^AccWidth) without the carry chain: every bit's sum is 0 iff the
-    // carry into it is jv | w of the bit below (0 into bit 0).
-    wire [AccWidth-1:0] zc = {jv_q[AccWidth-2:0] | w[AccWidth-2:0], 1'b0};
-    wire          jvz_it = &(~(jv_q ^ w[AccWidth-1:0] ^ zc));
-    // e' = e + (add ? jv : 0) + (ovf_x ? K_x : 0) + (ovf_y ? K_y : 0): two carry-save layers, one chain.
+    // jv_q + w == 0 (mod 2^AccWidth) without the carry chain (dda_sum_zero).
+    wire jvz_it;
+    dda_sum_zero #(.Width(AccWidth)) u_jvz (.a_i(jv_q), .b_i(w[AccWidth-1:0]), .z_o(jvz_it));
+    // e' = e + (add ? jv : 0) + (ovf_x ? K_x : 0) + (ovf_y ? K_y : 0): dda_add4.
     wire [EW-1:0] k_x = (IsY != 0) ? sx(inc_on_x_q) : incmc_q;
     wire [EW-1:0] k_y = (IsY != 0) ? incmc_q : sx(inc_on_y_q);
     wire [EW-1:0] t_a = e_q;
     wire [EW-1:0] t_b = {1'b0, ce_a_q ? jv_q : {AccWidth{1'b0}}};  // what the accumulator adds
     wire [EW-1:0] t_c = ce_x_q ? k_x : {EW{1'b0}};
     wire [EW-1:0] t_d = ce_y_q ? k_y : {EW{1'b0}};
-    wire [EW-1:0] s1 = t_a ^ t_b ^ t_c;
-    wire [EW-2:0] m1 = (t_a[EW-2:0] & t_b[EW-2:0]) | (t_a[EW-2:0] & t_c[EW-2:0]) | (t_b[EW-2:0] & t_c[EW-2:0]);
-    wire [EW-1:0] k1 = {m1, 1'b0};
-    wire [EW-1:0] s2 = s1 ^ k1 ^ t_d;
-    wire [EW-2:0] m2 = (s1[EW-2:0] & k1[EW-2:0]) | (s1[EW-2:0] & t_d[EW-2:0]) | (k1[EW-2:0] & t_d[EW-2:0]);
-    wire [EW-1:0] k2 = {m2, 1'b0};
     wire [EW-1:0] e_it;
-    dda_add #(.Width(EW), .Split(EW / 2)) u_add_e (.a_i(s2), .b_i(k2), .s_o(e_it));
+    dda_add4 #(.Width(EW)) u_add_e (.a_i(t_a), .b_i(t_b), .c_i(t_c), .d_i(t_d), .s_o(e_it));
     wire [AccWidth-1:0] jr_it = ovf_q ? e_q[AccWidth-1:0] : sum[AccWidth-1:0];
 
     // The flags' next values, written so that the two late signals (the signs at the
@@ -235,5 +224,16 @@ module dda_integrator #(
     assign ovf_d_o = 1'b0;
     wire unused_small = &{1'b0, cap_cmd_i, active_d_i, ovf_x_d_i, ovf_y_d_i};
   end
+
+`ifndef SYNTHESIS
+  // Both implementations (rtl/dda_assert.vh): the accumulator stays below the capacity
+  // (both 0 after reset); it needs the driver's integrand range (docs/design.md).
+  always @(posedge clk_i) begin
+    if (rst_ni) begin
+      `DDA_ASSERT(jr_q < cap_i || (jr_q == {AccWidth{1'b0}} && cap_i == {AccWidth{1'b0}}),
+                  "ASSERTION dda_integrator: the accumulator is not below the capacity")
+    end
+  end
+`endif
 
 endmodule

@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
+// The reference core for the formal equivalence proofs (scripts/formal.sh): dda_core as
+// it was before the fast and small implementations (commit 7e45f85, issue 12), modules
+// renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
+// rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
 // Ellipse DDA interpolator core (docs/design.md is the contract: ports, registers and
 // behaviour edge by edge). Two integrators (u_int_x, u_int_y), two step counters
 // (u_cnt_x, u_cnt_y), the control (u_ctrl), and here the shared capacity cap_q, the
@@ -10,7 +14,7 @@
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
-module dda_core (
+module dda_core_ref (
   input  wire                      clk_i,
   input  wire                      rst_ni,       // synchronous, active low
   input  wire                      ce_i,         // one iteration per edge while high
@@ -69,7 +73,7 @@ module dda_core (
   wire active_x, active_y;
   wire last_x, last_y;
 
-  dda_ctrl u_ctrl (
+  dda_ctrl_ref u_ctrl (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .ce_i        (ce_i),
@@ -89,7 +93,7 @@ module dda_core (
     .iter_o      (iter_o)
   );
 
-  dda_integrator #(.AccWidth(AccWidth)) u_int_x (
+  dda_integrator_ref #(.AccWidth(AccWidth)) u_int_x (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .load_i     (load),
@@ -106,7 +110,7 @@ module dda_core (
     .can_o      (can_x)
   );
 
-  dda_integrator #(.AccWidth(AccWidth)) u_int_y (
+  dda_integrator_ref #(.AccWidth(AccWidth)) u_int_y (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .load_i     (load),
@@ -123,7 +127,7 @@ module dda_core (
     .can_o      (can_y)
   );
 
-  dda_counter #(.CntWidth(CntWidth)) u_cnt_x (
+  dda_counter_ref #(.CntWidth(CntWidth)) u_cnt_x (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .load_i    (load),
@@ -134,7 +138,7 @@ module dda_core (
     .last_o    (last_x)
   );
 
-  dda_counter #(.CntWidth(CntWidth)) u_cnt_y (
+  dda_counter_ref #(.CntWidth(CntWidth)) u_cnt_y (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .load_i    (load),
@@ -195,10 +199,10 @@ module dda_core (
   wire cmd_cap_ok = cmd_cap != {AccWidth{1'b0}} && !cmd_cap[AccWidth-1];
   always @(posedge clk_i) begin
     if (rst_ni) begin
-      `DDA_ASSERT(dir_x_d == dir_x_q || step_x_d, "ASSERTION dda_core: dir_x_q changes without an X step")
-      `DDA_ASSERT(dir_y_d == dir_y_q || step_y_d, "ASSERTION dda_core: dir_y_q changes without a Y step")
+      `DDA_ASSERT(dir_x_d == dir_x_q || step_x_d, "ASSERTION dda_core_ref: dir_x_q changes without an X step")
+      `DDA_ASSERT(dir_y_d == dir_y_q || step_y_d, "ASSERTION dda_core_ref: dir_y_q changes without a Y step")
       `DDA_ASSERT(!load || (cmd_cap_ok && cmd_jr_x < cmd_cap && cmd_jr_y < cmd_cap),
-                  "ASSERTION dda_core: a loaded command is malformed (needs 0 < cap < 2^(AccWidth-1), jr < cap)")
+                  "ASSERTION dda_core_ref: a loaded command is malformed (needs 0 < cap < 2^(AccWidth-1), jr < cap)")
     end
   end
 `endif

@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
+// The reference core for the formal equivalence proofs (scripts/formal.sh): dda_core as
+// it was before the fast and small implementations (commit 7e45f85, issue 12), modules
+// renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
+// rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
 // Remaining-step counter of one axis (docs/design.md, "Counter"): cnt_q, decremented by
 // the axis' carry on an iteration. active_o = cnt_q != 0 (an axis whose counter is 0
 // stops adding); last_o says the counter is 0 after this iteration.
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
-module dda_counter #(
+module dda_counter_ref #(
   parameter integer CntWidth = `DDA_CNT_WIDTH
 ) (
   input  wire                clk_i,
@@ -49,7 +53,7 @@ module dda_counter #(
   always @(posedge clk_i) begin
     if (rst_ni) begin
       `DDA_ASSERT(load_i || cnt_q != {CntWidth{1'b0}} || cnt_d == {CntWidth{1'b0}},
-                  "ASSERTION dda_counter: a decrement at 0")
+                  "ASSERTION dda_counter_ref: a decrement at 0")
     end
   end
 `endif

@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
+// The reference core for the formal equivalence proofs (scripts/formal.sh): dda_core as
+// it was before the fast and small implementations (commit 7e45f85, issue 12), modules
+// renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
+// rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
 // Control of the DDA core (docs/design.md, "Control" and "Behaviour, edge by edge"):
 // the state machine state_q (idle, run) and the one-cycle pulses done_q, err_q, iter_q.
 //
@@ -13,7 +17,7 @@
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
-module dda_ctrl (
+module dda_ctrl_ref (
   input  wire clk_i,
   input  wire rst_ni,       // synchronous, active low
   input  wire ce_i,
@@ -96,8 +100,8 @@ module dda_ctrl (
   always @(posedge clk_i) begin
     if (rst_ni) begin
       `DDA_ASSERT(!run_ce || ({2'b00, finished} + {2'b00, stalled} + {2'b00, iterate}) == 3'd1,
-                  "ASSERTION dda_ctrl: in run with ce_i not exactly one of finished, stalled, iterate")
-      `DDA_ASSERT(!(done_d && err_d), "ASSERTION dda_ctrl: done and err together")
+                  "ASSERTION dda_ctrl_ref: in run with ce_i not exactly one of finished, stalled, iterate")
+      `DDA_ASSERT(!(done_d && err_d), "ASSERTION dda_ctrl_ref: done and err together")
     end
   end
 `endif

@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
+// The reference core for the formal equivalence proofs (scripts/formal.sh): dda_core as
+// it was before the fast and small implementations (commit 7e45f85, issue 12), modules
+// renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
+// rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
 // One DDA integrator (docs/design.md, "Integrator"): integrand jv_q, accumulator jr_q
 // and the two integrand corrections inc_on_x_q, inc_on_y_q.
 //
@@ -10,7 +14,7 @@
 // modulo 2^AccWidth (the corrections are two's complement).
 `include "dda_params.vh"
 
-module dda_integrator #(
+module dda_integrator_ref #(
   parameter integer AccWidth = `DDA_ACC_WIDTH
 ) (
   input  wire                clk_i,
@@ -24,7 +28,7 @@ module dda_integrator #(
   input  wire [AccWidth-1:0] inc_on_y_i,
   // iterate (run, ce_i high, neither finished nor stalled)
   input  wire                iterate_i,
-  input  wire [AccWidth-1:0] cap_i,        // shared capacity (dda_core.cap_q)
+  input  wire [AccWidth-1:0] cap_i,        // shared capacity (dda_core_ref.cap_q)
   input  wire                active_i,     // this axis' counter is non-zero
   input  wire                ovf_x_i,      // X carry of this iteration
   input  wire                ovf_y_i,      // Y carry of this iteration

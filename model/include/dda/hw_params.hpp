@@ -192,6 +192,9 @@ inline SignalTable signal_table() { return SignalTable(kSignals.begin(), kSignal
 
 // Text generated from the definitions above (model/src/hw_params.cpp).
 std::string verilog_header();                                        // rtl/dda_params.vh
+// The same header at other widths (formal proofs at reduced widths): the fields that are
+// kAccWidth or kCntWidth bits wide take acc_width or cnt_width bits.
+std::string verilog_header(int acc_width, int cnt_width);
 std::string markdown_tables(const SignalTable& t = signal_table());  // docs/design.md
 // GTKWave save file for a waveform whose core is at `top` (e.g. "SystemC.dut").
 std::string gtkw(const SignalTable& t, std::string_view file, std::string_view top);

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: Apache-2.0
+// The lemmas of the core's proofs (scripts/formal.sh lemmas): the arithmetic blocks of
+// the fast implementation equal the plain operations they stand for under
+// DDA_FORMAL_ABSTRACT, at the widths the core instantiates them with (AccWidth + 1 for
+// the sums, AccWidth for the zero test). Read without DDA_FORMAL_ABSTRACT: this proves
+// the real structures. Combinational: one step from any inputs.
+`include "dda_params.vh"
+
+module dda_formal_lemmas (
+  input wire [`DDA_ACC_WIDTH:0]   a,
+  input wire [`DDA_ACC_WIDTH:0]   b,
+  input wire [`DDA_ACC_WIDTH:0]   c,
+  input wire [`DDA_ACC_WIDTH:0]   d
+);
+  localparam integer W  = `DDA_ACC_WIDTH;
+  localparam integer EW = W + 1;
+
+  wire [EW-1:0] s2, s4;
+  wire          z;
+  dda_add #(.Width(EW), .Split(EW / 2)) u_add (.a_i(a), .b_i(b), .s_o(s2));
+  dda_add4 #(.Width(EW)) u_add4 (.a_i(a), .b_i(b), .c_i(c), .d_i(d), .s_o(s4));
+  dda_sum_zero #(.Width(W)) u_zero (.a_i(a[W-1:0]), .b_i(b[W-1:0]), .z_o(z));
+
+  always @(*) begin
+    assert (s2 == a + b);
+    assert (s4 == a + b + c + d);
+    assert (z == (a[W-1:0] + b[W-1:0] == {W{1'b0}}));
+  end
+endmodule
