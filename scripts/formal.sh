@@ -4,7 +4,8 @@
 # -formal: the DDA_ASSERT assertions beside the logic become formal assertions),
 # flattens the core and exposes its architectural registers (the register table, `dda
 # gen-params --kind registers`) as outputs a_<name>; yosys-smtbmc with z3 proves.
-#   usage: scripts/formal.sh [--impl small|fast] [--acc N] [--cnt N] [--depth K] JOB
+#   usage: scripts/formal.sh [--impl small|fast] [--acc N] [--cnt N] [--depth K]
+#                            [--rtl DIR] [--expect-fail TEXT] JOB
 #   JOB  props  k-induction of the assertions of one implementation (dda_props.sv): a
 #               bounded check of K steps from reset, then the induction step of depth K
 #        equiv  k-induction of a miter of the implementation against the reference core
@@ -22,6 +23,9 @@
 # --acc and --cnt choose the widths (default: those of hw_params.hpp); the header comes
 # from `dda gen-params --kind verilog --acc-width N --cnt-width N`. Assumptions: the
 # command preconditions and the integrand range the driver guarantees (formal/dda_env.vh).
+# --rtl DIR proves a copy of the RTL (the sources of rtl/dda_core.f found in DIR, a
+# mutant); --expect-fail TEXT then passes only if the proof fails on the assertion
+# whose line in DIR holds TEXT (scripts/formal-mutants.sh).
 # Work files (the SMT2 model, logs, counterexample and cover VCDs) go to
 # $DDA_BUILD_DIR/formal/<job>-<impl>-<acc>-<cnt>/ (default build/). Exit 0 when proven
 # (or, for cover, when every cover is reached). ctest -L formal runs it.
@@ -29,13 +33,15 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 yosys=${YOSYS:-yosys} smtbmc=${YOSYS_SMTBMC:-yosys-smtbmc}
-impl=small acc="" cnt="" depth=""
+impl=small acc="" cnt="" depth="" rtl_dir=$root/rtl expect=""
 while [ $# -gt 1 ]; do
   case "$1" in
     --impl) impl=$2; shift 2 ;;
     --acc) acc=$2; shift 2 ;;
     --cnt) cnt=$2; shift 2 ;;
     --depth) depth=$2; shift 2 ;;
+    --rtl) rtl_dir=$(cd "$2" && pwd); shift 2 ;;
+    --expect-fail) expect=$2; shift 2 ;;
     *) break ;;
   esac
 done
@@ -58,12 +64,14 @@ fi
 
 [ "$job" = lemmas ] && impl=fast  # the blocks are the fast implementation's
 work=$build/formal/$job-$impl-$acc-$cnt
+[ "$rtl_dir" = "$root/rtl" ] || work=$build/formal/mutant-$(basename "$rtl_dir")-$job-$impl-$acc-$cnt
 rm -rf "$work"
 mkdir -p "$work/rtl" "$work/ref"
 "$dda" gen-params --kind verilog --acc-width "$acc" --cnt-width "$cnt" --out "$work/rtl/dda_params.vh"
 export DDA_RTL=$root/rtl
 mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$root/rtl/dda_core.f")
-cp "${rtl_srcs[@]}" "$root/rtl/dda_assert.vh" "$work/rtl/"
+for f in "${rtl_srcs[@]}"; do cp "$rtl_dir/$(basename "$f")" "$work/rtl/"; done
+cp "$root/rtl/dda_assert.vh" "$work/rtl/"
 cp "$root"/formal/ref/*.v "$work/ref/"
 cp "$root/formal/dda_env.vh" "$root/formal/dda_props.sv" "$root/formal/dda_lemmas.sv" "$work/"
 # The register table at these widths: a register of the default AccWidth (CntWidth) is
@@ -182,6 +190,27 @@ echo "formal $job: implementation $impl, AccWidth $acc, CntWidth $cnt, depth $de
 start=$(date +%s.%N)
 run() {  # run LABEL ARGS...: yosys-smtbmc, its log kept; fails with the log's tail
   local label=$1; shift
+  if [ -n "$expect" ]; then
+    # A mutant: the proof must fail, on the assertion whose source line holds $expect.
+    if "$smtbmc" -s z3 --unroll "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
+      echo "  $label: passed, but the mutant must fail on: $expect" >&2
+      return 1
+    fi
+    local lines
+    lines=$(grep -nF -- "$expect" "$work"/rtl/*.v | sed -E 's#^([^:]+):([0-9]+):.*#\1:\2#')
+    [ -n "$lines" ] || { echo "  formal: no assertion holds '$expect'" >&2; return 1; }
+    local l
+    for l in $lines; do
+      local f=${l##*/}
+      if grep -qE "Assert failed.*${f%%:*}:([0-9]+\.[0-9]+-)?${f##*:}\." "$work/$label.log"; then
+        echo "  $label: failed as it must, on ${l##*/} ($expect)"
+        return 0
+      fi
+    done
+    echo "  $label: failed, but not on the assertion '$expect' (log: $work/$label.log)" >&2
+    grep "Assert failed" "$work/$label.log" | head -5 >&2
+    return 1
+  fi
   if "$smtbmc" -s z3 --unroll --presat "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
     echo "  $label: PASS ($(grep -m1 -oE 'Status: [A-Z]+' "$work/$label.log" || echo done))"
   else
@@ -195,6 +224,7 @@ case "$job" in
     run lemmas -t "$depth" --dump-vcd "$work/lemmas-counterexample.vcd" ;;
   props|equiv)
     run bmc -t "$depth" --dump-vcd "$work/bmc-counterexample.vcd"
+    [ -n "$expect" ] && exit 0
     run induction -i -t "$depth" --dump-vcd "$work/induction-counterexample.vcd" ;;
   cover)
     run cover -c -t "$depth" --dump-vcd "$work/cover%d.vcd"

@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: Apache-2.0
+# Formal proofs (label formal): scripts/formal.sh drives Yosys and yosys-smtbmc with z3.
+# Included from tests/CMakeLists.txt. Widths: the small implementation at AccWidth/
+# CntWidth 8/4, 12/6 and the default 51/17; the fast one's k-induction at 6/3 (at 8/4
+# each of its proofs takes over five minutes with z3 4.8: run those by hand, see
+# docs/verification.md). The lemmas at the default widths; covers at 8/4; every
+# assertion fails on its mutant (scripts/formal-mutants.sh).
+find_program(DDA_SMTBMC_EXE yosys-smtbmc REQUIRED)
+find_program(DDA_Z3_EXE z3 REQUIRED)
+
+function(dda_formal_test name)
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} -E env DDA_BUILD_DIR=${PROJECT_BINARY_DIR} YOSYS=${DDA_YOSYS_EXE}
+                                YOSYS_SMTBMC=${DDA_SMTBMC_EXE} ${DDA_BASH_EXE} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS formal TIMEOUT 300)
+endfunction()
+
+set(_dda_formal ${PROJECT_SOURCE_DIR}/scripts/formal.sh)
+dda_formal_test(formal.lemmas ${_dda_formal} lemmas)
+foreach(_w 8:4 12:6 51:17)
+  string(REPLACE ":" ";" _wl ${_w})
+  list(GET _wl 0 _acc)
+  list(GET _wl 1 _cnt)
+  dda_formal_test(formal.small.props.${_acc}_${_cnt} ${_dda_formal} --impl small --acc ${_acc} --cnt ${_cnt} props)
+  dda_formal_test(formal.small.equiv.${_acc}_${_cnt} ${_dda_formal} --impl small --acc ${_acc} --cnt ${_cnt} equiv)
+endforeach()
+dda_formal_test(formal.fast.props.6_3 ${_dda_formal} --impl fast --acc 6 --cnt 3 props)
+dda_formal_test(formal.fast.equiv.6_3 ${_dda_formal} --impl fast --acc 6 --cnt 3 equiv)
+foreach(_impl small fast)
+  dda_formal_test(formal.${_impl}.cover ${_dda_formal} --impl ${_impl} --acc 8 --cnt 4 cover)
+  dda_formal_test(formal.${_impl}.mutants ${PROJECT_SOURCE_DIR}/scripts/formal-mutants.sh --impl ${_impl})
+endforeach()
