@@ -401,15 +401,14 @@ int main(int argc, char** argv) {
       run_arc_command(
           pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) { write_svg(os, plan, r.records, esc); });
     } else if (gen->parsed()) {
-      const int kind = parse_enum<int>(
-          "kind", gp_kind,
-          {{"verilog", 0},
-           {"markdown", 1},
-           {"json", 2},
-           {"vector-fields", 3},
-           {"gtkw-systemc", 4},
-           {"gtkw-rtl", 5},
-           {"registers", 6}});
+      const int kind = parse_enum<int>("kind", gp_kind,
+                                       {{"verilog", 0},
+                                        {"markdown", 1},
+                                        {"json", 2},
+                                        {"vector-fields", 3},
+                                        {"gtkw-systemc", 4},
+                                        {"gtkw-rtl", 5},
+                                        {"registers", 6}});
       if (kind != 0 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
         throw InputError("--acc-width and --cnt-width go with --kind verilog only");
       }

@@ -7,7 +7,8 @@
 #   systemc  the SystemC model                       (default 2,000 cases)
 #   rtl      the RTL under Verilator (--cc)          (default 100,000 cases)
 #   cosim    SystemC model and RTL on one sc_clock   (default 2,000 cases)
-# usage: scripts/regress.sh [systemc|rtl|cosim|all] [cases] [seed] [shards]
+#   rtl-fast, cosim-fast   the same on the core's fast implementation (dda_core.Impl)
+# usage: scripts/regress.sh [systemc|rtl|cosim|rtl-fast|cosim-fast|all] [cases] [seed] [shards]
 # With shards > 1 the cases are cut into that many shards (--shard I/N), run with GNU
 # parallel (one job per core; add e.g. --sshlogin to PARALLEL_OPTS to spread them over
 # hosts that have the same build), and their JSON totals merged: every case draws from
@@ -38,6 +39,8 @@ case "$which" in
   systemc) run sc_regress "${2:-2000}" ;;
   rtl) run rtl_regress "${2:-100000}" ;;
   cosim) run cosim_regress "${2:-2000}" ;;
+  rtl-fast) run rtl_regress_fast "${2:-100000}" ;;
+  cosim-fast) run cosim_regress_fast "${2:-2000}" ;;
   all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
-  *) echo "usage: $0 [systemc|rtl|cosim|all] [cases] [seed] [shards]" >&2; exit 2 ;;
+  *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|all] [cases] [seed] [shards]" >&2; exit 2 ;;
 esac

@@ -191,7 +191,7 @@ using SignalTable = std::vector<Reg>;
 inline SignalTable signal_table() { return SignalTable(kSignals.begin(), kSignals.end()); }
 
 // Text generated from the definitions above (model/src/hw_params.cpp).
-std::string verilog_header();                                        // rtl/dda_params.vh
+std::string verilog_header();  // rtl/dda_params.vh
 // The same header at other widths (formal proofs at reduced widths): the fields that are
 // kAccWidth or kCntWidth bits wide take acc_width or cnt_width bits.
 std::string verilog_header(int acc_width, int cnt_width);
