@@ -15,14 +15,16 @@ module dda_formal_lemmas (
   localparam integer W  = `DDA_ACC_WIDTH;
   localparam integer EW = W + 1;
 
-  wire [EW-1:0] s2, s4;
+  wire [EW-1:0] s2, s3, s4;
   wire          z;
   dda_add #(.Width(EW), .Split(EW / 2)) u_add (.a_i(a), .b_i(b), .s_o(s2));
+  dda_add3 #(.Width(EW)) u_add3 (.a_i(a), .b_i(b), .c_i(c), .ci_i(d[0]), .s_o(s3));
   dda_add4 #(.Width(EW)) u_add4 (.a_i(a), .b_i(b), .c_i(c), .d_i(d), .s_o(s4));
   dda_sum_zero #(.Width(W)) u_zero (.a_i(a[W-1:0]), .b_i(b[W-1:0]), .z_o(z));
 
   always @(*) begin
     assert (s2 == a + b);
+    assert (s3 == a + b + c + {{(EW-1){1'b0}}, d[0]});
     assert (s4 == a + b + c + d);
     assert (z == (a[W-1:0] + b[W-1:0] == {W{1'b0}}));
   end

@@ -5,6 +5,7 @@
 // CMake reads it (cmake/dda_rtl.cmake); scripts/rtl-files.sh expands it for Yosys.
 +incdir+$(DDA_RTL)
 $(DDA_RTL)/dda_add.v
+$(DDA_RTL)/dda_add3.v
 $(DDA_RTL)/dda_add4.v
 $(DDA_RTL)/dda_sum_zero.v
 $(DDA_RTL)/dda_counter.v

@@ -95,10 +95,10 @@ module dda_integrator #(
 
     // ---- the values a load writes (from the command word) ----
     wire [AccWidth-1:0] inc_own_i = (IsY != 0) ? inc_on_y_i : inc_on_x_i;
-    // e = jr + jv - cap = jr + jv + ~cap + 1: carry-save layers and one carry-select chain.
+    // e = jr + jv - cap = jr + jv + ~cap + 1: one carry-save layer, one carry-select chain.
     wire [EW-1:0] e_ld;
-    dda_add4 #(.Width(EW)) u_add_ld (.a_i({1'b0, jr_i}), .b_i(sx(jv_i)), .c_i(~{1'b0, cap_cmd_i}),
-                                     .d_i({{(EW-1){1'b0}}, 1'b1}), .s_o(e_ld));
+    dda_add3 #(.Width(EW)) u_add_ld (.a_i({1'b0, jr_i}), .b_i(sx(jv_i)), .c_i(~{1'b0, cap_cmd_i}),
+                                     .ci_i(1'b1), .s_o(e_ld));
     wire          add_ld = active_d_i & ~jv_i[AccWidth-1];
 
     // ---- one iteration ----

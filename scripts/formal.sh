@@ -14,7 +14,7 @@
 #               assertions; the implementation's assertions are assumed there (props
 #               proves them under the same environment: assume-guarantee)
 #        cover  the cover traces of dda_props.sv, each reached within K steps
-#        lemmas the carry-select adder, the four-operand adder and the carry-free zero
+#        lemmas the carry-select adder, the three- and four-operand adders and the carry-free zero
 #               test of the fast implementation (rtl/dda_add*.v, dda_sum_zero.v) equal
 #               a + b, a + b + c + d and a + b == 0 (formal/dda_lemmas.sv). The jobs
 #               above read the RTL with DDA_FORMAL_ABSTRACT, where those blocks are the
