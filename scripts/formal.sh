@@ -188,6 +188,9 @@ covers=$(awk '$1 == "$cover" {s += $2} END {print s + 0}' "$work/yosys.log")
 echo "formal $job: implementation $impl, AccWidth $acc, CntWidth $cnt, depth $depth ($asserts assertions, $covers covers)"
 
 start=$(date +%s.%N)
+# --unroll: yosys-smtbmc expands the model's define-fun chains itself; z3 4.8.12 (Debian
+# bookworm) hung for minutes with gigabytes of memory parsing the transition relation of
+# this core (shared subterms expanded without sharing) even at AccWidth 8.
 run() {  # run LABEL ARGS...: yosys-smtbmc, its log kept; fails with the log's tail
   local label=$1; shift
   if [ -n "$expect" ]; then

@@ -39,8 +39,8 @@ case "$which" in
   systemc) run sc_regress "${2:-2000}" ;;
   rtl) run rtl_regress "${2:-100000}" ;;
   cosim) run cosim_regress "${2:-2000}" ;;
-  rtl-fast) run rtl_regress_fast "${2:-100000}" ;;
-  cosim-fast) run cosim_regress_fast "${2:-2000}" ;;
+  rtl-fast) echo "the fast implementation (dda_core.Impl = \"fast\"):"; run rtl_regress_fast "${2:-100000}" ;;
+  cosim-fast) echo "the fast implementation (dda_core.Impl = \"fast\"):"; run cosim_regress_fast "${2:-2000}" ;;
   all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
   *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|all] [cases] [seed] [shards]" >&2; exit 2 ;;
 esac
