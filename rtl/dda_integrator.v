@@ -25,7 +25,8 @@
 //              e' = e + (add ? jv : 0) + (ovf_x ? K_x : 0) + (ovf_y ? K_y : 0),
 //            K_own = incmc, K_other = inc_on_<other axis>.
 //            The e_q invariant needs the driver's guarantee that an active
-//            integrand stays in [-cap, cap] (docs/design.md).
+//            integrand stays in [-cap, cap] and that no iteration wraps it around
+//            2^AccWidth (docs/design.md; formal/dda_env.vh states it).
 `include "dda_params.vh"
 `include "dda_assert.vh"
 
