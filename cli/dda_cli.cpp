@@ -302,9 +302,10 @@ int main(int argc, char** argv) {
                   "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
                   "architectural registers and their widths: scripts/formal.sh)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
-  gen->add_option("--acc-width", gp_acc, "--kind verilog at another accumulator width (formal proofs)")
+  gen->add_option("--acc-width", gp_acc,
+                  "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
       ->check(CLI::Range(4, hw::kAccWidth));
-  gen->add_option("--cnt-width", gp_cnt, "--kind verilog at another counter width (formal proofs)")
+  gen->add_option("--cnt-width", gp_cnt, "--kind verilog, json or registers at another counter width")
       ->check(CLI::Range(2, hw::kCntWidth));
 
   try {
@@ -409,8 +410,8 @@ int main(int argc, char** argv) {
                                         {"gtkw-systemc", 4},
                                         {"gtkw-rtl", 5},
                                         {"registers", 6}});
-      if (kind != 0 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
-        throw InputError("--acc-width and --cnt-width go with --kind verilog only");
+      if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
+        throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
       }
       Output out(gp_out);
       if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
@@ -418,16 +419,17 @@ int main(int argc, char** argv) {
                                  kind == 4 ? "SystemC" : "dut.dda_core");
       } else if (kind == 6) {  // the architectural registers: "name width" (scripts/formal.sh)
         for (const auto& r : hw::kSignals) {
-          if (r.kind == hw::SigKind::Reg) out.stream() << r.name << ' ' << r.width << '\n';
+          if (r.kind == hw::SigKind::Reg)
+            out.stream() << r.name << ' ' << hw::field_width(r.width, gp_acc, gp_cnt) << '\n';
         }
       } else if (kind == 3) {
         out.stream() << vec::verilog_fields();
       } else if (kind == 2) {
         nlohmann::ordered_json j;
-        j["acc_width"] = hw::kAccWidth;
-        j["cnt_width"] = hw::kCntWidth;
-        j["cmd_width"] = hw::kCmdWidth;
-        j["max_semi_axis"] = hw::max_semi_axis(4);  // default width: smallest valid + 4
+        j["acc_width"] = gp_acc;
+        j["cnt_width"] = gp_cnt;
+        j["cmd_width"] = hw::cmd_width(gp_acc, gp_cnt);
+        j["max_semi_axis"] = hw::max_semi_axis(4, gp_acc, gp_cnt);  // default width: smallest valid + 4
         out.stream() << j.dump(1) << '\n';
       } else {
         out.stream() << (kind == 0 ? hw::verilog_header(gp_acc, gp_cnt) : hw::markdown_tables());

@@ -74,12 +74,8 @@ for f in "${rtl_srcs[@]}"; do cp "$rtl_dir/$(basename "$f")" "$work/rtl/"; done
 cp "$root/rtl/dda_assert.vh" "$work/rtl/"
 cp "$root"/formal/ref/*.v "$work/ref/"
 cp "$root/formal/dda_env.vh" "$root/formal/dda_props.sv" "$root/formal/dda_lemmas.sv" "$work/"
-# The register table at these widths: a register of the default AccWidth (CntWidth) is
-# acc (cnt) bits wide here.
-def_acc=$(echo "$widths" | sed -nE 's/.*"acc_width": ([0-9]+).*/\1/p')
-def_cnt=$(echo "$widths" | sed -nE 's/.*"cnt_width": ([0-9]+).*/\1/p')
-mapfile -t regs < <("$dda" gen-params --kind registers |
-  awk -v da="$def_acc" -v dc="$def_cnt" -v a="$acc" -v c="$cnt" '{w = $2; if (w == da) w = a; else if (w == dc) w = c; print $1, w}')
+# The register table at these widths (architectural registers and their widths).
+mapfile -t regs < <("$dda" gen-params --kind registers --acc-width "$acc" --cnt-width "$cnt")
 
 # Exposes the architectural registers of the flattened module $1 as outputs a_<name>.
 expose() {

@@ -60,22 +60,22 @@ std::vector<std::uint32_t> pack_fields(const CmdFields& v) {
 
 std::vector<std::uint32_t> pack_command(const Command& c) { return pack_fields(command_fields(c)); }
 
-std::int64_t max_semi_axis(int extra_bits) {
+std::int64_t max_semi_axis(int extra_bits, int acc_width, int cnt_width) {
   // Largest m such that a = b = m (the worst case) fits: cap = 2^n * m^2 < 2^(AccWidth-1)
   // with n = smallest_valid_bits(m) + extra_bits, and a quarter arc's m steps fit the
   // counters. For m in (2^(k-1), 2^k] the smallest valid n is k.
   std::int64_t best = 1;
   for (int k = 1; k < 31; ++k) {
     const int n = k + extra_bits;
-    if (n >= kAccWidth - 1) break;
-    const std::uint64_t room = (std::uint64_t{1} << (kAccWidth - 1 - n)) - 1;  // m^2 <= room
+    if (n >= acc_width - 1) break;
+    const std::uint64_t room = (std::uint64_t{1} << (acc_width - 1 - n)) - 1;  // m^2 <= room
     auto m = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(room)));
     while (m * m > room) --m;
     while ((m + 1) * (m + 1) <= room) ++m;
     m = std::min(m, std::uint64_t{1} << k);
     if (m > (std::uint64_t{1} << (k - 1))) best = std::max<std::int64_t>(best, std::int64_t(m));
   }
-  return std::min<std::int64_t>(best, std::int64_t(kCntMax));
+  return std::min<std::int64_t>(best, (std::int64_t{1} << cnt_width) - 1);
 }
 
 }  // namespace dda::hw

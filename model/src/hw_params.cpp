@@ -17,11 +17,8 @@ std::string upper(std::string_view s) {
 std::string verilog_header() { return verilog_header(kAccWidth, kCntWidth); }
 
 std::string verilog_header(int acc_width, int cnt_width) {
-  static_assert(kAccWidth != kCntWidth, "verilog_header: the widths are told apart by value");
   const bool dflt = acc_width == kAccWidth && cnt_width == kCntWidth;
-  const auto width = [&](int w) { return w == kAccWidth ? acc_width : w == kCntWidth ? cnt_width : w; };
-  int cmd_width = 0;
-  for (const auto& f : kCmdFields) cmd_width += width(f.width);
+  const auto width = [&](int w) { return field_width(w, acc_width, cnt_width); };
   std::ostringstream o;
   o << "// SPDX-License-Identifier: Apache-2.0\n";
   if (dflt) {
@@ -40,7 +37,7 @@ std::string verilog_header(int acc_width, int cnt_width) {
   o << "`define DDA_DIR_POS 1'b" << kDirPos << '\n';
   o << "`define DDA_DIR_NEG 1'b" << kDirNeg << '\n';
   o << "\n// Command word, fields packed LSB first.\n";
-  o << "`define DDA_CMD_WIDTH " << cmd_width << '\n';
+  o << "`define DDA_CMD_WIDTH " << cmd_width(acc_width, cnt_width) << '\n';
   int off = 0;
   for (const auto& f : kCmdFields) {
     const std::string n = upper(f.name);

@@ -22,7 +22,8 @@ std::vector<std::uint32_t> pack_fields(const CmdFields& v);
 // The command word as 32-bit words, least significant first (Verilator's layout).
 std::vector<std::uint32_t> pack_command(const Command& c);
 
-// Largest semi-axis the default widths support at the smallest valid n (+ extra bits).
-std::int64_t max_semi_axis(int extra_bits);
+// Largest semi-axis the widths support at the smallest valid n (+ extra bits); by default
+// the widths of hw_params.hpp (other widths: `dda gen-params --kind json --acc-width N`).
+std::int64_t max_semi_axis(int extra_bits, int acc_width = kAccWidth, int cnt_width = kCntWidth);
 
 }  // namespace dda::hw

@@ -58,9 +58,15 @@ inline constexpr std::array<Field, 13> kCmdFields{{
     {"inc_y_on_y", kAccWidth, "added to jv_y after a Y step (two's complement)"},
 }};
 
-constexpr int cmd_width() {
+// A field's width at other widths (formal proofs, synthesis at smaller widths): the
+// fields that are kAccWidth or kCntWidth bits wide take acc_width or cnt_width bits.
+constexpr int field_width(int width, int acc_width, int cnt_width) {
+  static_assert(kAccWidth != kCntWidth, "field_width: the widths are told apart by value");
+  return width == kAccWidth ? acc_width : width == kCntWidth ? cnt_width : width;
+}
+constexpr int cmd_width(int acc_width = kAccWidth, int cnt_width = kCntWidth) {
   int w = 0;
-  for (const auto& f : kCmdFields) w += f.width;
+  for (const auto& f : kCmdFields) w += field_width(f.width, acc_width, cnt_width);
   return w;
 }
 constexpr int cmd_offset(std::string_view name) {
