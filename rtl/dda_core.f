@@ -8,6 +8,7 @@ $(DDA_RTL)/dda_add.v
 $(DDA_RTL)/dda_add3.v
 $(DDA_RTL)/dda_add4.v
 $(DDA_RTL)/dda_sum_zero.v
+$(DDA_RTL)/dda_addsel.v
 $(DDA_RTL)/dda_counter.v
 $(DDA_RTL)/dda_integrator.v
 $(DDA_RTL)/dda_ctrl.v

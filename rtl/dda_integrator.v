@@ -201,11 +201,25 @@ module dda_integrator #(
     end
 `endif
   end else begin : g_small
-    // (sum - cap_i) mod 2^AccWidth: only the low AccWidth bits are stored.
-    wire [AccWidth-1:0] sum_minus_cap = sum[AccWidth-1:0] - cap_i;
-    wire [AccWidth-1:0] corr_x = ovf_x_i ? inc_on_x_q : {AccWidth{1'b0}};
-    wire [AccWidth-1:0] corr_y = ovf_y_i ? inc_on_y_q : {AccWidth{1'b0}};
-    wire ovf = add & (sum >= {1'b0, cap_i});
+    // Three carry chains, each bit one logic cell on iCE40 (dda_addsel): the adder
+    // `sum`, then sum - cap_i whose carry out is the compare (ge = sum >= cap_i) and
+    // whose output is already the accumulator's next value (sum - cap_i if ge, sum if
+    // not), then the integrand's two corrections, one chain each, the carries choosing
+    // their outputs.
+    wire [AccWidth:0] jr_it;
+    wire              ge;
+    dda_addsel #(.Width(AccWidth + 1)) u_cmp (
+      .a_i(sum), .b_i(~{1'b0, cap_i}), .ci_i(1'b1), .sel_i(ge), .s_o(jr_it), .co_o(ge)
+    );
+    wire ovf = add & ge;
+    wire [AccWidth-1:0] jv_x, jv_it;
+    wire                unused_co_x, unused_co_y;
+    dda_addsel #(.Width(AccWidth)) u_corr_x (
+      .a_i(jv_q), .b_i(inc_on_x_q), .ci_i(1'b0), .sel_i(ovf_x_i), .s_o(jv_x), .co_o(unused_co_x)
+    );
+    dda_addsel #(.Width(AccWidth)) u_corr_y (
+      .a_i(jv_x), .b_i(inc_on_y_q), .ci_i(1'b0), .sel_i(ovf_y_i), .s_o(jv_it), .co_o(unused_co_y)
+    );
     assign ovf_o = ovf;
     assign can_o = add & (jv_q != {AccWidth{1'b0}});
 
@@ -217,13 +231,14 @@ module dda_integrator #(
         jv_q <= jv_i;
         jr_q <= jr_i;
       end else if (iterate_i) begin
-        if (add) jr_q <= ovf ? sum_minus_cap : sum[AccWidth-1:0];
-        jv_q <= jv_q + corr_x + corr_y;
+        if (add) jr_q <= jr_it[AccWidth-1:0];
+        jv_q <= jv_it;
       end
     end
 
     assign ovf_d_o = 1'b0;
-    wire unused_small = &{1'b0, cap_cmd_i, active_d_i, ovf_x_d_i, ovf_y_d_i};
+    wire unused_small = &{1'b0, cap_cmd_i, active_d_i, ovf_x_d_i, ovf_y_d_i, jr_it[AccWidth],
+                          unused_co_x, unused_co_y};
   end
 
 `ifndef SYNTHESIS

@@ -19,7 +19,9 @@
 #               a + b, a + b + c + d and a + b == 0 (formal/dda_lemmas.sv). The jobs
 #               above read the RTL with DDA_FORMAL_ABSTRACT, where those blocks are the
 #               plain operations: a solver proves sums of sums, not carry-save layers
-#               against them (that took minutes at 6 bits).
+#               against them (that took minutes at 6 bits). Also the small
+#               implementation's hand-placed iCE40 cells (rtl/dda_addsel.v with DDA_ICE40,
+#               Yosys' SB_LUT4 and SB_CARRY models) equal its plain Verilog.
 # --acc and --cnt choose the widths (default: those of hw_params.hpp); the header comes
 # from `dda gen-params --kind verilog --acc-width N --cnt-width N`. Assumptions: the
 # command preconditions and the integrand range the driver guarantees (formal/dda_env.vh).
@@ -90,8 +92,12 @@ expose() {
 rtl_files=""
 for f in "${rtl_srcs[@]}"; do rtl_files+=" $work/rtl/$(basename "$f")"; done
 abstract=-DDDA_FORMAL_ABSTRACT
-[ "$job" = lemmas ] && abstract=""
+if [ "$job" = lemmas ]; then
+  abstract=-DDDA_ICE40
+  "$root/scripts/ice40-cells.sh" "$work/ice40_cells.v"
+fi
 {
+  [ "$job" = lemmas ] && echo "read_verilog $work/ice40_cells.v"
   echo "read_verilog -formal $abstract -I$work/rtl$rtl_files"
   echo "chparam -set Impl \"$impl\" dda_core"
   if [ "$job" = lemmas ]; then

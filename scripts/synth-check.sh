@@ -13,7 +13,7 @@ cd "$root"
 # check -assert: error on multiple conflicting drivers, undriven signals used, logic loops.
 # select -assert-none: no latch cell of any kind survives (proc would have made one for
 # an incomplete combinational assignment).
-if ! "$yosys" -l "$log" -p "read_verilog -Irtl $(scripts/rtl-files.sh rtl/dda_core.f | tr "\n" " "); \
+if ! "$yosys" -l "$log" -p "read_verilog -DDDA_ICE40 -Irtl $(scripts/rtl-files.sh rtl/dda_core.f | tr "\n" " "); \
     synth_ice40 -top dda_core; \
     check -assert; \
     select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$_DLATCH_* t:\$_DLATCHSR_*; \

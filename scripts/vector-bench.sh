@@ -3,12 +3,15 @@
 # Runs the self-checking bench tb/hdl/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
 #   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]
-#                                  [--sim icarus|verilator|both] [--impl small|fast] DIR
+#                                  [--sim icarus|verilator|both] [--impl small|fast] [--ice40] DIR
 # --corrupt flips the lowest bit of FIELD in the expected word of CYCLE (in a copy of the
 # set) and then passes only if every simulator fails with exactly that MISMATCH.
 # --rtl runs a copy of the RTL (the sources of rtl/dda_core.f found in RTLDIR) and passes
 # only if every simulator fails with a line containing TEXT (an assertion's message).
 # --impl fast builds the core's fast implementation (-DDDA_IMPL_FAST; default small).
+# --ice40 builds the RTL as scripts/synth synthesizes it (-DDDA_ICE40: the small
+# implementation's hand-placed SB_LUT4 and SB_CARRY cells, with Yosys' models of them
+# from scripts/ice40-cells.sh).
 # The RTL's immediate assertions are on in both simulators (Verilator --assert).
 # Builds go to $DDA_BUILD_DIR/vec_bench (default build/vec_bench). Registered in ctest
 # (tests/rtl_checks.cmake, vectors.*).
@@ -16,7 +19,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 iverilog=${IVERILOG:-iverilog} vvp=${VVP:-vvp} verilator=${VERILATOR:-verilator}
-corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect="" impl=small
+corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect="" impl=small ice40=0
 while [ $# -gt 1 ]; do
   case "$1" in
     --corrupt) corrupt_cycle=$2 corrupt_field=$3; shift 3 ;;
@@ -24,10 +27,11 @@ while [ $# -gt 1 ]; do
     --expect) expect=$2; shift 2 ;;
     --sim) sims=$2; [ "$sims" = both ] && sims="icarus verilator"; shift 2 ;;
     --impl) impl=$2; shift 2 ;;
+    --ice40) ice40=1; shift ;;
     *) break ;;
   esac
 done
-[ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] [--impl small|fast] DIR" >&2; exit 2; }
+[ $# -eq 1 ] || { echo "usage: $0 [--corrupt CYCLE FIELD] [--sim icarus|verilator|both] [--impl small|fast] [--ice40] DIR" >&2; exit 2; }
 defs=()
 case "$impl" in
   small) ;;
@@ -38,6 +42,7 @@ set_dir=$(cd "$1" && pwd)
 out="$build/vec_bench"
 [ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
 [ "$impl" = small ] || out="${out}_$impl"
+[ "$ice40" = 0 ] || out="${out}_ice40"
 mkdir -p "$out"
 # The RTL comes from its file list, rtl/dda_core.f, with DDA_RTL naming the folder
 # (a mutated copy is the same list pointed at another folder).
@@ -47,6 +52,11 @@ vl_extra=()  # a mutated copy may leave signals unused: its lint warnings do not
 flist=$root/rtl/dda_core.f
 mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$flist")
 srcs=("$root/tb/hdl/dda_vec_tb.v")
+if [ "$ice40" = 1 ]; then
+  defs+=(-DDDA_ICE40)
+  [ -e "$out/ice40_cells.v" ] || "$root/scripts/ice40-cells.sh" "$out/ice40_cells.v"
+  srcs+=("$out/ice40_cells.v")
+fi
 incs=(-I"$rtl_dir" -I"$root/rtl" -I"$root/tb/hdl")
 newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f" -nt "$t" ] && return 0; done; return 1; }
 deps=("${srcs[@]}" "$flist")
