@@ -61,9 +61,14 @@ function(dda_verilated_harness target mode rtl_dir)
   target_include_directories(${target} SYSTEM PRIVATE ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
   target_link_libraries(${target} PUBLIC ${base})
   dda_rtl_sources(${DDA_RTL_DIR}/dda_core.f sources ${rtl_dir})
+  # At other widths the generated header comes first (Verilator searches -I in order).
+  set(params_dir "")
+  if(NOT DDA_WIDTHS_DEFAULT)
+    set(params_dir ${DDA_RTL_PARAMS_DIR})
+  endif()
   verilate(${target} ${kind}
     SOURCES ${sources} ${DDA_RTL_DIR}/lint.vlt
     TOP_MODULE dda_core PREFIX ${prefix}
-    INCLUDE_DIRS ${rtl_dir} ${DDA_RTL_DIR}
+    INCLUDE_DIRS ${params_dir} ${rtl_dir} ${DDA_RTL_DIR}
     VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast ${extra} ${ARGN})
 endfunction()

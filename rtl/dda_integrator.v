@@ -105,9 +105,11 @@ module dda_integrator #(
     // ---- one iteration ----
     // Copies of both carries for the two datapaths (each drives about a hundred LUTs;
     // ovf_q drives the control): registers of their own, loaded with the same next value.
-    (* keep *) reg cw_x_q, cw_y_q;  // for the integrand's correction
-    (* keep *) reg ce_x_q, ce_y_q;  // for e's carry-save layers
-    (* keep *) reg ce_a_q;          // a copy of add_q for them
+    (* keep *) reg cw_x_q /* verilator public_flat_rd */;  // for the integrand's correction
+    (* keep *) reg cw_y_q /* verilator public_flat_rd */;
+    (* keep *) reg ce_x_q /* verilator public_flat_rd */;  // for e's carry-save layers
+    (* keep *) reg ce_y_q /* verilator public_flat_rd */;
+    (* keep *) reg ce_a_q /* verilator public_flat_rd */;  // a copy of add_q for them
     // The integrand's correction: one of 0, inc_on_x, inc_on_y, their sum (4:1 on the
     // carries), then one chain. The sum is AccWidth + 1 bits; jv_q keeps the low bits.
     wire [EW-1:0] w = cw_x_q ? (cw_y_q ? incsum_q : sx(inc_on_x_q))

@@ -22,7 +22,7 @@
 `define DDA_CMD_JR_X_WIDTH 51
 `define DDA_CMD_JR_Y_LSB 153  // initial Y accumulator (preload), < cap
 `define DDA_CMD_JR_Y_WIDTH 51
-`define DDA_CMD_CAP_LSB 204  // accumulator capacity (2^n * a * b, or 2^49 rotated), 0 < cap < 2^(AccWidth-1)
+`define DDA_CMD_CAP_LSB 204  // accumulator capacity (2^n * a * b, or 2^(AccWidth-2) rotated), 0 < cap < 2^(AccWidth-1)
 `define DDA_CMD_CAP_WIDTH 51
 `define DDA_CMD_CNT_X_LSB 255  // X steps to emit
 `define DDA_CMD_CNT_X_WIDTH 17

@@ -29,12 +29,12 @@ std::uint64_t bits(const std::vector<std::uint32_t>& w, int lsb, int width) {
 }
 }  // namespace
 
-TEST_CASE("hw_params: rtl/dda_params.vh is in sync with hw_params.hpp", "[hw_params]") {
+TEST_CASE("hw_params: rtl/dda_params.vh is in sync with hw_params.hpp", "[hw_params][default-widths]") {
   INFO("regenerate with: dda gen-params --kind verilog --out rtl/dda_params.vh");
   CHECK(read_file(std::string(DDA_SOURCE_DIR) + "/rtl/dda_params.vh") == dda::hw::verilog_header());
 }
 
-TEST_CASE("hw_params: design doc tables match hw_params", "[hw_params]") {
+TEST_CASE("hw_params: design doc tables match hw_params", "[hw_params][default-widths]") {
   const std::string doc = read_file(std::string(DDA_SOURCE_DIR) + "/docs/design.md");
   const std::string begin = "<!-- BEGIN GENERATED: dda gen-params --kind markdown -->\n";
   const auto i = doc.find(begin);
@@ -52,7 +52,7 @@ TEST_CASE("hw_params: every command field lands at its offset", "[hw_params]") {
   c.jr_x = 0x3;
   c.jr_y = (std::int64_t{1} << (dda::hw::kAccWidth - 1)) - 1;  // largest accumulator value
   c.cap = 0x1000000;
-  c.cnt_x = 0x1abcd;
+  c.cnt_x = 0x1abcd & dda::hw::kCntMax;  // all 17 bits at the default widths
   c.cnt_y = 1;
   c.dir_x_neg = true;
   c.dir_y_neg = false;
@@ -96,7 +96,7 @@ TEST_CASE("hw_params: values that do not fit the hardware are refused by name", 
   CHECK_THROWS_WITH(dda::hw::pack_command(c), Catch::Contains("inc_y_on_x = "));
 }
 
-TEST_CASE("hw_params: the default widths hold ellipses 2^16 steps across", "[hw_params]") {
+TEST_CASE("hw_params: the default widths hold ellipses 2^16 steps across", "[hw_params][default-widths]") {
   // Semi-axes up to 32768 with half preload's four extra bits.
   CHECK(dda::hw::max_semi_axis(4) >= 32768);
   CHECK(dda::hw::max_semi_axis(0) >= dda::hw::max_semi_axis(4));

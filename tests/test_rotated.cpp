@@ -80,7 +80,7 @@ TEST_CASE("rotated: angles parse exactly and print back", "[golden][rotated]") {
   CHECK(format_degrees(-1) == "-0.000001");
 }
 
-TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rotated]") {
+TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rotated][default-widths]") {
   const Plan p = plan_arc(lathe(Preload::Half));
   REQUIRE(p.rotated);
   REQUIRE(p.spec.bits == 19);  // smallest valid (15) + 4
@@ -98,7 +98,8 @@ TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rota
   CHECK(p.pieces.front().cmd.cap == (std::int64_t{1} << kRotCapBits));
 }
 
-TEST_CASE("rotated: the lathe example ends on its end point within a step of the curve", "[golden][rotated]") {
+TEST_CASE("rotated: the lathe example ends on its end point within a step of the curve",
+          "[golden][rotated][default-widths]") {
   for (const Preload pre : {Preload::Zero, Preload::Half}) {
     const Plan p = plan_arc(lathe(pre));
     INFO(to_string(pre));
@@ -166,7 +167,7 @@ TEST_CASE("parametric ends: the span is judged from the ideal start, not the rou
 }
 
 TEST_CASE("reached: lattice ends the counted path cannot reach; still refused: a start at the centre",
-          "[golden][rotated]") {
+          "[golden][rotated][default-widths]") {
   // Issue 11: far inside the curve the counted path stalls short of the vertex; the
   // planner ends the arc on the ray through the end's curve point and goes on to the end
   // with a line, so the path starts and ends exactly on the given points.
@@ -192,7 +193,8 @@ TEST_CASE("reached: lattice ends the counted path cannot reach; still refused: a
   CHECK_THROWS_WITH(plan_arc(c), Catch::Contains("is the centre of the ellipse"));
 }
 
-TEST_CASE("rotated: tips sharper than the lattice are followed, full turns close within a step", "[golden][rotated]") {
+TEST_CASE("rotated: tips sharper than the lattice are followed, full turns close within a step",
+          "[golden][rotated][default-widths]") {
   // Issue 11: these were refused (tip radius of curvature min(a,b)^2 / max(a,b) at most a
   // quarter step); the planner now crosses such tips in short lines and re-anchors on the
   // curve at every turn (docs/golden-model.md, "Rotated ellipses").

@@ -12,6 +12,27 @@ TEST_CASE("rtl: paper example matches the golden model in every register", "[rtl
   paper_example_with_waveform<rtl::RtlHarness>("rtl_paper");
 }
 
+// The fast implementation's own registers (hw::kFastRegisters) are in its RTL at their
+// widths, and none of them is in the small one's (test_rtl_fast is this program built
+// on the fast harness, with DDA_TEST_IMPL_FAST).
+TEST_CASE("rtl: the fast implementation's own registers are its own", "[rtl]") {
+  rtl::RtlHarness h;
+  for (const auto& r : hw::kFastRegisters) {
+    INFO(r.name);
+#ifdef DDA_TEST_IMPL_FAST
+    CHECK_NOTHROW(h.resolve(hw::SignalTable{r}));
+#else
+    CHECK_THROWS_AS(h.resolve(hw::SignalTable{r}), GuardError);
+#endif
+  }
+#ifdef DDA_TEST_IMPL_FAST
+  // A width that differs is found too.
+  hw::Reg wrong = hw::kFastRegisters.front();
+  wrong.width -= 1;
+  CHECK_THROWS_AS(h.resolve(hw::SignalTable{wrong}), GuardError);
+#endif
+}
+
 TEST_CASE("rtl: 1,000 random arcs back to back in lockstep with the golden model", "[rtl][random]") {
   rtl::RtlHarness h;
   random_arcs(h, test_seed(41), 1000);

@@ -67,6 +67,8 @@ std::string markdown_tables(const SignalTable& t) {
   for (const auto& r : t) {
     if (r.kind == SigKind::Probe) o << "| `" << r.name << "` | " << r.width << " | " << r.meaning << " |\n";
   }
+  o << "\n| register of the fast implementation | width | equals |\n|---|---|---|\n";
+  for (const auto& r : kFastRegisters) o << "| `" << r.name << "` | " << r.width << " | " << r.meaning << " |\n";
   return o.str();
 }
 

@@ -39,6 +39,8 @@ void RtlHarness::close_trace() {
   }
 }
 
+void RtlHarness::resolve(const hw::SignalTable& t) const { VlSampler(*ctx_, "dut.dda_core", t); }
+
 void RtlHarness::apply(const CoreInputs& in, bool cmd_changed) {
   top_->rst_ni = in.rst_n;
   top_->ce_i = in.ce;

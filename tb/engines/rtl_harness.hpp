@@ -24,6 +24,9 @@ class RtlHarness : public CoreHarness {
   bool cmd_ready() override;
   const char* name() const override { return "rtl"; }
   void close_trace();
+  // Resolves the names of a table in this RTL (each public, at its width); throws
+  // GuardError naming the first that is not.
+  void resolve(const hw::SignalTable& t) const;
 
  protected:
   void apply(const CoreInputs& in, bool cmd_changed) override;

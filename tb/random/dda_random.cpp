@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "dda_random.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+
+#include "dda/hw_command.hpp"
 
 namespace dda {
 
@@ -35,8 +38,15 @@ Shard parse_shard(const std::string& text) {
   return s;
 }
 
+// The widths bound every draw: the largest semi-axis whose capacity fits AccWidth at the
+// widest n drawn (program arcs use the default n, smallest + 4) and whose steps fit
+// CntWidth (hw::max_semi_axis). At the default widths that is 16384 (+8) and 32768 (+4),
+// above what the tests ask for; a build at smaller widths draws smaller ellipses.
 RandomArcs::RandomArcs(std::uint64_t seed, std::int64_t max_axis, int extra_bits_max, ArcKind kind)
-    : rng_(seed), max_axis_(max_axis), extra_bits_max_(extra_bits_max), kind_(kind) {}
+    : rng_(seed),
+      max_axis_(std::min(max_axis, hw::max_semi_axis(kind == ArcKind::Program ? 4 : extra_bits_max))),
+      extra_bits_max_(extra_bits_max),
+      kind_(kind) {}
 
 namespace {
 

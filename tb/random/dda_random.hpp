@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Seeded random arc configurations shared by the property tests, the lockstep tests
-// and the regression scripts: a, b log-uniform in [1, max_axis], n uniform from the
+// and the regression scripts: a, b log-uniform in [1, max_axis] (max_axis no larger than
+// the widths allow, hw::max_semi_axis), n uniform from the
 // smallest valid width to +8, both preloads; start and end points drawn on the quarter
 // (ArcKind::Quarter) or anywhere on a whole, moved, possibly turned ellipse (ArcKind::Whole).
 #pragma once

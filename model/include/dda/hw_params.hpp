@@ -20,9 +20,26 @@ namespace dda::hw {
 // negative and its axis holds (adds nothing). Capacity and accumulators are unsigned,
 // below 2^(AccWidth-1), so every positive integrand (at most the capacity) has its top
 // bit clear. The adder inside each integrator is AccWidth + 1 bits wide.
+// A build at other widths (the CMake options DDA_ACC_WIDTH and DDA_CNT_WIDTH, which
+// define DDA_HW_ACC_WIDTH and DDA_HW_CNT_WIDTH; scripts/test-widths.sh) changes them
+// here for the whole project: golden model, planner, SystemC model and, through the
+// Verilog header CMake generates from this file, the RTL.
+#ifdef DDA_HW_ACC_WIDTH
+inline constexpr int kAccWidth = DDA_HW_ACC_WIDTH;
+#else
 inline constexpr int kAccWidth = 51;
+#endif
 // Remaining-step counters.
+#ifdef DDA_HW_CNT_WIDTH
+inline constexpr int kCntWidth = DDA_HW_CNT_WIDTH;
+#else
 inline constexpr int kCntWidth = 17;
+#endif
+// The widths this project is verified at lie in these ranges: at most 51 and 17 (the
+// defaults; every sum the datapath forms stays in int64); at least 32 and 8 (rotated
+// ellipses need a capacity of 2^(AccWidth - 2) with room for their coefficients).
+static_assert(kAccWidth >= 32 && kAccWidth <= 51, "AccWidth (DDA_ACC_WIDTH) must be in [32, 51]");
+static_assert(kCntWidth >= 8 && kCntWidth <= 17, "CntWidth (DDA_CNT_WIDTH) must be in [8, 17]");
 
 inline constexpr std::uint64_t kAccMask = (std::uint64_t{1} << kAccWidth) - 1;
 inline constexpr std::uint64_t kCntMax = (std::uint64_t{1} << kCntWidth) - 1;
@@ -47,7 +64,7 @@ inline constexpr std::array<Field, 13> kCmdFields{{
     {"jv_y", kAccWidth, "initial Y integrand (scaled, two's complement)"},
     {"jr_x", kAccWidth, "initial X accumulator (preload), < cap"},
     {"jr_y", kAccWidth, "initial Y accumulator (preload), < cap"},
-    {"cap", kAccWidth, "accumulator capacity (2^n * a * b, or 2^49 rotated), 0 < cap < 2^(AccWidth-1)"},
+    {"cap", kAccWidth, "accumulator capacity (2^n * a * b, or 2^(AccWidth-2) rotated), 0 < cap < 2^(AccWidth-1)"},
     {"cnt_x", kCntWidth, "X steps to emit"},
     {"cnt_y", kCntWidth, "Y steps to emit"},
     {"dir_x", 1, "X step direction (0 = +X, 1 = -X)"},
@@ -150,6 +167,42 @@ constexpr bool regs_first() {
   return true;
 }
 static_assert(regs_first(), "kSignals: registers first, probes after them");
+
+// The fast implementation's own registers (dda_core.Impl = "fast", docs/design.md
+// "Implementations"), each derived from the architectural registers above and checked by
+// an assertion beside the logic (simulation and formal). Both implementations hold the
+// architectural registers, which the per-cycle tier, the scoreboards and the save files
+// show; these are the fast one's, named as its own: the design doc's table is generated
+// from this list, and a test finds each name at its width in the fast RTL and none of
+// them in the small one ("rtl: the fast implementation's own registers").
+inline constexpr std::array<Reg, 26> kFastRegisters{{
+    {"u_int_x.g_fast.e_q", kAccWidth + 1, "`jr_q + jv_q - cap_q` (`jv_q` signed), while the axis is active"},
+    {"u_int_x.g_fast.incmc_q", kAccWidth + 1, "`inc_on_x_q - cap_q` (the own axis' correction, signed)"},
+    {"u_int_x.g_fast.incsum_q", kAccWidth + 1, "`inc_on_x_q + inc_on_y_q` (signed)"},
+    {"u_int_x.g_fast.add_q", 1, "the axis adds: active and `jv_q` not negative"},
+    {"u_int_x.g_fast.ce_a_q", 1, "a copy of `add_q` (for e's adder)"},
+    {"u_int_x.g_fast.ovf_q", 1, "the carry `add & (jr_q + jv_q >= cap_q)`"},
+    {"u_int_x.g_fast.jvz_q", 1, "`jv_q == 0`"},
+    {"u_int_x.g_fast.cw_x_q", 1, "a copy of the X carry (the integrand's correction)"},
+    {"u_int_x.g_fast.cw_y_q", 1, "a copy of the Y carry (the integrand's correction)"},
+    {"u_int_x.g_fast.ce_x_q", 1, "a copy of the X carry (e's adder)"},
+    {"u_int_x.g_fast.ce_y_q", 1, "a copy of the Y carry (e's adder)"},
+    {"u_int_y.g_fast.e_q", kAccWidth + 1, "`jr_q + jv_q - cap_q` (`jv_q` signed), while the axis is active"},
+    {"u_int_y.g_fast.incmc_q", kAccWidth + 1, "`inc_on_y_q - cap_q` (the own axis' correction, signed)"},
+    {"u_int_y.g_fast.incsum_q", kAccWidth + 1, "`inc_on_x_q + inc_on_y_q` (signed)"},
+    {"u_int_y.g_fast.add_q", 1, "the axis adds: active and `jv_q` not negative"},
+    {"u_int_y.g_fast.ce_a_q", 1, "a copy of `add_q` (for e's adder)"},
+    {"u_int_y.g_fast.ovf_q", 1, "the carry `add & (jr_q + jv_q >= cap_q)`"},
+    {"u_int_y.g_fast.jvz_q", 1, "`jv_q == 0`"},
+    {"u_int_y.g_fast.cw_x_q", 1, "a copy of the X carry (the integrand's correction)"},
+    {"u_int_y.g_fast.cw_y_q", 1, "a copy of the Y carry (the integrand's correction)"},
+    {"u_int_y.g_fast.ce_x_q", 1, "a copy of the X carry (e's adder)"},
+    {"u_int_y.g_fast.ce_y_q", 1, "a copy of the Y carry (e's adder)"},
+    {"u_cnt_x.g_fast.nz_q", 1, "`cnt_q != 0`"},
+    {"u_cnt_x.g_fast.one_q", 1, "`cnt_q == 1`"},
+    {"u_cnt_y.g_fast.nz_q", 1, "`cnt_q != 0`"},
+    {"u_cnt_y.g_fast.one_q", 1, "`cnt_q == 1`"},
+}};
 
 // The core's ports (rtl/dda_core.v), in the order of the vector sets' expected words
 // for the outputs; `group` as for registers (clk_i and cmd_i are not in the vectors).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dda/datapath.hpp"
+#include "dda/hw_params.hpp"
 
 namespace dda {
 
@@ -61,8 +62,8 @@ struct Coefficients {
   std::int64_t p = 0, qx = 0, qy = 0;
 };
 // Capacity of rotated ellipses: 2^kRotCapBits, the largest power of two the hardware's
-// AccWidth-bit registers hold.
-inline constexpr int kRotCapBits = 49;
+// AccWidth-bit registers hold below 2^(AccWidth-1): 2^49 at the default widths.
+inline constexpr int kRotCapBits = hw::kAccWidth - 2;
 // Fraction bits of the ideal start point (a parametric angle's point on the curve).
 inline constexpr int kPosFrac = 32;
 
