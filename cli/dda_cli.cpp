@@ -24,6 +24,7 @@
 #include "dda/golden.hpp"
 #include "dda/hw_command.hpp"
 #include "dda/hw_params.hpp"
+#include "dda/motion_map.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
 #include "vectors.hpp"
@@ -300,7 +301,9 @@ int main(int argc, char** argv) {
                   "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
                   "the largest semi-axis they hold at the default width), vector-fields "
                   "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
-                  "architectural registers and their widths: scripts/formal.sh)");
+                  "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
+                  "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
+                  "rtl/dda_motion_regs.vh)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
   gen->add_option("--acc-width", gp_acc,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
@@ -409,12 +412,17 @@ int main(int argc, char** argv) {
                                         {"vector-fields", 3},
                                         {"gtkw-systemc", 4},
                                         {"gtkw-rtl", 5},
-                                        {"registers", 6}});
+                                        {"registers", 6},
+                                        {"motion-markdown", 7},
+                                        {"motion-c", 8},
+                                        {"motion-verilog", 9}});
       if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
         throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
       }
       Output out(gp_out);
-      if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
+      if (kind >= 7) {  // the motion block's register map
+        out.stream() << (kind == 7 ? motion::markdown() : kind == 8 ? motion::c_header() : motion::verilog_header());
+      } else if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
         out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",
                                  kind == 4 ? "SystemC" : "dut.dda_core");
       } else if (kind == 6) {  // the architectural registers: "name width" (scripts/formal.sh)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Verilator lint of the RTL with every warning on; fails on any %Warning or %Error.
+# Verilator lint of the RTL (the core, and the motion block around it) with every
+# warning on; fails on any %Warning or %Error.
 #   usage: scripts/rtl-lint.sh        (ctest: rtl.lint)
 # Waivers, each with its reason, live in rtl/lint.vlt.
 set -uo pipefail
@@ -10,6 +11,11 @@ cd "$root"
 export DDA_RTL=$root/rtl
 out=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/dda_core.f --top-module dda_core 2>&1)
 rc=$?
+# The motion block (the core on a Wishbone bus) on top of it.
+out2=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/dda_motion.f --top-module dda_motion 2>&1)
+rc2=$?
+out=$out$out2
+[ $rc2 -eq 0 ] || rc=$rc2
 [ -n "$out" ] && echo "$out"
 if [ $rc -ne 0 ] || echo "$out" | grep -Eq '%(Warning|Error)'; then
   echo "rtl-lint: FAIL (verilator exit $rc)" >&2

@@ -19,6 +19,9 @@
 #                                    anchored example whose path depends on the
 #                                    coefficients' rounding at 2^49, and sharp tips of
 #                                    ellipses larger than these widths take
+#   test_motion '~[default-widths]' the motion block in lockstep with its model (its
+#                                    register map's checked-in files are the default
+#                                    widths')
 #   test_systemc, test_rtl, test_cosim, test_rtl_fast, test_cosim_fast
 #                                    lockstep against the golden model on random arcs,
 #                                    drawn within the widths (tb/random/dda_random.cpp);
@@ -43,7 +46,7 @@ done
 build=${DDA_WIDTHS_BUILD_DIR:-$root/build-w$acc-$cnt}
 "$root/scripts/setup.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDDA_ACC_WIDTH="$acc" -DDDA_CNT_WIDTH="$cnt" >/dev/null
-targets=(dda test_golden test_systemc test_rtl test_cosim test_rtl_fast test_cosim_fast rtl_regress cosim_regress)
+targets=(dda test_golden test_systemc test_rtl test_cosim test_rtl_fast test_cosim_fast test_motion rtl_regress cosim_regress)
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 bin=$build/bin
 echo "== widths: $("$bin/dda" gen-params --kind json | tr -d '\n ')"
@@ -53,6 +56,7 @@ run() {
   if ! "$@"; then echo "FAILED: $*" >&2; fail=1; fi
 }
 run "$bin/test_golden" '~[default-widths]'
+run "$bin/test_motion" '~[default-widths]'
 for t in test_systemc test_rtl test_cosim test_rtl_fast test_cosim_fast; do
   while IFS= read -r name; do
     # A test spec: commas, brackets and backslashes escaped (Catch2's spec syntax).

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The form of the sources: every C++ file git tracks is as clang-format (.clang-format)
-# writes it, and every source file (C++, Verilog, file lists, CMake, shell) carries the
+# writes it, and every source file (C++, C headers, Verilog, file lists, CMake, shell) carries the
 # SPDX licence line in its first lines (data files such as tests/data/*.csv do not).
 #   usage: tests/check-format.sh [clang-format|spdx]     (ctest format.*)
 set -euo pipefail
@@ -20,7 +20,7 @@ case "$what" in
     missing=0 n=0
     for f in "${files[@]}"; do
       case "$f" in
-        *.cpp|*.hpp|*.v|*.vh|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
+        *.cpp|*.hpp|*.h|*.v|*.vh|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
         *) continue ;;
       esac
       n=$((n + 1))

@@ -38,7 +38,7 @@ TEST_CASE("hw_params: design doc tables match hw_params", "[hw_params][default-w
   const std::string doc = read_file(std::string(DDA_SOURCE_DIR) + "/docs/design.md");
   const std::string begin = "<!-- BEGIN GENERATED: dda gen-params --kind markdown -->\n";
   const auto i = doc.find(begin);
-  const auto j = doc.find("<!-- END GENERATED -->");
+  const auto j = doc.find("<!-- END GENERATED -->", i);
   REQUIRE(i != std::string::npos);
   REQUIRE(j != std::string::npos);
   INFO("regenerate the block with: dda gen-params --kind markdown");

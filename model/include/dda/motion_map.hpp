@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+// The register map of the motion block (rtl/dda_motion.v, docs/design.md "Motion block"):
+// the one definition of its bus registers and their fields. Generated from it (and
+// checked against it by "motion_map: ..." tests): the tables of docs/design.md, the
+// firmware header fw/dda_motion_regs.h and the Verilog include rtl/dda_motion_regs.vh
+// the RTL decodes the bus with (`dda gen-params --kind motion-markdown|motion-c|
+// motion-verilog`).
+//
+// Wishbone B4, 32-bit data, byte addresses (word aligned). A command entry is
+// kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
+// (hw::kCmdFields, LSB first) and the entry's reserved bits above it (kEntrySpareBits,
+// written as 0: room for per-command fields of later blocks).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dda/hw_params.hpp"
+
+namespace dda::motion {
+
+inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
+inline constexpr int kVersionMajor = 1;
+inline constexpr int kVersionMinor = 0;
+// Bits an entry keeps above the command word for per-command fields of later blocks.
+inline constexpr int kEntryReservedBits = 16;
+inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
+inline constexpr int kEntrySpareBits = 32 * kEntryWords - hw::kCmdWidth;
+inline constexpr int kAddrWidth = 8;          // byte address bits the block decodes
+inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
+inline constexpr int kLevelWidth = 9;         // queue level: 0 .. 256 entries
+inline constexpr int kMaxDepthLog2 = kLevelWidth - 1;
+static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
+
+enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
+
+struct Register {
+  std::string_view name;
+  unsigned offset;
+  Access access;
+  std::string_view meaning;
+};
+inline constexpr std::array<Register, 14> kRegisters{{
+    {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
+    {"VERSION", 0x04, Access::RO, "register map version"},
+    {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
+    {"CTRL", 0x0C, Access::WO, "commands to the block (each bit acts when written 1)"},
+    {"STATUS", 0x10, Access::RO, "state, queue level, the sticky error and its causes"},
+    {"IRQ_STATUS", 0x14, Access::W1C, "interrupt causes (events), write 1 to clear"},
+    {"IRQ_ENABLE", 0x18, Access::RW, "interrupt mask: irq_o = |(IRQ_STATUS & IRQ_ENABLE)"},
+    {"IRQ_LEVEL", 0x1C, Access::RW, "queue level under which a dequeue raises IRQ_STATUS.low"},
+    {"DONE_COUNT", 0x20, Access::RO, "commands finished (the core's done_o pulses), wraps"},
+    {"ERR_COUNT", 0x24, Access::RO, "commands stalled (the core's err_o pulses), wraps"},
+    {"POS_X", 0x28, Access::RW, "X position in steps, signed; counts the steps sent out; a write presets it"},
+    {"POS_Y", 0x2C, Access::RW, "Y position in steps, signed; counts the steps sent out; a write presets it"},
+    {"ENTRY_MASK", 0x30, Access::RO, "the words of the entry being written since the last commit"},
+    {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
+}};
+
+struct Field {
+  std::string_view reg;
+  std::string_view name;
+  int lsb;
+  int width;
+  std::string_view meaning;
+};
+inline constexpr std::array<Field, 32> kFields{{
+    {"ID", "id", 0, 32, "0x44444131"},
+    {"VERSION", "minor", 0, 16, "minor version"},
+    {"VERSION", "major", 16, 16, "major version"},
+    {"CONFIG", "entry_words", 0, 6, "words of an entry (kEntryWords)"},
+    {"CONFIG", "depth_log2", 8, 4, "log2 of the queue depth (entries)"},
+    {"CONFIG", "acc_width", 16, 6, "the core's AccWidth"},
+    {"CONFIG", "cnt_width", 24, 5, "the core's CntWidth"},
+    {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},
+    {"CTRL", "abort", 1, 1, "stop the core on this edge, flush the queue and the entry being written"},
+    {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
+    {"STATUS", "busy", 0, 1, "the core runs a command"},
+    {"STATUS", "empty", 1, 1, "the queue is empty"},
+    {"STATUS", "full", 2, 1, "the queue is full"},
+    {"STATUS", "err", 3, 1, "sticky error: one of the causes below happened since the last clear"},
+    {"STATUS", "err_overflow", 4, 1, "cause: an entry word or a commit while the queue was full"},
+    {"STATUS", "err_partial", 5, 1, "cause: a commit before every word of the entry was written"},
+    {"STATUS", "err_stall", 6, 1, "cause: the core stopped a command that could not go on (err_o)"},
+    {"STATUS", "aborted", 7, 1, "an abort happened since the last clear"},
+    {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
+    {"IRQ_STATUS", "done", 0, 1, "a command finished"},
+    {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
+    {"IRQ_STATUS", "low", 2, 1, "a dequeue left fewer than IRQ_LEVEL entries"},
+    {"IRQ_ENABLE", "done", 0, 1, "enable IRQ_STATUS.done"},
+    {"IRQ_ENABLE", "err", 1, 1, "enable IRQ_STATUS.err"},
+    {"IRQ_ENABLE", "low", 2, 1, "enable IRQ_STATUS.low"},
+    {"IRQ_LEVEL", "level", 0, kLevelWidth, "threshold of IRQ_STATUS.low"},
+    {"DONE_COUNT", "count", 0, 32, "done pulses"},
+    {"ERR_COUNT", "count", 0, 32, "err pulses"},
+    {"POS_X", "pos", 0, 32, "two's complement"},
+    {"POS_Y", "pos", 0, 32, "two's complement"},
+    {"ENTRY_MASK", "words", 0, kEntryWords, "bit k: word k written"},
+    {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31"},
+}};
+// Copies the checks take (a drift test hands them a changed copy).
+struct Map {
+  std::vector<Register> regs;
+  std::vector<Field> fields;
+};
+Map map();
+
+std::string markdown(const Map& m = map());        // docs/design.md, "Motion block"
+std::string c_header(const Map& m = map());        // fw/dda_motion_regs.h
+std::string verilog_header(const Map& m = map());  // rtl/dda_motion_regs.vh
+
+// Throws GuardError naming the first register or field that overlaps another, leaves
+// its 32-bit word, or whose register is unknown.
+void check(const Map& m = map());
+
+}  // namespace dda::motion

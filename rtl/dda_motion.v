@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block (docs/design.md, "Motion block"): the DDA core behind a Wishbone B4
+// slave, with a command queue in block RAM, status, interrupts, abort and a position
+// counter per axis. The register map is rtl/dda_motion_regs.vh, generated from
+// model/include/dda/motion_map.hpp (the one definition; docs/design.md and the firmware
+// header fw/dda_motion_regs.h come from it too).
+//
+// Bus: 32-bit data, byte addresses (wb_adr_i[1:0] ignored), wb_sel_i ignored (every
+// write writes the whole word). A request (wb_cyc_i & wb_stb_i while wb_stall_o is low)
+// is answered by wb_ack_o on the next cycle, read data with it; wb_stall_o is high in
+// that cycle, so a classic master that holds wb_stb_i until the ack is not taken twice,
+// and a pipelined master issues one request every other cycle. The bus never waits on
+// the core.
+//
+// Queue: 2^DepthLog2 entries of ENTRY_WORDS words, one EBR lane of 16 bits per half
+// word, read at the next head address on every edge (as rtl/fpga/dda_fpga_top.v), so
+// the core takes queued commands back to back. The host writes the words of an entry
+// (ENTRY + 4k) into the free slot at the tail and commits it (CTRL.commit).
+// Refused, with a sticky error: an entry word or a commit while the queue is full
+// (err_overflow), a commit before every word was written (err_partial). The core's
+// err_o (a stalled command) sets err_stall.
+// Abort (CTRL.abort): the core is reset on the edge that takes the write (the step
+// pulses of the cycle before it are counted), the queue and the entry being written
+// are flushed, STATUS.aborted is set.
+`include "dda_params.vh"
+`include "dda_motion_regs.vh"
+
+module dda_motion #(
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..8)
+) (
+  input  wire                              clk_i,
+  input  wire                              rst_ni,      // synchronous, active low
+  // Wishbone B4 slave
+  input  wire                              wb_cyc_i,
+  input  wire                              wb_stb_i,
+  input  wire                              wb_we_i,
+  input  wire [`DDA_MOTION_ADDR_WIDTH-1:0] wb_adr_i,
+  input  wire [31:0]                       wb_dat_i,
+  input  wire [3:0]                        wb_sel_i,
+  output wire [31:0]                       wb_dat_o,
+  output wire                              wb_ack_o,
+  output wire                              wb_stall_o,
+  // iteration enable of the core (high: one iteration per clock)
+  input  wire                              ce_i,
+  // the axes
+  output wire                              step_x_o,
+  output wire                              step_y_o,
+  output wire                              dir_x_o,
+  output wire                              dir_y_o,
+  output wire                              busy_o,
+  output wire                              irq_o
+);
+
+  localparam integer Words = `DDA_MOTION_ENTRY_WORDS;
+  localparam integer Lanes = 2 * Words;
+  localparam integer LW    = `DDA_MOTION_LEVEL_WIDTH;
+  localparam [LW-1:0] Depth = LW'(1) << DepthLog2;
+
+  // ---- bus ----
+  reg         ack_q /* verilator public_flat_rd */;
+  reg  [31:0] dat_q /* verilator public_flat_rd */;
+  wire        req   = wb_cyc_i & wb_stb_i & ~ack_q;
+  wire        wr    = req & wb_we_i;
+  wire [`DDA_MOTION_ADDR_WIDTH-1:0] adr = {wb_adr_i[`DDA_MOTION_ADDR_WIDTH-1:2], 2'b00};
+  assign wb_ack_o   = ack_q;
+  assign wb_stall_o = ack_q;
+  assign wb_dat_o   = dat_q;
+  wire unused_bus = &{1'b0, wb_sel_i, wb_adr_i[1:0]};
+
+  wire wr_ctrl   = wr & (adr == `DDA_MOTION_CTRL_ADDR);
+  wire commit    = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_COMMIT_LSB];
+  wire abort     = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_ABORT_LSB];
+  wire clear     = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_CLEAR_LSB];
+  localparam [`DDA_MOTION_ADDR_WIDTH:0] EntryEnd = (`DDA_MOTION_ADDR_WIDTH+1)'(`DDA_MOTION_ENTRY_ADDR) + (`DDA_MOTION_ADDR_WIDTH+1)'(4 * Words);
+  wire in_entry  = adr >= `DDA_MOTION_ENTRY_ADDR && {1'b0, adr} < EntryEnd;
+  wire [`DDA_MOTION_ADDR_WIDTH-1:0] entry_off = adr - `DDA_MOTION_ENTRY_ADDR;
+  wire [4:0] word = entry_off[6:2];  // the window holds at most 32 words
+  wire unused_off = &{1'b0, entry_off[`DDA_MOTION_ADDR_WIDTH-1], entry_off[1:0]};
+
+  // ---- queue ----
+  reg  [DepthLog2-1:0] head_q  /* verilator public_flat_rd */;
+  reg  [DepthLog2-1:0] tail_q  /* verilator public_flat_rd */;
+  reg  [LW-1:0]        level_q /* verilator public_flat_rd */;
+  reg  [Words-1:0]     mask_q  /* verilator public_flat_rd */;  // words written since the last commit
+  reg                  primed_q /* verilator public_flat_rd */; // the RAM output holds the head entry
+  wire                 full  = level_q == Depth;
+  wire                 empty = level_q == {LW{1'b0}};
+  wire                 wr_entry  = wr & in_entry & ~abort;
+  wire                 entry_ok  = wr_entry & ~full;
+  wire                 commit_ok = commit & ~abort & ~full & (&mask_q);
+  wire                 err_overflow = (wr_entry | commit) & ~abort & full;
+  wire                 err_partial  = commit & ~abort & ~full & ~(&mask_q);
+
+  wire        core_ready, core_busy, core_done, core_err, core_iter;
+  wire        cmd_valid = primed_q & ~empty;
+  wire        take      = cmd_valid & core_ready & ~abort;  // the core loads the head entry
+  wire [DepthLog2-1:0] head_d = !rst_ni ? '0 : abort ? tail_q : take ? head_q + 1'b1 : head_q;
+  wire [LW-1:0]        level_d = level_q + {{(LW-1){1'b0}}, commit_ok} - {{(LW-1){1'b0}}, take};
+
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      head_q   <= '0;
+      tail_q   <= '0;
+      level_q  <= '0;
+      mask_q   <= '0;
+      primed_q <= 1'b0;
+    end else begin
+      primed_q <= 1'b1;
+      head_q   <= head_d;
+      if (abort) begin
+        level_q <= '0;
+        mask_q  <= '0;
+      end else begin
+        level_q <= level_d;
+        if (commit_ok) begin
+          tail_q <= tail_q + 1'b1;
+          mask_q <= '0;
+        end else if (entry_ok) begin
+          mask_q <= mask_q | (Words'(1) << word);
+        end
+      end
+    end
+  end
+
+  wire [16*Lanes-1:0] entry_q;
+  genvar l;
+  for (l = 0; l < Lanes; l = l + 1) begin : g_lane
+    reg [15:0] mem [0:(1 << DepthLog2)-1];
+    reg [15:0] rd_q;
+    always @(posedge clk_i) begin
+      if (entry_ok && word == l / 2) mem[tail_q] <= wb_dat_i[16*(l%2)+:16];
+      rd_q <= mem[head_d];
+    end
+    assign entry_q[16*l+:16] = rd_q;
+  end
+  wire unused_entry = &{1'b0, entry_q[16*Lanes-1:`DDA_CMD_WIDTH]};
+
+  // ---- the core ----
+  dda_core u_core (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni & ~abort),
+    .ce_i        (ce_i),
+    .cmd_valid_i (cmd_valid),
+    .cmd_ready_o (core_ready),
+    .cmd_i       (entry_q[`DDA_CMD_WIDTH-1:0]),
+    .step_x_o    (step_x_o),
+    .step_y_o    (step_y_o),
+    .dir_x_o     (dir_x_o),
+    .dir_y_o     (dir_y_o),
+    .busy_o      (core_busy),
+    .done_o      (core_done),
+    .err_o       (core_err),
+    .iter_o      (core_iter)
+  );
+  assign busy_o = core_busy;
+  wire unused_core = &{1'b0, core_iter};
+
+  // ---- status, interrupts, counters, positions ----
+  reg        err_q          /* verilator public_flat_rd */;
+  reg        err_overflow_q /* verilator public_flat_rd */;
+  reg        err_partial_q  /* verilator public_flat_rd */;
+  reg        err_stall_q    /* verilator public_flat_rd */;
+  reg        aborted_q      /* verilator public_flat_rd */;
+  reg [2:0]  irq_status_q   /* verilator public_flat_rd */;  // {low, err, done}
+  reg [2:0]  irq_enable_q   /* verilator public_flat_rd */;
+  reg [LW-1:0] irq_level_q  /* verilator public_flat_rd */;
+  reg [31:0] done_count_q   /* verilator public_flat_rd */;
+  reg [31:0] err_count_q    /* verilator public_flat_rd */;
+  reg [31:0] pos_x_q        /* verilator public_flat_rd */;
+  reg [31:0] pos_y_q        /* verilator public_flat_rd */;
+
+  wire err_set = err_overflow | err_partial | core_err;
+  wire low_set = take & (level_d < irq_level_q);
+  wire [2:0] irq_set = {low_set, err_set, core_done};
+  // The steps of the cycle before the edge (the core's registered outputs): +1, -1 or 0.
+  wire [31:0] dx = step_x_o ? (dir_x_o ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  wire [31:0] dy = step_y_o ? (dir_y_o ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  wire wr_pos_x = wr & (adr == `DDA_MOTION_POS_X_ADDR);
+  wire wr_pos_y = wr & (adr == `DDA_MOTION_POS_Y_ADDR);
+
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      err_q          <= 1'b0;
+      err_overflow_q <= 1'b0;
+      err_partial_q  <= 1'b0;
+      err_stall_q    <= 1'b0;
+      aborted_q      <= 1'b0;
+      irq_status_q   <= '0;
+      irq_enable_q   <= '0;
+      irq_level_q    <= '0;
+      done_count_q   <= '0;
+      err_count_q    <= '0;
+      pos_x_q        <= '0;
+      pos_y_q        <= '0;
+    end else begin
+      // Sticky bits: a cause on the edge of a clear stays set.
+      err_q          <= (err_q & ~clear) | err_set;
+      err_overflow_q <= (err_overflow_q & ~clear) | err_overflow;
+      err_partial_q  <= (err_partial_q & ~clear) | err_partial;
+      err_stall_q    <= (err_stall_q & ~clear) | core_err;
+      aborted_q      <= (aborted_q & ~clear) | abort;
+      irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wb_dat_i[2:0] : 3'b000))
+                        | irq_set;
+      if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wb_dat_i[2:0];
+      if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wb_dat_i[LW-1:0];
+      done_count_q <= done_count_q + {31'd0, core_done};
+      err_count_q  <= err_count_q + {31'd0, core_err};
+      // A preset is the position before the steps of the same edge: none is lost.
+      pos_x_q <= (wr_pos_x ? wb_dat_i : pos_x_q) + dx;
+      pos_y_q <= (wr_pos_y ? wb_dat_i : pos_y_q) + dy;
+    end
+  end
+  assign irq_o = |(irq_status_q & irq_enable_q);
+
+  // ---- read data ----
+  reg [31:0] rd;
+  always @(*) begin
+    rd = 32'd0;
+    case (adr)
+      `DDA_MOTION_ID_ADDR:      rd = `DDA_MOTION_ID_VALUE;
+      `DDA_MOTION_VERSION_ADDR: rd = `DDA_MOTION_VERSION_VALUE;
+      `DDA_MOTION_CONFIG_ADDR: begin
+        rd[`DDA_MOTION_CONFIG_ENTRY_WORDS_LSB+:`DDA_MOTION_CONFIG_ENTRY_WORDS_WIDTH] = `DDA_MOTION_CONFIG_ENTRY_WORDS_WIDTH'(Words);
+        rd[`DDA_MOTION_CONFIG_DEPTH_LOG2_LSB+:`DDA_MOTION_CONFIG_DEPTH_LOG2_WIDTH]   = `DDA_MOTION_CONFIG_DEPTH_LOG2_WIDTH'(DepthLog2);
+        rd[`DDA_MOTION_CONFIG_ACC_WIDTH_LSB+:`DDA_MOTION_CONFIG_ACC_WIDTH_WIDTH]     = `DDA_ACC_WIDTH;
+        rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
+      end
+      `DDA_MOTION_STATUS_ADDR: begin
+        rd[`DDA_MOTION_STATUS_BUSY_LSB]         = core_busy;
+        rd[`DDA_MOTION_STATUS_EMPTY_LSB]        = empty;
+        rd[`DDA_MOTION_STATUS_FULL_LSB]         = full;
+        rd[`DDA_MOTION_STATUS_ERR_LSB]          = err_q;
+        rd[`DDA_MOTION_STATUS_ERR_OVERFLOW_LSB] = err_overflow_q;
+        rd[`DDA_MOTION_STATUS_ERR_PARTIAL_LSB]  = err_partial_q;
+        rd[`DDA_MOTION_STATUS_ERR_STALL_LSB]    = err_stall_q;
+        rd[`DDA_MOTION_STATUS_ABORTED_LSB]      = aborted_q;
+        rd[`DDA_MOTION_STATUS_LEVEL_LSB+:`DDA_MOTION_STATUS_LEVEL_WIDTH] = level_q;
+      end
+      `DDA_MOTION_IRQ_STATUS_ADDR: rd[2:0] = irq_status_q;
+      `DDA_MOTION_IRQ_ENABLE_ADDR: rd[2:0] = irq_enable_q;
+      `DDA_MOTION_IRQ_LEVEL_ADDR:  rd[LW-1:0] = irq_level_q;
+      `DDA_MOTION_DONE_COUNT_ADDR: rd = done_count_q;
+      `DDA_MOTION_ERR_COUNT_ADDR:  rd = err_count_q;
+      `DDA_MOTION_POS_X_ADDR:      rd = pos_x_q;
+      `DDA_MOTION_POS_Y_ADDR:      rd = pos_y_q;
+      `DDA_MOTION_ENTRY_MASK_ADDR: rd[Words-1:0] = mask_q;
+      default: rd = 32'd0;
+    endcase
+  end
+
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      ack_q <= 1'b0;
+      dat_q <= 32'd0;
+    end else begin
+      ack_q <= req;
+      if (req && !wb_we_i) dat_q <= rd;
+    end
+  end
+
+endmodule

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block (rtl/dda_motion.v) on a Wishbone bus: the register map is generated
+// from its one definition and cannot drift; the RTL runs in lockstep with the block's
+// reference model (every port, block register and core register after every edge)
+// while a bus master queues the golden planner's commands; the position counters end
+// on the arcs' end points.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "dda/golden.hpp"
+#include "dda/motion_map.hpp"
+#include "dda_random.hpp"
+#include "motion_harness.hpp"
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+std::string slurp(const std::string& rel) {
+  std::ifstream f(std::string(DDA_SOURCE_DIR) + "/" + rel, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::uint32_t addr(std::string_view name) {
+  for (const auto& r : kRegisters) {
+    if (r.name == name) return r.offset;
+  }
+  FAIL("no register " << name);
+  return 0;
+}
+std::uint32_t field(std::string_view reg, std::string_view name, std::uint32_t value) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == name) return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
+  }
+  FAIL("no field " << reg << "." << name);
+  return 0;
+}
+std::uint32_t bit(std::string_view reg, std::string_view name) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == name) return 1u << f.lsb;
+  }
+  FAIL("no field " << reg << "." << name);
+  return 0;
+}
+
+// A firmware-like driver: queues the pieces of arcs, polling the level.
+struct Driver {
+  MotionHarness& h;
+  WishboneMaster& m;
+  std::mt19937_64& rng;
+  // Writes an entry's words in a random order and commits it, once the queue has room.
+  void queue(const Command& c) {
+    while (field("STATUS", "full", m.read(addr("STATUS")))) m.idle(int(rng() % 8));
+    std::vector<std::uint32_t> w = entry_words(c);
+    std::vector<std::size_t> order(w.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    for (const std::size_t k : order) m.write(addr("ENTRY") + 4 * std::uint32_t(k), w[k]);
+    m.write(addr("CTRL"), bit("CTRL", "commit"));
+  }
+  // Waits until the queue is empty and the core idle.
+  void drain() {
+    for (int i = 0; i < 1000000; ++i) {
+      const std::uint32_t st = m.read(addr("STATUS"));
+      if (field("STATUS", "empty", st) && !field("STATUS", "busy", st)) return;
+      m.idle(int(rng() % 16));
+    }
+    FAIL("the queue did not drain");
+  }
+};
+
+}  // namespace
+
+TEST_CASE("motion_map: the checked-in files are generated from the register map", "[motion][default-widths]") {
+  CHECK_NOTHROW(check());
+  CHECK(slurp("rtl/dda_motion_regs.vh") == verilog_header());
+  CHECK(slurp("fw/dda_motion_regs.h") == c_header());
+  CHECK(slurp("docs/design.md").find(markdown()) != std::string::npos);
+}
+
+TEST_CASE("motion_map: a changed field drifts from every checked-in file, an overlap is refused",
+          "[motion][default-widths]") {
+  Map m = map();
+  for (auto& f : m.fields) {
+    if (f.reg == "STATUS" && f.name == "err") f.lsb = 8;  // moved
+  }
+  CHECK_NOTHROW(check(m));
+  CHECK(slurp("rtl/dda_motion_regs.vh") != verilog_header(m));
+  CHECK(slurp("fw/dda_motion_regs.h") != c_header(m));
+  CHECK(slurp("docs/design.md").find(markdown(m)) == std::string::npos);
+  Map o = map();
+  for (auto& f : o.fields) {
+    if (f.reg == "STATUS" && f.name == "err") f.lsb = 2;  // onto STATUS.full
+  }
+  CHECK_THROWS_WITH(check(o), Catch::Contains("STATUS.full and STATUS.err overlap"));
+  Map r = map();
+  r.regs[3].offset = r.regs[2].offset;
+  CHECK_THROWS_WITH(check(r), Catch::Contains("overlap"));
+}
+
+TEST_CASE("motion: identification, configuration and register access on classic and pipelined cycles", "[motion]") {
+  for (const bool pipelined : {false, true}) {
+    INFO((pipelined ? "pipelined" : "classic"));
+    MotionHarness h;
+    WishboneMaster m(h, 5, pipelined, 30);
+    h.set_reset(false);
+    m.idle(2);
+    h.set_reset(true);
+    CHECK(m.read(addr("ID")) == kId);
+    CHECK(field("VERSION", "major", m.read(addr("VERSION"))) == std::uint32_t(kVersionMajor));
+    const std::uint32_t cfg = m.read(addr("CONFIG"));
+    CHECK(field("CONFIG", "entry_words", cfg) == std::uint32_t(kEntryWords));
+    CHECK(field("CONFIG", "depth_log2", cfg) == std::uint32_t(kHarnessDepthLog2));
+    CHECK(field("CONFIG", "acc_width", cfg) == std::uint32_t(hw::kAccWidth));
+    m.write(addr("POS_X"), 0xFFFFFFF6u);
+    CHECK(m.read(addr("POS_X")) == 0xFFFFFFF6u);
+    m.write(addr("IRQ_ENABLE"), 0xFFFFFFFFu);
+    CHECK(m.read(addr("IRQ_ENABLE")) == 7u);
+    // A commit of nothing is a partial entry: refused, sticky, and an interrupt.
+    m.write(addr("CTRL"), bit("CTRL", "commit"));
+    const std::uint32_t st = m.read(addr("STATUS"));
+    CHECK(field("STATUS", "err", st) == 1);
+    CHECK(field("STATUS", "err_partial", st) == 1);
+    CHECK(field("STATUS", "level", st) == 0);
+    CHECK(h.outputs().irq);
+    m.write(addr("IRQ_STATUS"), 0xFFFFFFFFu);
+    m.write(addr("CTRL"), bit("CTRL", "clear"));
+    CHECK(field("STATUS", "err", m.read(addr("STATUS"))) == 0);
+    CHECK_FALSE(h.outputs().irq);
+  }
+}
+
+TEST_CASE("motion: the paper's example through the queue ends on its end point", "[motion]") {
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.preload = Preload::Zero;
+  const Plan p = plan_arc(s);
+  MotionHarness h;
+  std::mt19937_64 rng(1);
+  WishboneMaster m(h, 1, false, 0);
+  Driver d{h, m, rng};
+  m.write(addr("POS_X"), std::uint32_t(p.from.x));
+  m.write(addr("POS_Y"), std::uint32_t(p.from.y));
+  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  d.drain();
+  CHECK(std::int32_t(m.read(addr("POS_X"))) == p.to.x);
+  CHECK(std::int32_t(m.read(addr("POS_Y"))) == p.to.y);
+  CHECK(m.read(addr("DONE_COUNT")) == p.pieces.size());
+  CHECK(m.read(addr("ERR_COUNT")) == 0);
+}
+
+TEST_CASE("motion: random arcs queued while the block runs, in lockstep with the reference model", "[motion]") {
+  const std::uint64_t seed = test_seed(61);
+  INFO("seed " << seed << " (DDA_SEED reruns it)");
+  std::mt19937_64 rng(seed);
+  RandomArcs gen(seed, 300, 4, ArcKind::Program);
+  for (const bool pipelined : {false, true}) {
+    MotionHarness h;
+    WishboneMaster m(h, seed + pipelined, pipelined, 25);
+    // ce_i low a tenth of the cycles.
+    m.each_cycle = [&] { h.set_ce(rng() % 10 != 0); };
+    Driver d{h, m, rng};
+    std::uint64_t pieces = 0;
+    for (int arcs = 0; arcs < 12;) {
+      const auto plan = gen.next();
+      if (!plan) continue;
+      ++arcs;
+      INFO("arc " << gen.drawn_options());
+      // The position counters are preset to the arc's start, then count its steps.
+      d.drain();
+      m.write(addr("POS_X"), std::uint32_t(plan->from.x));
+      m.write(addr("POS_Y"), std::uint32_t(plan->from.y));
+      for (const auto& piece : plan->pieces) d.queue(piece.cmd);
+      pieces += plan->pieces.size();
+      d.drain();
+      CHECK(std::int32_t(m.read(addr("POS_X"))) == plan->to.x);
+      CHECK(std::int32_t(m.read(addr("POS_Y"))) == plan->to.y);
+    }
+    CHECK(m.read(addr("DONE_COUNT")) == pieces);
+  }
+}
+
+TEST_CASE("motion: abort, overflow, partial commit and reset in the middle of a queue", "[motion]") {
+  const std::uint64_t seed = test_seed(67);
+  INFO("seed " << seed);
+  std::mt19937_64 rng(seed);
+  RandomArcs gen(seed, 500, 4, ArcKind::Whole);
+  MotionHarness h;
+  WishboneMaster m(h, seed, true, 10);
+  for (int round = 0; round < 6; ++round) {
+    // Fill the queue beyond its depth with ce_i low (the core takes one command and
+    // waits): the extra commits overflow.
+    h.set_ce(false);
+    std::vector<Command> cmds;
+    while (cmds.size() < (std::size_t{1} << kHarnessDepthLog2) + 3) {
+      if (auto p = gen.next()) {
+        for (const auto& piece : p->pieces) cmds.push_back(piece.cmd);
+      }
+    }
+    for (const auto& c : cmds) {
+      const auto w = entry_words(c);
+      for (std::size_t k = 0; k < w.size(); ++k) m.write(addr("ENTRY") + 4 * std::uint32_t(k), w[k]);
+      m.write(addr("CTRL"), bit("CTRL", "commit"));
+    }
+    std::uint32_t st = m.read(addr("STATUS"));
+    CHECK(field("STATUS", "err_overflow", st) == 1);
+    CHECK(field("STATUS", "full", st) == 1);
+    h.set_ce(true);
+    // A partial entry, then an abort in the middle of an arc (or a reset).
+    m.write(addr("ENTRY"), 1);
+    m.write(addr("CTRL"), bit("CTRL", "commit"));
+    m.idle(int(rng() % 200));
+    const std::int32_t x0 = std::int32_t(m.read(addr("POS_X")));
+    if (round % 3 == 2) {
+      h.set_reset(false);
+      m.idle(1);
+      h.set_reset(true);
+      st = m.read(addr("STATUS"));
+      CHECK(st == bit("STATUS", "empty"));
+      continue;
+    }
+    m.write(addr("CTRL"), bit("CTRL", "abort"));
+    st = m.read(addr("STATUS"));
+    CHECK(field("STATUS", "aborted", st) == 1);
+    CHECK(field("STATUS", "level", st) == 0);
+    CHECK(field("STATUS", "busy", st) == 0);
+    CHECK(field("ENTRY_MASK", "words", m.read(addr("ENTRY_MASK"))) == 0);
+    // The position moved by at most the steps of the cycles since it was read, and
+    // stays where the abort left it.
+    const std::int32_t x1 = std::int32_t(m.read(addr("POS_X")));
+    CHECK(std::abs(x1 - x0) <= 64);
+    m.idle(50);
+    CHECK(std::int32_t(m.read(addr("POS_X"))) == x1);
+    m.write(addr("CTRL"), bit("CTRL", "clear"));
+    m.write(addr("IRQ_STATUS"), 7);
+  }
+}
