@@ -292,6 +292,12 @@ int main(int argc, char** argv) {
   vectors->add_option("--then", ve_then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
   vectors->add_option("--seed", ve_seed, "seed of the ce pattern (default 1)");
   vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
+  bool ve_bus = false, ve_pipelined = false;
+  int ve_abort = 0;
+  vectors->add_flag("--bus", ve_bus, "the motion block's set: Wishbone cycles in, steps and positions out");
+  vectors->add_flag("--pipelined", ve_pipelined, "with --bus: pipelined Wishbone cycles (default classic)");
+  vectors->add_option("--abort-after", ve_abort, "with --bus: abort N cycles after the last commit")
+      ->check(CLI::Range(1, 100000000));
   auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
   add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
@@ -303,7 +309,7 @@ int main(int argc, char** argv) {
                   "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
                   "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
                   "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
-                  "rtl/dda_motion_regs.vh)");
+                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
   gen->add_option("--acc-width", gp_acc,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
@@ -387,7 +393,15 @@ int main(int argc, char** argv) {
         }
         plans.push_back(make_plan(o));
       }
-      vec::write_vector_set(plans, vo);
+      if (ve_bus) {
+        vec::BusOptions bo;
+        bo.pipelined = ve_pipelined;
+        bo.abort_after = ve_abort;
+        vec::write_bus_vector_set(plans, vo, bo);
+      } else {
+        if (ve_pipelined || ve_abort) throw InputError("--pipelined and --abort-after go with --bus only");
+        vec::write_vector_set(plans, vo);
+      }
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
       if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
@@ -415,12 +429,15 @@ int main(int argc, char** argv) {
                                         {"registers", 6},
                                         {"motion-markdown", 7},
                                         {"motion-c", 8},
-                                        {"motion-verilog", 9}});
+                                        {"motion-verilog", 9},
+                                        {"motion-vector-fields", 10}});
       if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
         throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
       }
       Output out(gp_out);
-      if (kind >= 7) {  // the motion block's register map
+      if (kind == 10) {  // the bus bench's field table
+        out.stream() << vec::bus_verilog_fields();
+      } else if (kind >= 7) {  // the motion block's register map
         out.stream() << (kind == 7 ? motion::markdown() : kind == 8 ? motion::c_header() : motion::verilog_header());
       } else if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
         out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",

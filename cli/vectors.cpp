@@ -291,13 +291,23 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
   m["layout"] = {
       {"cmd", cmd_layout}, {"cycle_in", layout(in_f)}, {"cycle_exp", layout(exp_f)}, {"iteration", layout(it_f)}};
 
+  write_set(opt.out_dir, {{"counts.hex", fmt::format("{:x}\n{:x}\n", cmds.size(), ncycles)},
+                          {"cmds.hex", cmds_hex.str()},
+                          {"cycle_in.hex", in_hex.str()},
+                          {"cycle_exp.hex", out_hex.str()},
+                          {"cycles.csv", cyc_csv.str()},
+                          {"iter.hex", it_hex.str()},
+                          {"iterations.csv", it_csv.str()},
+                          {"manifest.json", m.dump(1) + "\n"}});
+}
+
+void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files) {
   // Atomic: everything into a temporary directory next to the target, then rename.
-  const fs::path dir(opt.out_dir);
+  const fs::path dir(out_dir);
   std::error_code ec;
   if (fs::exists(dir, ec)) {
     if (!fs::is_directory(dir) || (!fs::is_empty(dir) && !fs::exists(dir / "manifest.json"))) {
-      throw InputError("out-dir = '" + opt.out_dir +
-                       "' is invalid: it exists and is not a vector set (no manifest.json)");
+      throw InputError("out-dir = '" + out_dir + "' is invalid: it exists and is not a vector set (no manifest.json)");
     }
   }
   const fs::path tmp = dir.parent_path() / (dir.filename().string() + ".tmp." + std::to_string(::getpid()));
@@ -306,14 +316,7 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
     throw GuardError("vectors: cannot create " + tmp.string() + ": " + ec.message());
   }
   try {
-    write_text(tmp / "counts.hex", fmt::format("{:x}\n{:x}\n", cmds.size(), ncycles));
-    write_text(tmp / "cmds.hex", cmds_hex.str());
-    write_text(tmp / "cycle_in.hex", in_hex.str());
-    write_text(tmp / "cycle_exp.hex", out_hex.str());
-    write_text(tmp / "cycles.csv", cyc_csv.str());
-    write_text(tmp / "iter.hex", it_hex.str());
-    write_text(tmp / "iterations.csv", it_csv.str());
-    write_text(tmp / "manifest.json", m.dump(1) + "\n");
+    for (const auto& [name, text] : files) write_text(tmp / name, text);
     if (fs::exists(dir)) {
       const fs::path old = dir.parent_path() / (dir.filename().string() + ".old." + std::to_string(::getpid()));
       fs::rename(dir, old);

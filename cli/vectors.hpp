@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/golden.hpp"
@@ -21,6 +22,20 @@ struct Options {
 // Writes the vector set of `plans` run back to back into opt.out_dir (atomically: a
 // temporary directory renamed into place). docs/vectors.md describes the files.
 void write_vector_set(const std::vector<Plan>& plans, const Options& opt);
+
+// dda vectors --bus: the motion block's per-cycle set (cli/bus_vectors.cpp).
+struct BusOptions {
+  bool pipelined = false;  // Wishbone cycles: classic or pipelined
+  int idle_percent = 20;   // chance of an idle cycle before each request (seeded)
+  int abort_after = 0;     // > 0: abort that many cycles after the last commit
+};
+void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);
+// The bus bench's field table (tb/hdl/dda_bus_vec_fields.vh).
+std::string bus_verilog_fields();
+
+// Writes the files (name, text) of a vector set into out_dir atomically: a temporary
+// directory renamed into place; an existing out_dir must be a vector set (manifest.json).
+void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files);
 
 // The bench's field table (tb/hdl/dda_vec_fields.vh), generated from the register table.
 std::string verilog_fields(const hw::SignalTable& t = hw::signal_table());

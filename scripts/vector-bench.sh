@@ -3,12 +3,14 @@
 # Runs the self-checking bench tb/hdl/dda_vec_tb.v on a vector set written by
 # `dda vectors`, under Icarus (iverilog -g2012 + vvp) and under Verilator (--binary).
 #   usage: scripts/vector-bench.sh [--corrupt CYCLE FIELD] [--rtl RTLDIR --expect TEXT]
-#                                  [--sim icarus|verilator|both] [--impl small|fast] [--ice40] DIR
+#                                  [--sim icarus|verilator|both] [--impl small|fast] [--ice40] [--bus] DIR
 # --corrupt flips the lowest bit of FIELD in the expected word of CYCLE (in a copy of the
 # set) and then passes only if every simulator fails with exactly that MISMATCH.
 # --rtl runs a copy of the RTL (the sources of rtl/dda_core.f found in RTLDIR) and passes
 # only if every simulator fails with a line containing TEXT (an assertion's message).
 # --impl fast builds the core's fast implementation (-DDDA_IMPL_FAST; default small).
+# --bus runs a bus-level set (`dda vectors --bus`) through tb/hdl/dda_bus_tb.v on the
+# motion block (rtl/dda_motion.f) instead.
 # --ice40 builds the RTL as scripts/synth synthesizes it (-DDDA_ICE40: the small
 # implementation's hand-placed SB_LUT4 and SB_CARRY cells, with Yosys' models of them
 # from scripts/ice40-cells.sh).
@@ -19,7 +21,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 iverilog=${IVERILOG:-iverilog} vvp=${VVP:-vvp} verilator=${VERILATOR:-verilator}
-corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect="" impl=small ice40=0
+corrupt_cycle="" corrupt_field="" sims="icarus verilator" rtl_dir=$root/rtl expect="" impl=small ice40=0 bus=0
 while [ $# -gt 1 ]; do
   case "$1" in
     --corrupt) corrupt_cycle=$2 corrupt_field=$3; shift 3 ;;
@@ -28,6 +30,7 @@ while [ $# -gt 1 ]; do
     --sim) sims=$2; [ "$sims" = both ] && sims="icarus verilator"; shift 2 ;;
     --impl) impl=$2; shift 2 ;;
     --ice40) ice40=1; shift ;;
+    --bus) bus=1; shift ;;
     *) break ;;
   esac
 done
@@ -43,15 +46,17 @@ out="$build/vec_bench"
 [ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
 [ "$impl" = small ] || out="${out}_$impl"
 [ "$ice40" = 0 ] || out="${out}_ice40"
+[ "$bus" = 0 ] || out="${out}_bus"
 mkdir -p "$out"
 # The RTL comes from its file list, rtl/dda_core.f, with DDA_RTL naming the folder
 # (a mutated copy is the same list pointed at another folder).
 export DDA_RTL=$rtl_dir
 vl_extra=()  # a mutated copy may leave signals unused: its lint warnings do not stop the build
 [ "$rtl_dir" = "$root/rtl" ] || vl_extra=(-Wno-fatal)
-flist=$root/rtl/dda_core.f
+flist=$root/rtl/dda_core.f tb_top=dda_vec_tb
+[ "$bus" = 0 ] || { flist=$root/rtl/dda_motion.f; tb_top=dda_bus_tb; }
 mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$flist")
-srcs=("$root/tb/hdl/dda_vec_tb.v")
+srcs=("$root/tb/hdl/$tb_top.v")
 if [ "$ice40" = 1 ]; then
   defs+=(-DDDA_ICE40)
   [ -e "$out/ice40_cells.v" ] || "$root/scripts/ice40-cells.sh" "$out/ice40_cells.v"
@@ -61,7 +66,8 @@ incs=(-I"$rtl_dir" -I"$root/rtl" -I"$root/tb/hdl")
 newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f" -nt "$t" ] && return 0; done; return 1; }
 deps=("${srcs[@]}" "$flist")
 for f in "${rtl_srcs[@]}"; do deps+=("$rtl_dir/${f#"$root/rtl/"}"); done
-deps+=("$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh")
+deps+=("$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh"
+       "$root/rtl/dda_motion_regs.vh" "$root/tb/hdl/dda_bus_vec_fields.vh")
 
 if [ -n "$corrupt_cycle" ]; then
   work=$(mktemp -d -t dda-vec-corrupt.XXXXXX)
@@ -88,13 +94,13 @@ status=0
 for sim in $sims; do
   case "$sim" in
     icarus)
-      bin="$out/dda_vec_tb.vvp"
+      bin="$out/$tb_top.vvp"
       if newer "$bin" "${deps[@]}"; then "$iverilog" -g2012 "${defs[@]}" "${incs[@]}" -o "$bin" "${srcs[@]}" -c "$flist"; fi
       run=("$vvp" -n "$bin" +vectors="$set_dir") ;;
     verilator)
-      bin="$out/obj/dda_vec_tb"
+      bin="$out/obj/$tb_top"
       if newer "$bin" "${deps[@]}"; then
-        "$verilator" --binary --assert -Wall "${defs[@]}" "${vl_extra[@]}" "${incs[@]}" --top-module dda_vec_tb -Mdir "$out/obj" -o dda_vec_tb \
+        "$verilator" --binary --assert -Wall "${defs[@]}" "${vl_extra[@]}" "${incs[@]}" --top-module "$tb_top" -Mdir "$out/obj" -o "$tb_top" \
           "${srcs[@]}" -f "$flist" >"$out/verilator-build.log" 2>&1 || { cat "$out/verilator-build.log" >&2; exit 1; }
       fi
       run=("$bin" +vectors="$set_dir") ;;
@@ -112,8 +118,8 @@ for sim in $sims; do
       echo "$log" | tail -5 >&2; status=1
     fi
   elif [ -z "$corrupt_cycle" ]; then
-    if [ $rc -eq 0 ] && echo "$log" | grep -q "dda_vec_tb: PASS"; then
-      echo "$sim: $(echo "$log" | grep "dda_vec_tb: PASS")"
+    if [ $rc -eq 0 ] && echo "$log" | grep -q "$tb_top: PASS"; then
+      echo "$sim: $(echo "$log" | grep "$tb_top: PASS")"
     else
       echo "$sim: FAIL (exit $rc):" >&2; echo "$log" | tail -5 >&2; status=1
     fi

@@ -108,3 +108,32 @@ set_tests_properties(rtl.assertions_fire PROPERTIES FIXTURES_REQUIRED vec_paper
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
 set_tests_properties(rtl.fast.assertions_fire PROPERTIES FIXTURES_REQUIRED vec_paper
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
+
+# Bus-level sets of the motion block (`dda vectors --bus`, label motion): the paper's
+# example; the lathe example with ce_i high 80% of the cycles; three arcs queued while
+# the block runs, on pipelined cycles; an abort in the middle of an arc. Each through
+# tb/hdl/dda_bus_tb.v on Icarus and Verilator; a corrupted expected value fails both.
+set(_dda_bvec ${CMAKE_CURRENT_BINARY_DIR}/bus_vec_sets)
+file(MAKE_DIRECTORY ${_dda_bvec})
+function(dda_bus_vec_set name)
+  add_test(NAME vectors.bus.gen_${name} COMMAND $<TARGET_FILE:dda> vectors --bus --out-dir ${name} ${ARGN}
+           WORKING_DIRECTORY ${_dda_bvec})
+  set_tests_properties(vectors.bus.gen_${name} PROPERTIES FIXTURES_SETUP bvec_${name} LABELS "rtl;motion")
+  dda_rtl_test(vectors.bus.${name} NEEDS IVERILOG VVP VERILATOR
+               COMMAND ${_dda_scripts}/vector-bench.sh --bus ${_dda_bvec}/${name})
+  set_tests_properties(vectors.bus.${name} PROPERTIES FIXTURES_REQUIRED bvec_${name} LABELS "rtl;motion"
+                       ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_bus)
+endfunction()
+dda_bus_vec_set(paper --a 10 --b 6 --bits 4 --preload zero)
+dda_bus_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
+dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-percent 90 --seed 7
+                --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
+                --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
+dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
+dda_rtl_test(vectors.bus.detects_corruption NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 60 pos_x_q ${_dda_bvec}/paper)
+set_tests_properties(vectors.bus.detects_corruption PROPERTIES FIXTURES_REQUIRED bvec_paper LABELS "rtl;motion"
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_bus)
+add_test(NAME vectors.bus.fields_in_sync
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind motion-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_bus_vec_fields.vh")
+set_tests_properties(vectors.bus.fields_in_sync PROPERTIES LABELS motion)

@@ -28,53 +28,9 @@ std::string slurp(const std::string& rel) {
   return s.str();
 }
 
-std::uint32_t addr(std::string_view name) {
-  for (const auto& r : kRegisters) {
-    if (r.name == name) return r.offset;
-  }
-  FAIL("no register " << name);
-  return 0;
-}
-std::uint32_t field(std::string_view reg, std::string_view name, std::uint32_t value) {
-  for (const auto& f : kFields) {
-    if (f.reg == reg && f.name == name) return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
-  }
-  FAIL("no field " << reg << "." << name);
-  return 0;
-}
-std::uint32_t bit(std::string_view reg, std::string_view name) {
-  for (const auto& f : kFields) {
-    if (f.reg == reg && f.name == name) return 1u << f.lsb;
-  }
-  FAIL("no field " << reg << "." << name);
-  return 0;
-}
-
-// A firmware-like driver: queues the pieces of arcs, polling the level.
-struct Driver {
-  MotionHarness& h;
-  WishboneMaster& m;
-  std::mt19937_64& rng;
-  // Writes an entry's words in a random order and commits it, once the queue has room.
-  void queue(const Command& c) {
-    while (field("STATUS", "full", m.read(addr("STATUS")))) m.idle(int(rng() % 8));
-    std::vector<std::uint32_t> w = entry_words(c);
-    std::vector<std::size_t> order(w.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::shuffle(order.begin(), order.end(), rng);
-    for (const std::size_t k : order) m.write(addr("ENTRY") + 4 * std::uint32_t(k), w[k]);
-    m.write(addr("CTRL"), bit("CTRL", "commit"));
-  }
-  // Waits until the queue is empty and the core idle.
-  void drain() {
-    for (int i = 0; i < 1000000; ++i) {
-      const std::uint32_t st = m.read(addr("STATUS"));
-      if (field("STATUS", "empty", st) && !field("STATUS", "busy", st)) return;
-      m.idle(int(rng() % 16));
-    }
-    FAIL("the queue did not drain");
-  }
-};
+std::uint32_t addr(std::string_view name) { return reg_offset(name); }
+std::uint32_t field(std::string_view reg, std::string_view name, std::uint32_t v) { return get_field(reg, name, v); }
+std::uint32_t bit(std::string_view reg, std::string_view name) { return field_bit(reg, name); }
 
 }  // namespace
 
@@ -145,9 +101,8 @@ TEST_CASE("motion: the paper's example through the queue ends on its end point",
   s.preload = Preload::Zero;
   const Plan p = plan_arc(s);
   MotionHarness h;
-  std::mt19937_64 rng(1);
   WishboneMaster m(h, 1, false, 0);
-  Driver d{h, m, rng};
+  MotionDriver d(m, 1);
   m.write(addr("POS_X"), std::uint32_t(p.from.x));
   m.write(addr("POS_Y"), std::uint32_t(p.from.y));
   for (const auto& piece : p.pieces) d.queue(piece.cmd);
@@ -168,7 +123,7 @@ TEST_CASE("motion: random arcs queued while the block runs, in lockstep with the
     WishboneMaster m(h, seed + pipelined, pipelined, 25);
     // ce_i low a tenth of the cycles.
     m.each_cycle = [&] { h.set_ce(rng() % 10 != 0); };
-    Driver d{h, m, rng};
+    MotionDriver d(m, seed);
     std::uint64_t pieces = 0;
     for (int arcs = 0; arcs < 12;) {
       const auto plan = gen.next();

@@ -149,40 +149,4 @@ void MotionHarness::tick(const BusIn& bus) {
   }
 }
 
-std::uint32_t WishboneMaster::run(const Transfer& t) {
-  std::uniform_int_distribution<int> pct(0, 99);
-  while (pct(rng_) < idle_percent_) idle(1);
-  bool taken = false;
-  for (int guard = 0; guard < 64; ++guard) {
-    if (each_cycle) each_cycle();
-    BusIn b;
-    b.cyc = true;
-    b.stb = pipelined_ ? !taken : true;  // classic: stb held until the ack
-    b.we = t.we;
-    b.adr = t.adr;
-    b.dat = t.dat;
-    const bool stall = h_.outputs().stall;
-    h_.tick(b);
-    if (b.stb && !stall) taken = true;
-    if (taken && h_.outputs().ack) {
-      const std::uint32_t data = t.we ? 0 : h_.outputs().dat;
-      // Classic: the request stays on the bus through the ack cycle (the block stalls
-      // it, so it is not taken twice). Pipelined: the next request may start now.
-      if (!pipelined_) {
-        if (each_cycle) each_cycle();
-        h_.tick(b);
-      }
-      return data;
-    }
-  }
-  throw GuardError("Wishbone master: no ack within 64 cycles");
-}
-
-void WishboneMaster::idle(int cycles) {
-  for (int i = 0; i < cycles; ++i) {
-    if (each_cycle) each_cycle();
-    h_.tick(BusIn{});
-  }
-}
-
 }  // namespace dda::motion

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: Apache-2.0
+// Driving the motion block over its Wishbone bus, the way firmware does: a bus master
+// (classic or pipelined cycles, random idle cycles) and a driver that queues commands,
+// waits for the queue to drain and aborts. They run on any BusTarget: the reference
+// model alone (ModelTarget: `dda vectors --bus` records its cycles), or the RTL beside
+// the model (tb/engines/motion_harness.hpp).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <random>
+
+#include "dda/motion_model.hpp"
+
+namespace dda::motion {
+
+class BusTarget {
+ public:
+  virtual ~BusTarget() = default;
+  virtual void set_reset(bool rst_n) = 0;
+  virtual void set_ce(bool ce) = 0;
+  // One rising edge with these bus inputs.
+  virtual void tick(const BusIn& bus) = 0;
+  // The outputs after the last edge.
+  virtual const BlockOutputs& outputs() const = 0;
+};
+
+// The reference model alone; `on_edge` sees every edge's inputs and the state after it.
+class ModelTarget : public BusTarget {
+ public:
+  explicit ModelTarget(int depth_log2 = kMaxDepthLog2) : model_(depth_log2) {}
+  void set_reset(bool rst_n) override { rst_n_ = rst_n; }
+  void set_ce(bool ce) override { ce_ = ce; }
+  void tick(const BusIn& bus) override;
+  const BlockOutputs& outputs() const override { return out_; }
+  const MotionModel& model() const { return model_; }
+  std::function<void(const BlockInputs&, const MotionModel&)> on_edge;
+
+ private:
+  MotionModel model_;
+  BlockOutputs out_;
+  bool rst_n_ = true, ce_ = true;
+};
+
+// A Wishbone B4 master: one transfer at a time (the block answers one request every
+// other cycle), classic (stb held through the ack cycle) or pipelined (stb dropped once
+// the request is taken), with random idle cycles before each request.
+struct Transfer {
+  bool we = false;
+  std::uint32_t adr = 0, dat = 0;
+};
+class WishboneMaster {
+ public:
+  WishboneMaster(BusTarget& t, std::uint64_t seed, bool pipelined, int idle_percent)
+      : t_(t), rng_(seed), pipelined_(pipelined), idle_percent_(idle_percent) {}
+  // Runs one transfer to its ack; returns the read data (0 for a write).
+  std::uint32_t run(const Transfer& t);
+  std::uint32_t read(std::uint32_t adr) { return run({false, adr, 0}); }
+  void write(std::uint32_t adr, std::uint32_t dat) { run({true, adr, dat}); }
+  void idle(int cycles);
+  // Runs before every edge (to change reset or ce_i).
+  std::function<void()> each_cycle;
+
+ private:
+  BusTarget& t_;
+  std::mt19937_64 rng_;
+  bool pipelined_;
+  int idle_percent_;
+};
+
+// Register offsets and fields by name (from kRegisters, kFields).
+std::uint32_t reg_offset(std::string_view name);
+std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value);
+std::uint32_t field_bit(std::string_view reg, std::string_view field);
+
+// Firmware: queues commands (entry words in a random order when shuffled, then a
+// commit, once the queue has room), waits for the queue to drain.
+class MotionDriver {
+ public:
+  MotionDriver(WishboneMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
+  void queue(const Command& c);
+  // Until the queue is empty and the core idle; throws GuardError after max_polls.
+  void drain(int max_polls = 1000000);
+  void preset(Point p);
+  Point position();
+
+ private:
+  WishboneMaster& m_;
+  std::mt19937_64 rng_;
+  bool shuffle_;
+};
+
+}  // namespace dda::motion

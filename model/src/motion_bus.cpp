@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "dda/motion_bus.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "dda/errors.hpp"
+
+namespace dda::motion {
+
+void ModelTarget::tick(const BusIn& bus) {
+  BlockInputs in;
+  in.rst_n = rst_n_;
+  in.ce = ce_;
+  in.bus = bus;
+  in.bus.adr &= (1u << kAddrWidth) - 1;
+  model_.edge(in);
+  out_ = model_.outputs();
+  if (on_edge) on_edge(in, model_);
+}
+
+std::uint32_t WishboneMaster::run(const Transfer& t) {
+  std::uniform_int_distribution<int> pct(0, 99);
+  while (pct(rng_) < idle_percent_) idle(1);
+  bool taken = false;
+  for (int guard = 0; guard < 64; ++guard) {
+    if (each_cycle) each_cycle();
+    BusIn b;
+    b.cyc = true;
+    b.stb = pipelined_ ? !taken : true;
+    b.we = t.we;
+    b.adr = t.adr;
+    b.dat = t.dat;
+    const bool stall = t_.outputs().stall;
+    t_.tick(b);
+    if (b.stb && !stall) taken = true;
+    if (taken && t_.outputs().ack) {
+      const std::uint32_t data = t.we ? 0 : t_.outputs().dat;
+      // Classic: the request stays on the bus through the ack cycle (the block stalls
+      // it, so it is not taken twice). Pipelined: the next request may start now.
+      if (!pipelined_) {
+        if (each_cycle) each_cycle();
+        t_.tick(b);
+      }
+      return data;
+    }
+  }
+  throw GuardError("Wishbone master: no ack within 64 cycles");
+}
+
+void WishboneMaster::idle(int cycles) {
+  for (int i = 0; i < cycles; ++i) {
+    if (each_cycle) each_cycle();
+    t_.tick(BusIn{});
+  }
+}
+
+std::uint32_t reg_offset(std::string_view name) {
+  for (const auto& r : kRegisters) {
+    if (r.name == name) return r.offset;
+  }
+  throw GuardError("motion: no register " + std::string(name));
+}
+
+std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == field) return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
+  }
+  throw GuardError("motion: no field " + std::string(reg) + "." + std::string(field));
+}
+
+std::uint32_t field_bit(std::string_view reg, std::string_view field) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == field) return 1u << f.lsb;
+  }
+  throw GuardError("motion: no field " + std::string(reg) + "." + std::string(field));
+}
+
+void MotionDriver::queue(const Command& c) {
+  while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
+  const std::vector<std::uint32_t> w = entry_words(c);
+  std::vector<std::size_t> order(w.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
+  for (const std::size_t k : order) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
+  m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit"));
+}
+
+void MotionDriver::drain(int max_polls) {
+  for (int i = 0; i < max_polls; ++i) {
+    const std::uint32_t st = m_.read(reg_offset("STATUS"));
+    if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st)) return;
+    m_.idle(int(rng_() % 16));
+  }
+  throw GuardError("motion driver: the queue did not drain");
+}
+
+void MotionDriver::preset(Point p) {
+  m_.write(reg_offset("POS_X"), std::uint32_t(p.x));
+  m_.write(reg_offset("POS_Y"), std::uint32_t(p.y));
+}
+
+Point MotionDriver::position() {
+  const auto x = std::int32_t(m_.read(reg_offset("POS_X")));
+  const auto y = std::int32_t(m_.read(reg_offset("POS_Y")));
+  return Point{x, y};
+}
+
+}  // namespace dda::motion
