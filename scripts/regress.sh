@@ -8,7 +8,10 @@
 #   rtl      the RTL under Verilator (--cc)          (default 100,000 cases)
 #   cosim    SystemC model and RTL on one sc_clock   (default 2,000 cases)
 #   rtl-fast, cosim-fast   the same on the core's fast implementation (dda_core.Impl)
-# usage: scripts/regress.sh [systemc|rtl|cosim|rtl-fast|cosim-fast|all] [cases] [seed] [shards]
+#   motion   the motion block: SystemC model and RTL co-simulated on the bus, random
+#            arcs queued with aborts, resets, partial commits and overflows
+#            (default 1,000 arcs; one process, no shards)
+# usage: scripts/regress.sh [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|all] [cases] [seed] [shards]
 # With shards > 1 the cases are cut into that many shards (--shard I/N), run with GNU
 # parallel (one job per core; add e.g. --sshlogin to PARALLEL_OPTS to spread them over
 # hosts that have the same build), and their JSON totals merged: every case draws from
@@ -41,6 +44,9 @@ case "$which" in
   cosim) run cosim_regress "${2:-2000}" ;;
   rtl-fast) echo "the fast implementation (dda_core.Impl = \"fast\"):"; run rtl_regress_fast "${2:-100000}" ;;
   cosim-fast) echo "the fast implementation (dda_core.Impl = \"fast\"):"; run cosim_regress_fast "${2:-2000}" ;;
+  motion)
+    [ "$shards" -le 1 ] || { echo "regress: motion runs in one process (no shards)" >&2; exit 2; }
+    "$build/bin/motion_regress" --arcs "${2:-1000}" --seed "$seed" ;;
   all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
-  *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|all] [cases] [seed] [shards]" >&2; exit 2 ;;
+  *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|all] [cases] [seed] [shards]" >&2; exit 2 ;;
 esac

@@ -15,6 +15,7 @@
 #include "dda/motion_map.hpp"
 #include "dda_random.hpp"
 #include "motion_harness.hpp"
+#include "motion_mix.hpp"
 
 using namespace dda;
 using namespace dda::motion;
@@ -197,5 +198,17 @@ TEST_CASE("motion: abort, overflow, partial commit and reset in the middle of a 
     CHECK(std::int32_t(m.read(addr("POS_X"))) == x1);
     m.write(addr("CTRL"), bit("CTRL", "clear"));
     m.write(addr("IRQ_STATUS"), 7);
+  }
+}
+
+TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and overflows, on both bus modes", "[motion]") {
+  const std::uint64_t seed = test_seed(79);
+  INFO("seed " << seed << " (DDA_SEED reruns it)");
+  for (const bool pipelined : {false, true}) {
+    MotionHarness h;
+    const MixStats st = run_motion_mix(h, seed + pipelined, 50, pipelined);
+    INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
+    CHECK(st.arcs == 50);
+    CHECK(st.position_checks > 0);
   }
 }

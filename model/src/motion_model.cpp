@@ -35,6 +35,23 @@ std::uint64_t mask_of(int bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::
 
 }  // namespace
 
+std::string BlockOutputs::diff(const BlockOutputs& o) const {
+  std::string d;
+  const auto one = [&](const char* n, std::uint64_t a, std::uint64_t b) {
+    if (a != b) d += (d.empty() ? "" : ", ") + std::string(n) + " " + std::to_string(a) + "/" + std::to_string(b);
+  };
+  one("wb_ack_o", ack, o.ack);
+  one("wb_stall_o", stall, o.stall);
+  one("wb_dat_o", dat, o.dat);
+  one("step_x_o", step_x, o.step_x);
+  one("step_y_o", step_y, o.step_y);
+  one("dir_x_o", dir_x, o.dir_x);
+  one("dir_y_o", dir_y, o.dir_y);
+  one("busy_o", busy, o.busy);
+  one("irq_o", irq, o.irq);
+  return d;
+}
+
 int width_bits(Width w, int depth_log2) {
   switch (w) {
     case Width::One:

@@ -30,6 +30,71 @@ std::uint64_t read_var(const void* p, int bytes) {
 
 }  // namespace
 
+static int bytes_of(const VerilatedVar& v) {
+  return v.vltype() == VLVT_UINT8 ? 1 : v.vltype() == VLVT_UINT16 ? 2 : v.vltype() == VLVT_UINT32 ? 4 : 8;
+}
+
+VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& scope, int depth_log2) {
+  const VerilatedScope* s = ctx.scopeFind(scope.c_str());
+  if (!s) throw GuardError("motion sampler: no scope " + scope);
+  for (const auto& r : kBlockRegs) {
+    VerilatedVar* v = s->varFind(std::string(r.name).c_str());
+    if (!v) throw GuardError("motion sampler: the RTL has no public register " + std::string(r.name));
+    const int width = v->dims() == 0 ? 1 : v->packed().elements();
+    if (width != width_bits(r.width, depth_log2)) {
+      throw GuardError("motion sampler: the RTL's " + std::string(r.name) + " is " + std::to_string(width) +
+                       " bits wide, the model says " + std::to_string(width_bits(r.width, depth_log2)));
+    }
+    block_.push_back(Var{v->datap(), bytes_of(*v), width});
+  }
+  // The core's register table, read below the block's instance.
+  const std::string core_scope = scope + ".u_core";
+  for (const auto& r : hw::kSignals) {
+    const std::string name(r.name);
+    const auto dot = name.rfind('.');
+    const std::string sc = dot == std::string::npos ? core_scope : core_scope + "." + name.substr(0, dot);
+    const std::string var = dot == std::string::npos ? name : name.substr(dot + 1);
+    const VerilatedScope* cs = ctx.scopeFind(sc.c_str());
+    VerilatedVar* v = cs ? cs->varFind(var.c_str()) : nullptr;
+    if (!v) throw GuardError("motion sampler: the RTL has no public signal " + name + " in " + core_scope);
+    core_.push_back(Var{v->datap(), bytes_of(*v), r.width});
+  }
+}
+
+BlockRegs VlBlockSampler::block() const {
+  BlockRegs r{};
+  for (std::size_t i = 0; i < block_.size(); ++i) {
+    const auto& v = block_[i];
+    r[i] = read_var(v.p, v.bytes) & ((v.width >= 64 ? 0 : std::uint64_t{1} << v.width) - 1);
+  }
+  return r;
+}
+
+Signals VlBlockSampler::core() const {
+  Signals s{};
+  for (std::size_t i = 0; i < core_.size(); ++i) {
+    const auto& v = core_[i];
+    s[i] = read_var(v.p, v.bytes) & ((v.width >= 64 ? 0 : std::uint64_t{1} << v.width) - 1);
+  }
+  return s;
+}
+
+std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m) {
+  for (std::size_t i = 0; i < kBlockRegs.size(); ++i) {
+    if (got[i] != m.regs()[i]) {
+      return std::string(kBlockRegs[i].name) + " is " + std::to_string(got[i]) + ", the reference model says " +
+             std::to_string(m.regs()[i]);
+    }
+  }
+  for (std::size_t i = 0; i < hw::kSignals.size(); ++i) {
+    if (got_core[i] != m.core()[i]) {
+      return "u_core." + std::string(hw::kSignals[i].name) + " is " + std::to_string(got_core[i]) +
+             ", the reference model says " + std::to_string(m.core()[i]);
+    }
+  }
+  return "";
+}
+
 MotionHarness::MotionHarness(const std::string& vcd)
     : ctx_(std::make_unique<VerilatedContext>()), model_(kHarnessDepthLog2) {
   ctx_->traceEverOn(!vcd.empty());
@@ -39,39 +104,7 @@ MotionHarness::MotionHarness(const std::string& vcd)
   top_->ce_i = 0;
   top_->wb_cyc_i = top_->wb_stb_i = top_->wb_we_i = 0;
   top_->eval();
-  const VerilatedScope* s = ctx_->scopeFind(kTop);
-  if (!s) throw GuardError(std::string("motion harness: no scope ") + kTop);
-  for (const auto& r : kBlockRegs) {
-    VerilatedVar* v = s->varFind(std::string(r.name).c_str());
-    if (!v) throw GuardError("motion harness: the RTL has no public register " + std::string(r.name));
-    const int width = v->dims() == 0 ? 1 : v->packed().elements();
-    if (width != width_bits(r.width, kHarnessDepthLog2)) {
-      throw GuardError("motion harness: the RTL's " + std::string(r.name) + " is " + std::to_string(width) +
-                       " bits wide, the model says " + std::to_string(width_bits(r.width, kHarnessDepthLog2)));
-    }
-    const int bytes = v->vltype() == VLVT_UINT8    ? 1
-                      : v->vltype() == VLVT_UINT16 ? 2
-                      : v->vltype() == VLVT_UINT32 ? 4
-                                                   : 8;
-    block_vars_.push_back(Var{std::string(r.name), v->datap(), bytes, width});
-  }
-  // The core's register table, read below the block's instance (the same sampler as
-  // the core's own harness).
-  const std::string core_scope = std::string(kTop) + ".u_core";
-  for (const auto& r : hw::kSignals) {
-    const std::string name(r.name);
-    const auto dot = name.rfind('.');
-    const std::string scope = dot == std::string::npos ? core_scope : core_scope + "." + name.substr(0, dot);
-    const std::string var = dot == std::string::npos ? name : name.substr(dot + 1);
-    const VerilatedScope* cs = ctx_->scopeFind(scope.c_str());
-    VerilatedVar* v = cs ? cs->varFind(var.c_str()) : nullptr;
-    if (!v) throw GuardError("motion harness: the RTL has no public signal " + name + " in " + core_scope);
-    const int bytes = v->vltype() == VLVT_UINT8    ? 1
-                      : v->vltype() == VLVT_UINT16 ? 2
-                      : v->vltype() == VLVT_UINT32 ? 4
-                                                   : 8;
-    core_vars_.push_back(Var{name, v->datap(), bytes, r.width});
-  }
+  sampler_ = std::make_unique<VlBlockSampler>(*ctx_, kTop, kHarnessDepthLog2);
   if (!vcd.empty()) {
     vcd_ = std::make_unique<VerilatedVcdC>();
     top_->trace(vcd_.get(), 99);
@@ -122,31 +155,9 @@ void MotionHarness::tick(const BusIn& bus) {
   out_.irq = top_->irq_o;
   const std::string at = "motion block, cycle " + std::to_string(cycle_) + ": ";
   const BlockOutputs want = model_.outputs();
-  if (!(out_ == want)) {
-    throw GuardError(at + "ports differ from the reference model (ack " + std::to_string(out_.ack) + "/" +
-                     std::to_string(want.ack) + ", dat " + std::to_string(out_.dat) + "/" + std::to_string(want.dat) +
-                     ", step " + std::to_string(out_.step_x) + std::to_string(out_.step_y) + "/" +
-                     std::to_string(want.step_x) + std::to_string(want.step_y) + ", irq " + std::to_string(out_.irq) +
-                     "/" + std::to_string(want.irq) + ")");
-  }
-  for (std::size_t i = 0; i < block_vars_.size(); ++i) {
-    const auto& v = block_vars_[i];
-    const std::uint64_t got = read_var(v.p, v.bytes) & ((v.width >= 64 ? 0 : std::uint64_t{1} << v.width) - 1);
-    if (got != model_.regs()[i]) {
-      throw GuardError(at + v.name + " is " + std::to_string(got) + ", the reference model says " +
-                       std::to_string(model_.regs()[i]));
-    }
-  }
-  const Signals& core = model_.core();
-  for (std::size_t i = 0; i < core_vars_.size(); ++i) {
-    const auto& v = core_vars_[i];
-    const std::uint64_t mask = v.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << v.width) - 1;
-    const std::uint64_t got = read_var(v.p, v.bytes) & mask;
-    if (got != core[i]) {
-      throw GuardError(at + "u_core." + v.name + " is " + std::to_string(got) + ", the reference model says " +
-                       std::to_string(core[i]));
-    }
-  }
+  if (!(out_ == want)) throw GuardError(at + "output ports " + out_.diff(want) + " (rtl/reference model)");
+  const std::string diff = compare_block(sampler_->block(), sampler_->core(), model_);
+  if (!diff.empty()) throw GuardError(at + diff);
 }
 
 }  // namespace dda::motion

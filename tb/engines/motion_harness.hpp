@@ -22,6 +22,28 @@ namespace dda::motion {
 // tb/CMakeLists.txt): small, so that the tests fill it.
 inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
 
+// The block's registers (kBlockRegs) and the core's register table of a Verilated
+// dda_motion, by name below `scope` (e.g. "dut.dda_motion"). Throws GuardError naming a
+// register the RTL lacks or holds at another width.
+class VlBlockSampler {
+ public:
+  VlBlockSampler(const VerilatedContext& ctx, const std::string& scope, int depth_log2);
+  BlockRegs block() const;
+  Signals core() const;
+
+ private:
+  struct Var {
+    const void* p;
+    int bytes;
+    int width;
+  };
+  std::vector<Var> block_, core_;
+};
+
+// Compares what a block holds with what the reference model holds; "" when equal, else
+// the first difference ("<register> is A, the reference model says B").
+std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m);
+
 class MotionHarness : public BusTarget {
  public:
   explicit MotionHarness(const std::string& vcd = "");
@@ -42,13 +64,7 @@ class MotionHarness : public BusTarget {
   std::unique_ptr<VerilatedContext> ctx_;
   std::unique_ptr<Vdda_motion> top_;
   std::unique_ptr<VerilatedVcdC> vcd_;
-  struct Var {
-    std::string name;
-    const void* p;
-    int bytes;
-    int width;
-  };
-  std::vector<Var> block_vars_, core_vars_;
+  std::unique_ptr<VlBlockSampler> sampler_;
   MotionModel model_;
   BlockOutputs out_;
   bool rst_n_ = true, ce_ = true;

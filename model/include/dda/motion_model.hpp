@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct BlockOutputs {
   bool ack = false, stall = false;
   std::uint32_t dat = 0;
   bool step_x = false, step_y = false, dir_x = false, dir_y = false, busy = false, irq = false;
+  // "" when equal, else the ports that differ ("ack 1/0, dat 5/0": this/other).
+  std::string diff(const BlockOutputs& o) const;
   bool operator==(const BlockOutputs& o) const {
     return ack == o.ack && stall == o.stall && dat == o.dat && step_x == o.step_x && step_y == o.step_y &&
            dir_x == o.dir_x && dir_y == o.dir_y && busy == o.busy && irq == o.irq;

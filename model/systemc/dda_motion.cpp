@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "dda_motion.hpp"
+
+namespace dda::sc {
+
+namespace {
+
+using motion::kEntryWords;
+
+std::uint32_t addr_of(std::string_view name) {
+  for (const auto& r : motion::kRegisters) {
+    if (r.name == name) return r.offset;
+  }
+  return ~0u;
+}
+std::uint32_t lsb_of(std::string_view reg, std::string_view field) {
+  for (const auto& f : motion::kFields) {
+    if (f.reg == reg && f.name == field) return std::uint32_t(f.lsb);
+  }
+  return 0;
+}
+const std::uint32_t kCtrl = addr_of("CTRL"), kIrqStatus = addr_of("IRQ_STATUS"), kIrqEnable = addr_of("IRQ_ENABLE"),
+                    kIrqLevel = addr_of("IRQ_LEVEL"), kPosX = addr_of("POS_X"), kPosY = addr_of("POS_Y");
+
+cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
+  cmd_t c;
+  for (int b = 0; b < hw::kCmdWidth; ++b) c[b] = bool((w[std::size_t(b / 32)] >> (b % 32)) & 1u);
+  return c;
+}
+
+}  // namespace
+
+dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
+    : sc_core::sc_module(name),
+      depth_log2_(depth_log2),
+      mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
+  u_core.clk_i(clk_i);
+  u_core.rst_ni(core_rst_n);
+  u_core.ce_i(ce_i);
+  u_core.cmd_valid_i(cmd_valid);
+  u_core.cmd_ready_o(core_ready);
+  u_core.cmd_i(rd_q);
+  u_core.step_x_o(step_x);
+  u_core.step_y_o(step_y);
+  u_core.dir_x_o(dir_x);
+  u_core.dir_y_o(dir_y);
+  u_core.busy_o(core_busy);
+  u_core.done_o(core_done);
+  u_core.err_o(core_err);
+  u_core.iter_o(core_iter);
+
+  SC_METHOD(comb);
+  sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << primed_q
+            << level_q << core_busy << step_x << step_y << dir_x << dir_y << irq_status_q << irq_enable_q;
+  SC_METHOD(seq);
+  sensitive << clk_i.pos();
+  dont_initialize();
+}
+
+void dda_motion::comb() {
+  const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
+  const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
+  const bool abort = req && wb_we_i.read() && adr == kCtrl && ((wb_dat_i.read() >> lsb_of("CTRL", "abort")) & 1u);
+  core_rst_n.write(rst_ni.read() && !abort);
+  cmd_valid.write(primed_q.read() && level_q.read() != 0);
+  wb_ack_o.write(ack_q.read());
+  wb_stall_o.write(ack_q.read());
+  wb_dat_o.write(dat_q.read());
+  step_x_o.write(step_x.read());
+  step_y_o.write(step_y.read());
+  dir_x_o.write(dir_x.read());
+  dir_y_o.write(dir_y.read());
+  busy_o.write(core_busy.read());
+  irq_o.write((irq_status_q.read() & irq_enable_q.read()) != 0);
+}
+
+std::uint32_t dda_motion::read(std::uint32_t adr) const {
+  const std::uint32_t level = level_q.read(), depth = 1u << depth_log2_;
+  if (adr == addr_of("ID")) return motion::kId;
+  if (adr == addr_of("VERSION")) return std::uint32_t(motion::kVersionMajor) << 16 | motion::kVersionMinor;
+  if (adr == addr_of("CONFIG")) {
+    return std::uint32_t(kEntryWords) << lsb_of("CONFIG", "entry_words") |
+           std::uint32_t(depth_log2_) << lsb_of("CONFIG", "depth_log2") |
+           std::uint32_t(hw::kAccWidth) << lsb_of("CONFIG", "acc_width") |
+           std::uint32_t(hw::kCntWidth) << lsb_of("CONFIG", "cnt_width");
+  }
+  if (adr == addr_of("STATUS")) {
+    const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << lsb_of("STATUS", f); };
+    return bit("busy", core_busy.read()) | bit("empty", level == 0) | bit("full", level == depth) |
+           bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
+           bit("err_partial", err_partial_q.read()) | bit("err_stall", err_stall_q.read()) |
+           bit("aborted", aborted_q.read()) | level << lsb_of("STATUS", "level");
+  }
+  if (adr == kIrqStatus) return irq_status_q.read();
+  if (adr == kIrqEnable) return irq_enable_q.read();
+  if (adr == kIrqLevel) return irq_level_q.read();
+  if (adr == addr_of("DONE_COUNT")) return done_count_q.read();
+  if (adr == addr_of("ERR_COUNT")) return err_count_q.read();
+  if (adr == kPosX) return pos_x_q.read();
+  if (adr == kPosY) return pos_y_q.read();
+  if (adr == addr_of("ENTRY_MASK")) return mask_q.read();
+  return 0;
+}
+
+void dda_motion::seq() {
+  const std::uint32_t depth = 1u << depth_log2_, imask = depth - 1;
+  const std::uint32_t all_words = std::uint32_t((std::uint64_t{1} << kEntryWords) - 1);
+  const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
+  const bool wr = req && wb_we_i.read();
+  const std::uint32_t adr = wb_adr_i.read() & 0xFCu, dat = wb_dat_i.read();
+  const bool wr_ctrl = wr && adr == kCtrl;
+  const bool commit = wr_ctrl && ((dat >> lsb_of("CTRL", "commit")) & 1u);
+  const bool abort = wr_ctrl && ((dat >> lsb_of("CTRL", "abort")) & 1u);
+  const bool clear = wr_ctrl && ((dat >> lsb_of("CTRL", "clear")) & 1u);
+  const bool in_entry = adr >= motion::kEntryBase && adr < motion::kEntryBase + 4u * kEntryWords;
+  const std::uint32_t word = (adr - motion::kEntryBase) >> 2;
+  const std::uint32_t level = level_q.read(), head = head_q.read(), tail = tail_q.read();
+  const bool full = level == depth;
+  const bool mask_all = mask_q.read() == all_words;
+  const bool wr_entry = wr && in_entry && !abort;
+  const bool entry_ok = wr_entry && !full;
+  const bool commit_ok = commit && !abort && !full && mask_all;
+  const bool err_overflow = (wr_entry || commit) && !abort && full;
+  const bool err_partial = commit && !abort && !full && !mask_all;
+  const bool take = cmd_valid.read() && core_ready.read() && !abort;
+  const std::uint32_t level_d = level + commit_ok - take;
+  const std::uint32_t head_d = !rst_ni.read() ? 0 : abort ? tail : take ? (head + 1) & imask : head;
+
+  rd_q.write(entry_bits(mem_[head_d]));  // read before this edge's write
+  if (entry_ok) mem_[tail][word] = dat;
+  if (!rst_ni.read()) {
+    for (auto* s : {&ack_q, &primed_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
+      s->write(false);
+    for (auto* s : {&dat_q, &head_q, &tail_q, &level_q, &mask_q, &irq_status_q, &irq_enable_q, &irq_level_q,
+                    &done_count_q, &err_count_q, &pos_x_q, &pos_y_q})
+      s->write(0);
+    return;
+  }
+  ack_q.write(req);
+  if (req && !wb_we_i.read()) dat_q.write(read(adr));
+  primed_q.write(true);
+  head_q.write(head_d);
+  if (abort) {
+    level_q.write(0);
+    mask_q.write(0);
+  } else {
+    level_q.write(level_d);
+    if (commit_ok) {
+      tail_q.write((tail + 1) & imask);
+      mask_q.write(0);
+    } else if (entry_ok) {
+      mask_q.write(mask_q.read() | (1u << word));
+    }
+  }
+  const bool cdone = core_done.read(), cerr = core_err.read();
+  const bool err_set = err_overflow || err_partial || cerr;
+  const bool low_set = take && level_d < irq_level_q.read();
+  const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
+  err_q.write((err_q.read() && !clear) || err_set);
+  err_overflow_q.write((err_overflow_q.read() && !clear) || err_overflow);
+  err_partial_q.write((err_partial_q.read() && !clear) || err_partial);
+  err_stall_q.write((err_stall_q.read() && !clear) || cerr);
+  aborted_q.write((aborted_q.read() && !clear) || abort);
+  const std::uint32_t w1c = wr && adr == kIrqStatus ? (dat & 7u) : 0u;
+  irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
+  if (wr && adr == kIrqEnable) irq_enable_q.write(dat & 7u);
+  if (wr && adr == kIrqLevel) irq_level_q.write(dat & ((1u << motion::kLevelWidth) - 1));
+  done_count_q.write(done_count_q.read() + cdone);
+  err_count_q.write(err_count_q.read() + cerr);
+  const std::uint32_t dx = step_x.read() ? (dir_x.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dy = step_y.read() ? (dir_y.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  pos_x_q.write((wr && adr == kPosX ? dat : pos_x_q.read()) + dx);
+  pos_y_q.write((wr && adr == kPosY ? dat : pos_y_q.read()) + dy);
+}
+
+}  // namespace dda::sc

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: Apache-2.0
+// SystemC model of the motion block: same ports, registers and hierarchy as
+// rtl/dda_motion.v (docs/design.md, "Motion block"), around the SystemC model of the
+// core. Register for register: a co-simulation names the register and the cycle where
+// the two differ. The queue memory is a plain array; `rd_q` holds the entry read at the
+// next head address on the last edge (the RTL's block-RAM output registers).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "dda/motion_map.hpp"
+#include "dda_core.hpp"
+
+namespace dda::sc {
+
+SC_MODULE(dda_motion) {
+  sc_core::sc_in<bool> clk_i, rst_ni;
+  sc_core::sc_in<bool> wb_cyc_i, wb_stb_i, wb_we_i;
+  sc_core::sc_in<std::uint32_t> wb_adr_i, wb_dat_i, wb_sel_i;
+  sc_core::sc_out<std::uint32_t> wb_dat_o;
+  sc_core::sc_out<bool> wb_ack_o, wb_stall_o;
+  sc_core::sc_in<bool> ce_i;
+  sc_core::sc_out<bool> step_x_o, step_y_o, dir_x_o, dir_y_o, busy_o, irq_o;
+
+  SC_HAS_PROCESS(dda_motion);
+  dda_motion(sc_core::sc_module_name name, int depth_log2);
+
+  dda_core u_core{"u_core"};
+
+  // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
+  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
+      err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"};
+  sc_core::sc_signal<std::uint32_t> dat_q{"dat_q"}, head_q{"head_q"}, tail_q{"tail_q"}, level_q{"level_q"},
+      mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
+      done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"};
+
+ private:
+  int depth_log2_;
+  std::vector<std::vector<std::uint32_t>> mem_;
+  sc_core::sc_signal<cmd_t> rd_q{"rd_q"};
+  // Wires.
+  sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
+  sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
+  sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
+
+  void comb();
+  void seq();
+  std::uint32_t read(std::uint32_t adr) const;
+};
+
+}  // namespace dda::sc

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: Apache-2.0
+// Random work for the motion block on any bus target (the RTL harness, the
+// co-simulation): batches of random arcs (as part programs give them: lattice ends, full
+// turns, lines, rotated ellipses) queued back to back while the block runs, over classic
+// or pipelined Wishbone cycles with random idle cycles and ce_i low a tenth of the time;
+// among them partial commits, writes to a full queue, aborts and resets in the middle of
+// a queue. After every batch that ran to its end the position counters must equal the
+// batch's start plus the arcs' moves (throws GuardError otherwise); the target itself
+// checks every edge.
+#pragma once
+
+#include <cstdint>
+
+#include "dda/motion_bus.hpp"
+
+namespace dda::motion {
+
+struct MixStats {
+  std::uint64_t arcs = 0, pieces = 0, batches = 0, aborts = 0, resets = 0, partial = 0, overflow = 0;
+  std::uint64_t position_checks = 0;
+};
+
+// Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).
+MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bool pipelined,
+                        std::int64_t max_axis = 400);
+
+}  // namespace dda::motion
