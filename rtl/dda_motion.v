@@ -125,7 +125,7 @@ module dda_motion #(
   wire [16*Lanes-1:0] entry_q;
   genvar l;
   for (l = 0; l < Lanes; l = l + 1) begin : g_lane
-    reg [15:0] mem [0:(1 << DepthLog2)-1];
+    (* no_rw_check *) reg [15:0] mem [0:(1 << DepthLog2)-1];
     reg [15:0] rd_q;
     always @(posedge clk_i) begin
       if (entry_ok && word == l / 2) mem[tail_q] <= wb_dat_i[16*(l%2)+:16];
