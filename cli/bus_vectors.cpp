@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "dda/motion_bus.hpp"
+#include "motion_harness.hpp"
 #include "vectors.hpp"
 
 namespace dda::vec {
@@ -109,23 +110,9 @@ std::string bus_verilog_fields() {
   return s.str();
 }
 
-void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
-  if (plans.empty()) throw InputError("vectors need at least one arc");
-  motion::ModelTarget t;
-  std::ostringstream in_hex, exp_hex;
-  std::uint64_t ncycles = 0;
-  const auto inf = bus_input_fields();
-  const auto exf = bus_expect_fields();
-  t.on_edge = [&](const motion::BlockInputs& in, const motion::MotionModel& m) {
-    const motion::BlockOutputs o = m.outputs();
-    const auto& r = m.regs();
-    in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat}) << '\n';
-    exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.busy, o.irq,
-                              r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("level_q")],
-                              r[motion::breg("done_count_q")]})
-            << '\n';
-    ++ncycles;
-  };
+// The firmware's work: reset, preset the positions to the first arc's start, queue every
+// piece, then drain the queue (or abort), read the positions.
+void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
   motion::WishboneMaster m(t, opt.seed, bus.pipelined, bus.idle_percent);
   std::mt19937_64 ce_rng(opt.seed + 1);
   m.each_cycle = [&] { t.set_ce(int(ce_rng() % 100) < opt.ce_percent); };
@@ -146,6 +133,32 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   }
   d.position();
   m.idle(4);
+}
+
+void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
+  if (plans.empty()) throw InputError("vectors need at least one arc");
+  motion::ModelTarget t;
+  std::ostringstream in_hex, exp_hex;
+  std::uint64_t ncycles = 0;
+  const auto inf = bus_input_fields();
+  const auto exf = bus_expect_fields();
+  t.on_edge = [&](const motion::BlockInputs& in, const motion::MotionModel& m) {
+    const motion::BlockOutputs o = m.outputs();
+    const auto& r = m.regs();
+    in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat}) << '\n';
+    exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.busy, o.irq,
+                              r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("level_q")],
+                              r[motion::breg("done_count_q")]})
+            << '\n';
+    ++ncycles;
+  };
+  drive(t, plans, opt, bus);
+  if (!bus.vcd.empty()) {
+    // The RTL through the same cycles (the master decides from the outputs, equal to the
+    // model's edge by edge: the harness checks every edge), writing its waveform.
+    motion::MotionHarness h(bus.vcd);
+    drive(h, plans, opt, bus);
+  }
 
   nlohmann::ordered_json j;
   j["generator"] = "dda vectors --bus (the motion block's reference model, model/include/dda/motion_model.hpp)";

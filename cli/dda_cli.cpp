@@ -25,6 +25,7 @@
 #include "dda/hw_command.hpp"
 #include "dda/hw_params.hpp"
 #include "dda/motion_map.hpp"
+#include "dda/motion_model.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
 #include "vectors.hpp"
@@ -309,7 +310,8 @@ int main(int argc, char** argv) {
                   "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
                   "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
                   "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
-                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh)");
+                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), gtkw-motion "
+                  "(docs/dda_motion.gtkw)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
   gen->add_option("--acc-width", gp_acc,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
@@ -371,7 +373,9 @@ int main(int argc, char** argv) {
       if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
       if (ve.engine != "golden")
         throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
-      if (!ve.out.empty() || !ve.vcd.empty()) throw InputError("vectors write --out-dir DIR, not --out or --vcd");
+      if (!ve.out.empty() || (!ve.vcd.empty() && !ve_bus)) {
+        throw InputError("vectors write --out-dir DIR, not --out (nor --vcd, but with --bus: the RTL's waveform)");
+      }
       vec::Options vo;
       vo.out_dir = ve_dir;
       vo.seed = std::uint64_t(parse_int("seed", ve_seed, "a non-negative integer"));
@@ -397,7 +401,10 @@ int main(int argc, char** argv) {
         vec::BusOptions bo;
         bo.pipelined = ve_pipelined;
         bo.abort_after = ve_abort;
+        AtomicFile wave(ve.vcd);  // the RTL run beside the set: written only on success
+        bo.vcd = wave.write_path();
         vec::write_bus_vector_set(plans, vo, bo);
+        wave.commit();
       } else {
         if (ve_pipelined || ve_abort) throw InputError("--pipelined and --abort-after go with --bus only");
         vec::write_vector_set(plans, vo);
@@ -430,12 +437,15 @@ int main(int argc, char** argv) {
                                         {"motion-markdown", 7},
                                         {"motion-c", 8},
                                         {"motion-verilog", 9},
-                                        {"motion-vector-fields", 10}});
+                                        {"motion-vector-fields", 10},
+                                        {"gtkw-motion", 11}});
       if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
         throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
       }
       Output out(gp_out);
-      if (kind == 10) {  // the bus bench's field table
+      if (kind == 11) {  // the motion block's waveform: dda vectors --bus --vcd
+        out.stream() << motion::gtkw("dda_motion.gtkw", "dut.dda_motion", motion::kMaxDepthLog2);
+      } else if (kind == 10) {  // the bus bench's field table
         out.stream() << vec::bus_verilog_fields();
       } else if (kind >= 7) {  // the motion block's register map
         out.stream() << (kind == 7 ? motion::markdown() : kind == 8 ? motion::c_header() : motion::verilog_header());

@@ -28,6 +28,7 @@ struct BusOptions {
   bool pipelined = false;  // Wishbone cycles: classic or pipelined
   int idle_percent = 20;   // chance of an idle cycle before each request (seeded)
   int abort_after = 0;     // > 0: abort that many cycles after the last commit
+  std::string vcd;         // non-empty: also run the RTL through the same cycles, this waveform
 };
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);
 // The bus bench's field table (tb/hdl/dda_bus_vec_fields.vh).

@@ -137,3 +137,12 @@ set_tests_properties(vectors.bus.detects_corruption PROPERTIES FIXTURES_REQUIRED
 add_test(NAME vectors.bus.fields_in_sync
          COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind motion-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_bus_vec_fields.vh")
 set_tests_properties(vectors.bus.fields_in_sync PROPERTIES LABELS motion)
+# The motion block's waveform: `dda vectors --bus --vcd` runs the RTL through the set's
+# cycles; the GTKWave save file names only signals it declares, and is what
+# `dda gen-params --kind gtkw-motion` writes.
+add_test(NAME gtkw.motion
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> vectors --bus --out-dir '${_dda_bvec}/gtkw' --vcd '${_dda_bvec}/motion.vcd' --a 10 --b 6 --bits 4 --preload zero && '${PROJECT_SOURCE_DIR}/scripts/check-gtkw.sh' '${_dda_bvec}/motion.vcd' '${PROJECT_SOURCE_DIR}/docs/dda_motion.gtkw'")
+set_tests_properties(gtkw.motion PROPERTIES LABELS motion)
+add_test(NAME gtkw.motion_in_sync
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind gtkw-motion | diff - ${PROJECT_SOURCE_DIR}/docs/dda_motion.gtkw")
+set_tests_properties(gtkw.motion_in_sync PROPERTIES LABELS motion)

@@ -540,3 +540,25 @@ TEST_CASE("cli: the default width runs on the hardware engines", "[cli][engines]
   CHECK(r.status == 0);
   CHECK(r.out == g.out);
 }
+
+TEST_CASE("cli: vectors --bus writes the motion block's set; --pipelined and --abort-after need --bus",
+          "[cli][motion][errors]") {
+  Scratch s;
+  const fs::path dir = s.dir / "bvec";
+  Result r = run_dda(s, "vectors " + kPaper + " --bus --pipelined --abort-after 20 --out-dir " + dir.string());
+  INFO("stderr: " << r.err);
+  REQUIRE(r.status == 0);
+  for (const char* f : {"counts.hex", "cycle_in.hex", "cycle_exp.hex", "manifest.json"}) CHECK(fs::exists(dir / f));
+  const auto m = nlohmann::json::parse(slurp(dir / "manifest.json"));
+  CHECK(m["bus_cycles"] == "pipelined");
+  CHECK(m["abort_after"] == 20);
+  CHECK(m["layout"]["cycle_exp"][0]["name"] == "wb_ack_o");
+  const fs::path bad = s.dir / "bad";
+  r = run_dda(s, "vectors " + kPaper + " --pipelined --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--pipelined and --abort-after go with --bus only") != std::string::npos);
+  CHECK_FALSE(fs::exists(bad));
+  r = run_dda(s, "vectors " + kPaper + " --bus --abort-after 0 --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK_FALSE(fs::exists(bad));
+}

@@ -70,6 +70,51 @@ int width_bits(Width w, int depth_log2) {
   return 0;
 }
 
+std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
+  const auto reg = [&](std::string_view name, bool is_signed = false) {
+    return hw::WaveSignal{std::string(name), width_bits(kBlockRegs[breg(name)].width, depth_log2), is_signed};
+  };
+  std::vector<hw::WaveGroup> g;
+  g.push_back({"Bus",
+               {{"wb_cyc_i", 1},
+                {"wb_stb_i", 1},
+                {"wb_we_i", 1},
+                {"wb_adr_i", kAddrWidth},
+                {"wb_dat_i", 32},
+                {"wb_ack_o", 1},
+                {"wb_stall_o", 1},
+                {"wb_dat_o", 32}}});
+  g.push_back({"Queue", {reg("head_q"), reg("tail_q"), reg("level_q"), reg("mask_q"), reg("primed_q")}});
+  g.push_back({"Status",
+               {reg("err_q"),
+                reg("err_overflow_q"),
+                reg("err_partial_q"),
+                reg("err_stall_q"),
+                reg("aborted_q"),
+                reg("irq_status_q"),
+                reg("irq_enable_q"),
+                reg("irq_level_q"),
+                {"irq_o", 1}}});
+  g.push_back({"Axes",
+               {{"step_x_o", 1},
+                {"dir_x_o", 1},
+                {"step_y_o", 1},
+                {"dir_y_o", 1},
+                {"busy_o", 1},
+                reg("pos_x_q", true),
+                reg("pos_y_q", true),
+                reg("done_count_q"),
+                reg("err_count_q")}});
+  hw::WaveGroup core{"Core", {}};
+  for (const auto& r : hw::kSignals) {
+    if (r.kind == hw::SigKind::Reg && (r.group == "Control" || r.group == "Counters")) {
+      core.signals.push_back({"u_core." + std::string(r.name), r.width, r.show_signed});
+    }
+  }
+  g.push_back(std::move(core));
+  return hw::gtkw_file(g, "the DDA motion block", file, top);
+}
+
 std::vector<std::uint32_t> entry_words(const Command& c) {
   std::vector<std::uint32_t> w = hw::pack_command(c);
   w.resize(kEntryWords, 0);

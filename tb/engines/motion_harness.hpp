@@ -19,7 +19,8 @@ class Vdda_motion;
 namespace dda::motion {
 
 // The queue depth the harness' RTL is verilated with (-GDepthLog2, set once in
-// tb/CMakeLists.txt): small, so that the tests fill it.
+// tb/CMakeLists.txt): small in the tests' harness, so that they fill it; the RTL's
+// default in the dda command's.
 inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
 
 // The block's registers (kBlockRegs) and the core's register table of a Verilated

@@ -257,5 +257,18 @@ std::string verilog_header(int acc_width, int cnt_width);
 std::string markdown_tables(const SignalTable& t = signal_table());  // docs/design.md
 // GTKWave save file for a waveform whose core is at `top` (e.g. "SystemC.dut").
 std::string gtkw(const SignalTable& t, std::string_view file, std::string_view top);
+// A GTKWave save file of groups of signals below `top` (the core's above; the motion
+// block's: motion_model.hpp). `what` names the design in its header.
+struct WaveSignal {
+  std::string name;
+  int width;
+  bool is_signed = false;
+};
+struct WaveGroup {
+  std::string name;
+  std::vector<WaveSignal> signals;
+};
+std::string gtkw_file(const std::vector<WaveGroup>& groups, std::string_view what, std::string_view file,
+                      std::string_view top);
 
 }  // namespace dda::hw

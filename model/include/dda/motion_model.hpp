@@ -87,6 +87,12 @@ class MotionModel {
   bool took_ = false;
 };
 
+// The GTKWave save file of the motion block (docs/dda_motion.gtkw: `dda gen-params
+// --kind gtkw-motion`): the bus, the queue, status and interrupts, the axes and the
+// core's control, below `top` (the RTL's scope, e.g. "dut.dda_motion"), for a queue of
+// 2^depth_log2 entries.
+std::string gtkw(std::string_view file, std::string_view top, int depth_log2);
+
 // The entry words of a command: the core's command word LSB first, reserved bits 0.
 std::vector<std::uint32_t> entry_words(const Command& c);
 // The core's command fields of entry words (the inverse of entry_words on its bits).
