@@ -210,5 +210,7 @@ TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and over
     INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
     CHECK(st.arcs == 50);
     CHECK(st.position_checks > 0);
+    CHECK(st.piece_checks > 0);
+    CHECK(st.piece_checks > 0);
   }
 }

@@ -27,6 +27,7 @@ TEST_CASE("motion cosim: 60 random arcs queued on classic cycles, SystemC model 
   INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
+  CHECK(st.piece_checks > 0);
 }
 
 TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC model and RTL equal every cycle",
@@ -37,4 +38,5 @@ TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC mode
   const MixStats st = run_motion_mix(h, seed, 60, true);
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
+  CHECK(st.piece_checks > 0);
 }

@@ -20,6 +20,36 @@ void ModelTarget::tick(const BusIn& bus) {
   if (on_edge) on_edge(in, model_);
 }
 
+void PieceMonitor::set_reset(bool rst_n) {
+  reset_ = !rst_n;
+  t_.set_reset(rst_n);
+}
+
+void PieceMonitor::tick(const BusIn& bus) {
+  t_.tick(bus);
+  const BlockRegs& r = t_.model().regs();
+  const std::uint64_t done = r[breg("done_count_q")], err = r[breg("err_count_q")];
+  if (reset_) {  // the counters restart from 0, the queue is empty
+    ends_.clear();
+    next_ = 0;
+    done_ = done;
+    err_ = err;
+    return;
+  }
+  if (err != err_) throw GuardError("piece monitor: a queued piece stalled (ERR_COUNT " + std::to_string(err) + ")");
+  if (done == done_) return;
+  done_ = done;
+  if (next_ >= ends_.size()) throw GuardError("piece monitor: a piece finished that was not queued");
+  const Point want = ends_[next_++];
+  const auto x = std::int32_t(r[breg("pos_x_q")]), y = std::int32_t(r[breg("pos_y_q")]);
+  if (x != want.x || y != want.y) {
+    throw GuardError("piece monitor: piece " + std::to_string(next_) + " finished at (" + std::to_string(x) + ", " +
+                     std::to_string(y) + "), its end point is (" + std::to_string(want.x) + ", " +
+                     std::to_string(want.y) + ")");
+  }
+  ++checked_;
+}
+
 std::uint32_t WishboneMaster::run(const Transfer& t) {
   std::uniform_int_distribution<int> pct(0, 99);
   while (pct(rng_) < idle_percent_) idle(1);

@@ -27,7 +27,7 @@ class MotionCosim : public BusTarget {
   void set_ce(bool ce) override { ce_v_ = ce; }
   void tick(const BusIn& bus) override;
   const BlockOutputs& outputs() const override { return out_; }
-  const MotionModel& model() const { return model_; }
+  const MotionModel& model() const override { return model_; }
   std::uint64_t cycle() const { return cycle_; }
 
  private:

@@ -58,7 +58,7 @@ class MotionHarness : public BusTarget {
   void tick(const BusIn& bus) override;
   // The outputs after the last edge (the RTL's; equal to the model's).
   const BlockOutputs& outputs() const override { return out_; }
-  const MotionModel& model() const { return model_; }
+  const MotionModel& model() const override { return model_; }
   std::uint64_t cycle() const { return cycle_; }
 
  private:

@@ -14,13 +14,14 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
   MixStats st;
   std::mt19937_64 rng(seed);
   RandomArcs gen(seed, max_axis, 4, ArcKind::Program);
-  WishboneMaster m(t, seed + 1, pipelined, 20);
-  m.each_cycle = [&] { t.set_ce(rng() % 10 != 0); };
+  PieceMonitor mon(t);
+  WishboneMaster m(mon, seed + 1, pipelined, 20);
+  m.each_cycle = [&] { mon.set_ce(rng() % 10 != 0); };
   MotionDriver d(m, seed + 2);
   const auto ctrl = [&](std::string_view bit) { m.write(reg_offset("CTRL"), field_bit("CTRL", bit)); };
-  t.set_reset(false);
+  mon.set_reset(false);
   m.idle(2);
-  t.set_reset(true);
+  mon.set_reset(true);
   while (st.arcs < arcs) {
     ++st.batches;
     // One to four arcs back to back from a preset position.
@@ -42,8 +43,13 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
       }
       ctrl("clear");
     }
+    Point at = batch.front().from;
     for (const auto& p : batch) {
-      for (const auto& piece : p.pieces) d.queue(piece.cmd);
+      for (const auto& piece : p.pieces) {
+        at = Point{at.x + (piece.to.x - piece.from.x), at.y + (piece.to.y - piece.from.y)};
+        mon.expect(at);
+        d.queue(piece.cmd);
+      }
       want = Point{want.x + (p.to.x - p.from.x), want.y + (p.to.y - p.from.y)};
       st.pieces += p.pieces.size();
     }
@@ -52,6 +58,7 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
     if (end == 0) {  // abort in the middle
       m.idle(int(rng() % 300));
       ctrl("abort");
+      mon.flush();
       ++st.aborts;
       const std::uint32_t s = m.read(reg_offset("STATUS"));
       if (!get_field("STATUS", "aborted", s) || get_field("STATUS", "level", s) != 0) {
@@ -62,15 +69,15 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
     }
     if (end == 1) {  // reset in the middle of the queue
       m.idle(int(rng() % 300));
-      t.set_reset(false);
+      mon.set_reset(false);
       m.idle(1 + int(rng() % 3));
-      t.set_reset(true);
+      mon.set_reset(true);
       ++st.resets;
       continue;
     }
     if (end == 2) {  // fill past the depth with ce_i low: overflow
       const auto save = m.each_cycle;
-      m.each_cycle = [&] { t.set_ce(false); };
+      m.each_cycle = [&] { mon.set_ce(false); };
       const std::uint32_t cfg = m.read(reg_offset("CONFIG"));
       const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", cfg);
       const std::vector<std::uint32_t> w = entry_words(batch.front().pieces.front().cmd);
@@ -84,6 +91,7 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
       }
       m.each_cycle = save;
       ctrl("abort");
+      mon.flush();
       ctrl("clear");
       continue;
     }
@@ -96,6 +104,7 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
                        std::to_string(want.y) + "); last arc: " + gen.drawn_options());
     }
   }
+  st.piece_checks = mon.checked();
   return st;
 }
 

@@ -4,9 +4,10 @@
 // turns, lines, rotated ellipses) queued back to back while the block runs, over classic
 // or pipelined Wishbone cycles with random idle cycles and ce_i low a tenth of the time;
 // among them partial commits, writes to a full queue, aborts and resets in the middle of
-// a queue. After every batch that ran to its end the position counters must equal the
-// batch's start plus the arcs' moves (throws GuardError otherwise); the target itself
-// checks every edge.
+// a queue. Every piece that finishes must leave the position counters on its end point
+// (PieceMonitor), and after every batch that ran to its end they must equal the batch's
+// start plus the arcs' moves (throws GuardError otherwise); the target itself checks
+// every edge.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,7 @@ namespace dda::motion {
 
 struct MixStats {
   std::uint64_t arcs = 0, pieces = 0, batches = 0, aborts = 0, resets = 0, partial = 0, overflow = 0;
-  std::uint64_t position_checks = 0;
+  std::uint64_t position_checks = 0, piece_checks = 0;
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).

@@ -24,13 +24,14 @@ int sc_main(int argc, char* argv[]) {
     const auto a = dda::motion::run_motion_mix(h, seed, arcs / 2, false);
     const auto b = dda::motion::run_motion_mix(h, seed + 1000003, arcs - arcs / 2, true);
     std::printf(
-        "motion regression: seed %llu: %llu arcs in %llu pieces (%llu batches: %llu position checks, %llu aborts, "
-        "%llu resets, %llu partial commits, %llu overflows), %llu cycles co-simulated, 0 mismatches\n",
+        "motion regression: seed %llu: %llu arcs in %llu pieces (%llu ended on their end points; %llu batches: %llu "
+        "position checks, %llu aborts, %llu resets, %llu partial commits, %llu overflows), %llu cycles co-simulated, "
+        "0 mismatches\n",
         (unsigned long long)seed, (unsigned long long)(a.arcs + b.arcs), (unsigned long long)(a.pieces + b.pieces),
-        (unsigned long long)(a.batches + b.batches), (unsigned long long)(a.position_checks + b.position_checks),
-        (unsigned long long)(a.aborts + b.aborts), (unsigned long long)(a.resets + b.resets),
-        (unsigned long long)(a.partial + b.partial), (unsigned long long)(a.overflow + b.overflow),
-        (unsigned long long)h.cycle());
+        (unsigned long long)(a.piece_checks + b.piece_checks), (unsigned long long)(a.batches + b.batches),
+        (unsigned long long)(a.position_checks + b.position_checks), (unsigned long long)(a.aborts + b.aborts),
+        (unsigned long long)(a.resets + b.resets), (unsigned long long)(a.partial + b.partial),
+        (unsigned long long)(a.overflow + b.overflow), (unsigned long long)h.cycle());
   } catch (const std::exception& e) {
     std::cerr << "motion regression: seed " << seed << ": " << e.what() << '\n';
     return 1;

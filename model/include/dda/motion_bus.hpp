@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <vector>
 
 #include "dda/motion_model.hpp"
 
@@ -23,6 +24,9 @@ class BusTarget {
   virtual void tick(const BusIn& bus) = 0;
   // The outputs after the last edge.
   virtual const BlockOutputs& outputs() const = 0;
+  // The reference model beside the target, after the last edge (equal to the target's
+  // registers: every target checks that edge by edge).
+  virtual const MotionModel& model() const = 0;
 };
 
 // The reference model alone; `on_edge` sees every edge's inputs and the state after it.
@@ -33,13 +37,42 @@ class ModelTarget : public BusTarget {
   void set_ce(bool ce) override { ce_ = ce; }
   void tick(const BusIn& bus) override;
   const BlockOutputs& outputs() const override { return out_; }
-  const MotionModel& model() const { return model_; }
+  const MotionModel& model() const override { return model_; }
   std::function<void(const BlockInputs&, const MotionModel&)> on_edge;
 
  private:
   MotionModel model_;
   BlockOutputs out_;
   bool rst_n_ = true, ce_ = true;
+};
+
+// Checks every finished piece's end point: a target between the master and the block
+// that, on every edge where DONE_COUNT advances, compares the position counters with
+// the next expected end point (the caller lists them with expect(), in queue order);
+// an ERR_COUNT change (a planner's command that stalled) or a piece finished with no
+// end point expected is an error too. flush() forgets the expectations (after an abort
+// or a reset). Throws GuardError naming the piece and both positions.
+class PieceMonitor : public BusTarget {
+ public:
+  explicit PieceMonitor(BusTarget& inner) : t_(inner) {}
+  void set_reset(bool rst_n) override;
+  void set_ce(bool ce) override { t_.set_ce(ce); }
+  void tick(const BusIn& bus) override;
+  const BlockOutputs& outputs() const override { return t_.outputs(); }
+  const MotionModel& model() const override { return t_.model(); }
+  void expect(Point end) { ends_.push_back(end); }
+  void flush() {
+    ends_.clear();
+    next_ = 0;
+  }
+  std::uint64_t checked() const { return checked_; }
+
+ private:
+  BusTarget& t_;
+  std::vector<Point> ends_;  // front: the next piece to finish
+  std::size_t next_ = 0;
+  std::uint64_t done_ = 0, err_ = 0, checked_ = 0;
+  bool reset_ = false;
 };
 
 // A Wishbone B4 master: one transfer at a time (the block answers one request every
