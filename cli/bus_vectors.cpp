@@ -97,16 +97,10 @@ std::string bus_verilog_fields() {
   s << "`define DDA_BVEC_EXP_WIDTH " << w << "\n";
   s << "`define DDA_BVEC_GOT {";
   for (std::size_t i = 0; i < ef.size(); ++i) s << (i ? ", " : "") << ef[i].verilog;
-  s << "}\n`define DDA_BVEC_REPORT(cyc, exp, got) \\\n";
-  int msb = w - 1;
-  for (std::size_t i = 0; i < ef.size(); ++i) {
-    const int lsb = msb - ef[i].width + 1;
-    s << "  " << (i ? "else " : "") << "if ((exp[" << msb << ":" << lsb << "]) !== (got[" << msb << ":" << lsb
-      << "])) $display(\"MISMATCH cycle %0d field " << ef[i].name << ": expected 'h%0h, got 'h%0h\", cyc, exp[" << msb
-      << ":" << lsb << "], got[" << msb << ":" << lsb << "]); \\\n";
-    msb = lsb - 1;
-  }
-  s << "  else $display(\"MISMATCH cycle %0d\", cyc);\n";
+  s << "}\n";
+  std::vector<std::pair<std::string, int>> named;
+  for (const auto& f : ef) named.emplace_back(f.name, f.width);
+  s << report_macro("DDA_BVEC_REPORT", named);
   return s.str();
 }
 

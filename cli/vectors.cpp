@@ -114,6 +114,23 @@ void write_text(const fs::path& p, const std::string& text) {
 
 }  // namespace
 
+std::string report_macro(const std::string& macro, const std::vector<std::pair<std::string, int>>& fields) {
+  int w = 0;
+  for (const auto& f : fields) w += f.second;
+  std::ostringstream s;
+  s << "`define " << macro << "(cyc, exp, got) \\\n";
+  int msb = w - 1;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const int lsb = msb - fields[i].second + 1;
+    s << "  " << (i ? "else " : "") << "if ((exp[" << msb << ":" << lsb << "]) !== (got[" << msb << ":" << lsb
+      << "])) $display(\"MISMATCH cycle %0d field " << fields[i].first << ": expected 'h%0h, got 'h%0h\", cyc, exp["
+      << msb << ":" << lsb << "], got[" << msb << ":" << lsb << "]); \\\n";
+    msb = lsb - 1;
+  }
+  s << "  else $display(\"MISMATCH cycle %0d\", cyc);\n";
+  return s.str();
+}
+
 std::string verilog_fields(const hw::SignalTable& t) {
   const auto ef = expect_fields(t);
   const int w = total_width(ef);
@@ -132,16 +149,9 @@ std::string verilog_fields(const hw::SignalTable& t) {
   for (std::size_t i = 0; i < ef.size(); ++i) s << (i ? ", " : "") << ef[i].verilog;
   s << "}\n";
   s << "// Reports the first field (most significant first) where exp and got differ.\n";
-  s << "`define DDA_VEC_REPORT(cyc, exp, got) \\\n";
-  int msb = w - 1;
-  for (std::size_t i = 0; i < ef.size(); ++i) {
-    const int lsb = msb - ef[i].width + 1;
-    s << "  " << (i ? "else " : "") << "if ((exp[" << msb << ":" << lsb << "]) !== (got[" << msb << ":" << lsb
-      << "])) $display(\"MISMATCH cycle %0d field " << ef[i].name << ": expected 'h%0h, got 'h%0h\", cyc, exp[" << msb
-      << ":" << lsb << "], got[" << msb << ":" << lsb << "]); \\\n";
-    msb = lsb - 1;
-  }
-  s << "  else $display(\"MISMATCH cycle %0d\", cyc);\n";
+  std::vector<std::pair<std::string, int>> named;
+  for (const auto& f : ef) named.emplace_back(f.name, f.width);
+  s << report_macro("DDA_VEC_REPORT", named);
   return s.str();
 }
 

@@ -38,6 +38,10 @@ std::string bus_verilog_fields();
 // directory renamed into place; an existing out_dir must be a vector set (manifest.json).
 void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files);
 
+// A Verilog macro NAME(cyc, exp, got) that prints the first field (most significant
+// first, name and width) where the expected and the sampled words differ.
+std::string report_macro(const std::string& macro, const std::vector<std::pair<std::string, int>>& fields);
+
 // The bench's field table (tb/hdl/dda_vec_fields.vh), generated from the register table.
 std::string verilog_fields(const hw::SignalTable& t = hw::signal_table());
 

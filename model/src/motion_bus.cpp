@@ -86,26 +86,12 @@ void WishboneMaster::idle(int cycles) {
   }
 }
 
-std::uint32_t reg_offset(std::string_view name) {
-  for (const auto& r : kRegisters) {
-    if (r.name == name) return r.offset;
-  }
-  throw GuardError("motion: no register " + std::string(name));
-}
-
 std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value) {
-  for (const auto& f : kFields) {
-    if (f.reg == reg && f.name == field) return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
-  }
-  throw GuardError("motion: no field " + std::string(reg) + "." + std::string(field));
+  const Field& f = field_of(reg, field);
+  return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
 }
 
-std::uint32_t field_bit(std::string_view reg, std::string_view field) {
-  for (const auto& f : kFields) {
-    if (f.reg == reg && f.name == field) return 1u << f.lsb;
-  }
-  throw GuardError("motion: no field " + std::string(reg) + "." + std::string(field));
-}
+std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
 void MotionDriver::queue(const Command& c) {
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));

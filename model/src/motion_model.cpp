@@ -8,19 +8,6 @@ namespace dda::motion {
 
 namespace {
 
-std::uint32_t reg_addr(std::string_view name) {
-  for (const auto& r : kRegisters) {
-    if (r.name == name) return r.offset;
-  }
-  throw GuardError("motion model: no register " + std::string(name));
-}
-std::uint32_t field_lsb(std::string_view reg, std::string_view name) {
-  for (const auto& f : kFields) {
-    if (f.reg == reg && f.name == name) return std::uint32_t(f.lsb);
-  }
-  throw GuardError("motion model: no field " + std::string(reg) + "." + std::string(name));
-}
-
 // The index of an output port in PortValues (the outputs of kPorts, in order).
 constexpr std::size_t out(std::string_view name) {
   std::size_t i = 0;
@@ -149,29 +136,29 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   const std::uint64_t level = get("level_q");
   const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
   const Signals& s = core_.state();
-  if (adr == reg_addr("ID")) return kId;
-  if (adr == reg_addr("VERSION")) return std::uint32_t(kVersionMajor) << 16 | std::uint32_t(kVersionMinor);
-  if (adr == reg_addr("CONFIG")) {
-    return std::uint32_t(kEntryWords) << field_lsb("CONFIG", "entry_words") |
-           std::uint32_t(depth_log2_) << field_lsb("CONFIG", "depth_log2") |
-           std::uint32_t(hw::kAccWidth) << field_lsb("CONFIG", "acc_width") |
-           std::uint32_t(hw::kCntWidth) << field_lsb("CONFIG", "cnt_width");
+  if (adr == reg_offset("ID")) return kId;
+  if (adr == reg_offset("VERSION")) return std::uint32_t(kVersionMajor) << 16 | std::uint32_t(kVersionMinor);
+  if (adr == reg_offset("CONFIG")) {
+    return std::uint32_t(kEntryWords) << std::uint32_t(field_of("CONFIG", "entry_words").lsb) |
+           std::uint32_t(depth_log2_) << std::uint32_t(field_of("CONFIG", "depth_log2").lsb) |
+           std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
+           std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb);
   }
-  if (adr == reg_addr("STATUS")) {
-    const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_lsb("STATUS", f); };
+  if (adr == reg_offset("STATUS")) {
+    const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
     return bit("busy", CoreModel::busy(s)) | bit("empty", level == 0) | bit("full", level == depth) |
            bit("err", get("err_q")) | bit("err_overflow", get("err_overflow_q")) |
            bit("err_partial", get("err_partial_q")) | bit("err_stall", get("err_stall_q")) |
-           bit("aborted", get("aborted_q")) | std::uint32_t(level) << field_lsb("STATUS", "level");
+           bit("aborted", get("aborted_q")) | std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
   }
-  if (adr == reg_addr("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
-  if (adr == reg_addr("IRQ_ENABLE")) return std::uint32_t(get("irq_enable_q"));
-  if (adr == reg_addr("IRQ_LEVEL")) return std::uint32_t(get("irq_level_q"));
-  if (adr == reg_addr("DONE_COUNT")) return std::uint32_t(get("done_count_q"));
-  if (adr == reg_addr("ERR_COUNT")) return std::uint32_t(get("err_count_q"));
-  if (adr == reg_addr("POS_X")) return std::uint32_t(get("pos_x_q"));
-  if (adr == reg_addr("POS_Y")) return std::uint32_t(get("pos_y_q"));
-  if (adr == reg_addr("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
+  if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
+  if (adr == reg_offset("IRQ_ENABLE")) return std::uint32_t(get("irq_enable_q"));
+  if (adr == reg_offset("IRQ_LEVEL")) return std::uint32_t(get("irq_level_q"));
+  if (adr == reg_offset("DONE_COUNT")) return std::uint32_t(get("done_count_q"));
+  if (adr == reg_offset("ERR_COUNT")) return std::uint32_t(get("err_count_q"));
+  if (adr == reg_offset("POS_X")) return std::uint32_t(get("pos_x_q"));
+  if (adr == reg_offset("POS_Y")) return std::uint32_t(get("pos_y_q"));
+  if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
   return 0;
 }
 
@@ -198,10 +185,10 @@ void MotionModel::edge(const BlockInputs& in) {
 
   const bool req = b.cyc && b.stb && !get("ack_q");
   const bool wr = req && b.we;
-  const bool wr_ctrl = wr && adr == reg_addr("CTRL");
-  const bool commit = wr_ctrl && ((b.dat >> field_lsb("CTRL", "commit")) & 1u);
-  const bool abort = wr_ctrl && ((b.dat >> field_lsb("CTRL", "abort")) & 1u);
-  const bool clear = wr_ctrl && ((b.dat >> field_lsb("CTRL", "clear")) & 1u);
+  const bool wr_ctrl = wr && adr == reg_offset("CTRL");
+  const bool commit = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
+  const bool abort = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
+  const bool clear = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = adr >= kEntryBase && adr < kEntryBase + 4u * kEntryWords;
   const std::uint32_t word = (adr - kEntryBase) >> 2;
 
@@ -265,16 +252,16 @@ void MotionModel::edge(const BlockInputs& in) {
   reg("err_partial_q") = (get("err_partial_q") && !clear) || err_partial;
   reg("err_stall_q") = (get("err_stall_q") && !clear) || core_err;
   reg("aborted_q") = (get("aborted_q") && !clear) || abort;
-  const std::uint64_t w1c = wr && adr == reg_addr("IRQ_STATUS") ? (b.dat & 7u) : 0;
+  const std::uint64_t w1c = wr && adr == reg_offset("IRQ_STATUS") ? (b.dat & 7u) : 0;
   reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
-  if (wr && adr == reg_addr("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
-  if (wr && adr == reg_addr("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
+  if (wr && adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
+  if (wr && adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
   reg("done_count_q") = (get("done_count_q") + core_done) & 0xFFFFFFFFu;
   reg("err_count_q") = (get("err_count_q") + core_err) & 0xFFFFFFFFu;
   const std::uint64_t dx = step_x ? (dir_x ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint64_t dy = step_y ? (dir_y ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint64_t px = wr && adr == reg_addr("POS_X") ? b.dat : get("pos_x_q");
-  const std::uint64_t py = wr && adr == reg_addr("POS_Y") ? b.dat : get("pos_y_q");
+  const std::uint64_t px = wr && adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
+  const std::uint64_t py = wr && adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
   reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
   reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
 }

@@ -7,20 +7,9 @@ namespace {
 
 using motion::kEntryWords;
 
-std::uint32_t addr_of(std::string_view name) {
-  for (const auto& r : motion::kRegisters) {
-    if (r.name == name) return r.offset;
-  }
-  return ~0u;
-}
-std::uint32_t lsb_of(std::string_view reg, std::string_view field) {
-  for (const auto& f : motion::kFields) {
-    if (f.reg == reg && f.name == field) return std::uint32_t(f.lsb);
-  }
-  return 0;
-}
-const std::uint32_t kCtrl = addr_of("CTRL"), kIrqStatus = addr_of("IRQ_STATUS"), kIrqEnable = addr_of("IRQ_ENABLE"),
-                    kIrqLevel = addr_of("IRQ_LEVEL"), kPosX = addr_of("POS_X"), kPosY = addr_of("POS_Y");
+const std::uint32_t kCtrl = motion::reg_offset("CTRL"), kIrqStatus = motion::reg_offset("IRQ_STATUS"),
+                    kIrqEnable = motion::reg_offset("IRQ_ENABLE"), kIrqLevel = motion::reg_offset("IRQ_LEVEL"),
+                    kPosX = motion::reg_offset("POS_X"), kPosY = motion::reg_offset("POS_Y");
 
 cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
   cmd_t c;
@@ -60,7 +49,8 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
 void dda_motion::comb() {
   const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
-  const bool abort = req && wb_we_i.read() && adr == kCtrl && ((wb_dat_i.read() >> lsb_of("CTRL", "abort")) & 1u);
+  const bool abort = req && wb_we_i.read() && adr == kCtrl &&
+                     ((wb_dat_i.read() >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(primed_q.read() && level_q.read() != 0);
   wb_ack_o.write(ack_q.read());
@@ -76,29 +66,29 @@ void dda_motion::comb() {
 
 std::uint32_t dda_motion::read(std::uint32_t adr) const {
   const std::uint32_t level = level_q.read(), depth = 1u << depth_log2_;
-  if (adr == addr_of("ID")) return motion::kId;
-  if (adr == addr_of("VERSION")) return std::uint32_t(motion::kVersionMajor) << 16 | motion::kVersionMinor;
-  if (adr == addr_of("CONFIG")) {
-    return std::uint32_t(kEntryWords) << lsb_of("CONFIG", "entry_words") |
-           std::uint32_t(depth_log2_) << lsb_of("CONFIG", "depth_log2") |
-           std::uint32_t(hw::kAccWidth) << lsb_of("CONFIG", "acc_width") |
-           std::uint32_t(hw::kCntWidth) << lsb_of("CONFIG", "cnt_width");
+  if (adr == motion::reg_offset("ID")) return motion::kId;
+  if (adr == motion::reg_offset("VERSION")) return std::uint32_t(motion::kVersionMajor) << 16 | motion::kVersionMinor;
+  if (adr == motion::reg_offset("CONFIG")) {
+    return std::uint32_t(kEntryWords) << std::uint32_t(motion::field_of("CONFIG", "entry_words").lsb) |
+           std::uint32_t(depth_log2_) << std::uint32_t(motion::field_of("CONFIG", "depth_log2").lsb) |
+           std::uint32_t(hw::kAccWidth) << std::uint32_t(motion::field_of("CONFIG", "acc_width").lsb) |
+           std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb);
   }
-  if (adr == addr_of("STATUS")) {
-    const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << lsb_of("STATUS", f); };
+  if (adr == motion::reg_offset("STATUS")) {
+    const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
     return bit("busy", core_busy.read()) | bit("empty", level == 0) | bit("full", level == depth) |
            bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
            bit("err_partial", err_partial_q.read()) | bit("err_stall", err_stall_q.read()) |
-           bit("aborted", aborted_q.read()) | level << lsb_of("STATUS", "level");
+           bit("aborted", aborted_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
   if (adr == kIrqEnable) return irq_enable_q.read();
   if (adr == kIrqLevel) return irq_level_q.read();
-  if (adr == addr_of("DONE_COUNT")) return done_count_q.read();
-  if (adr == addr_of("ERR_COUNT")) return err_count_q.read();
+  if (adr == motion::reg_offset("DONE_COUNT")) return done_count_q.read();
+  if (adr == motion::reg_offset("ERR_COUNT")) return err_count_q.read();
   if (adr == kPosX) return pos_x_q.read();
   if (adr == kPosY) return pos_y_q.read();
-  if (adr == addr_of("ENTRY_MASK")) return mask_q.read();
+  if (adr == motion::reg_offset("ENTRY_MASK")) return mask_q.read();
   return 0;
 }
 
@@ -109,9 +99,9 @@ void dda_motion::seq() {
   const bool wr = req && wb_we_i.read();
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu, dat = wb_dat_i.read();
   const bool wr_ctrl = wr && adr == kCtrl;
-  const bool commit = wr_ctrl && ((dat >> lsb_of("CTRL", "commit")) & 1u);
-  const bool abort = wr_ctrl && ((dat >> lsb_of("CTRL", "abort")) & 1u);
-  const bool clear = wr_ctrl && ((dat >> lsb_of("CTRL", "clear")) & 1u);
+  const bool commit = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
+  const bool abort = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  const bool clear = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = adr >= motion::kEntryBase && adr < motion::kEntryBase + 4u * kEntryWords;
   const std::uint32_t word = (adr - motion::kEntryBase) >> 2;
   const std::uint32_t level = level_q.read(), head = head_q.read(), tail = tail_q.read();

@@ -47,18 +47,8 @@ VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& s
     }
     block_.push_back(Var{v->datap(), bytes_of(*v), width});
   }
-  // The core's register table, read below the block's instance.
-  const std::string core_scope = scope + ".u_core";
-  for (const auto& r : hw::kSignals) {
-    const std::string name(r.name);
-    const auto dot = name.rfind('.');
-    const std::string sc = dot == std::string::npos ? core_scope : core_scope + "." + name.substr(0, dot);
-    const std::string var = dot == std::string::npos ? name : name.substr(dot + 1);
-    const VerilatedScope* cs = ctx.scopeFind(sc.c_str());
-    VerilatedVar* v = cs ? cs->varFind(var.c_str()) : nullptr;
-    if (!v) throw GuardError("motion sampler: the RTL has no public signal " + name + " in " + core_scope);
-    core_.push_back(Var{v->datap(), bytes_of(*v), r.width});
-  }
+  // The core's register table, read below the block's instance by the core's sampler.
+  core_ = std::make_unique<rtl::VlSampler>(ctx, scope + ".u_core", hw::signal_table());
 }
 
 BlockRegs VlBlockSampler::block() const {
@@ -70,14 +60,7 @@ BlockRegs VlBlockSampler::block() const {
   return r;
 }
 
-Signals VlBlockSampler::core() const {
-  Signals s{};
-  for (std::size_t i = 0; i < core_.size(); ++i) {
-    const auto& v = core_[i];
-    s[i] = read_var(v.p, v.bytes) & ((v.width >= 64 ? 0 : std::uint64_t{1} << v.width) - 1);
-  }
-  return s;
-}
+Signals VlBlockSampler::core() const { return core_->read(); }
 
 std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m) {
   for (std::size_t i = 0; i < kBlockRegs.size(); ++i) {

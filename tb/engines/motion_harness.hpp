@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dda/motion_bus.hpp"
+#include "vl_sampler.hpp"
 
 class VerilatedContext;
 class VerilatedVcdC;
@@ -38,7 +39,8 @@ class VlBlockSampler {
     int bytes;
     int width;
   };
-  std::vector<Var> block_, core_;
+  std::vector<Var> block_;
+  std::unique_ptr<rtl::VlSampler> core_;
 };
 
 // Compares what a block holds with what the reference model holds; "" when equal, else

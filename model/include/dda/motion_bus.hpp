@@ -101,8 +101,7 @@ class WishboneMaster {
   int idle_percent_;
 };
 
-// Register offsets and fields by name (from kRegisters, kFields).
-std::uint32_t reg_offset(std::string_view name);
+// A field's value in a register's word, and its bit (one-bit fields) by name.
 std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value);
 std::uint32_t field_bit(std::string_view reg, std::string_view field);
 

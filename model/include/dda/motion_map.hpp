@@ -101,6 +101,21 @@ inline constexpr std::array<Field, 32> kFields{{
     {"ENTRY_MASK", "words", 0, kEntryWords, "bit k: word k written"},
     {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31"},
 }};
+// A register's offset and a field by name (a name not in the map does not compile where
+// the result is a constant expression; at run time it throws).
+constexpr std::uint32_t reg_offset(std::string_view name) {
+  for (const auto& r : kRegisters) {
+    if (r.name == name) return r.offset;
+  }
+  throw "motion_map: no such register";
+}
+constexpr const Field& field_of(std::string_view reg, std::string_view name) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == name) return f;
+  }
+  throw "motion_map: no such field";
+}
+
 // Copies the checks take (a drift test hands them a changed copy).
 struct Map {
   std::vector<Register> regs;
