@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Where the motion block's own logic goes (docs/results.md, "The motion block on the
+# HX8K"): Yosys synth_ice40 of rtl/dda_motion.v with the core a black box, as
+# scripts/synth counts it, then of edited copies, each without one feature, so the
+# difference is what that feature costs. The copies are made by exact text
+# substitutions; a substitution that no longer matches the RTL stops the script.
+#   usage: scripts/motion-area.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+core_srcs=$(scripts/rtl-files.sh rtl/dda_core.f | tr "\n" " ")
+
+luts() {  # luts FILE [DEPTH_LOG2] -> "LUT4s flip-flops carry-cells"
+  local chp=""
+  [ -n "${2:-}" ] && chp="chparam -set DepthLog2 $2 dda_motion;"
+  yosys -q -p "read_verilog -sv -DDDA_ICE40 -Irtl $core_srcs $1; blackbox dda_core; $chp \
+    synth_ice40 -top dda_motion; tee -o $work/stat.txt stat" >/dev/null
+  awk '$1 == "SB_LUT4" {l += $2} $1 ~ /^SB_DFF/ {f += $2} $1 == "SB_CARRY" {c += $2}
+       END {print l + 0, f + 0, c + 0}' "$work/stat.txt"
+}
+variant() {  # variant NAME 'OLD' 'NEW' ['OLD' 'NEW' ...]: a copy of the RTL with edits
+  local out="$work/$1.v"; shift
+  cp rtl/dda_motion.v "$out"
+  while [ $# -gt 0 ]; do
+    grep -qF -- "$1" "$out" || { echo "motion-area: '$1' not in rtl/dda_motion.v" >&2; exit 1; }
+    OLD="$1" NEW="$2" awk 'BEGIN {o = ENVIRON["OLD"]; n = ENVIRON["NEW"]}
+      {i = index($0, o); if (i) $0 = substr($0, 1, i - 1) n substr($0, i + length(o)); print}' \
+      "$out" > "$out.tmp" && mv "$out.tmp" "$out"
+    shift 2
+  done
+  echo "$out"
+}
+
+base=$(luts rtl/dda_motion.v)
+read -r base_l base_f base_c <<< "$base"
+row() {  # row LABEL "LUT4s FFs carries"
+  local l f c
+  read -r l f c <<< "$2"
+  printf '| %s | %d | %d | %d | %+d |\n' "$1" "$l" "$f" "$c" $((l - base_l))
+}
+echo "| rtl/dda_motion.v, core a black box | LUT4s | flip-flops | carry cells | LUT4s vs the block |"
+echo "|---|---|---|---|---|"
+row "the block (queue 2^8 entries)" "$base"
+row "queue 2^3 entries (DepthLog2 = 3)" "$(luts rtl/dda_motion.v 3)"
+row "no position preset" "$(luts "$(variant nopreset \
+  '(wr_pos_x ? wb_dat_i : pos_x_q) + dx' 'pos_x_q + dx' '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy')")"
+row "done and err counters of 16 bits" "$(luts "$(variant count16 \
+  'reg [31:0] done_count_q' 'reg [15:0] done_count_q' 'reg [31:0] err_count_q' 'reg [15:0] err_count_q' \
+  "{31'd0, core_done}" "{15'd0, core_done}" "{31'd0, core_err}" "{15'd0, core_err}")")"
+row "read multiplexer replaced by the XOR of the four 32-bit registers" "$(luts "$(variant noreadmux \
+  'if (req && !wb_we_i) dat_q <= rd;' 'if (req && !wb_we_i) dat_q <= pos_x_q ^ pos_y_q ^ done_count_q ^ err_count_q;')")"
+# One position counter by itself: a 32-bit counter with a preset and a +-1 step.
+cat > "$work/counter.v" <<'EOF'
+module counter (input clk, input rst_ni, input wr, input [31:0] d, input step, input dir, output reg [31:0] q);
+  wire [31:0] dx = step ? (dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  always @(posedge clk) if (!rst_ni) q <= 32'd0; else q <= (wr ? d : q) + dx;
+endmodule
+EOF
+yosys -q -p "read_verilog $work/counter.v; synth_ice40 -top counter; tee -o $work/stat.txt stat" >/dev/null
+echo
+echo "one position counter alone (32 bits, preset, +-1 step): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"
