@@ -2,4 +2,5 @@
 // The sources of the motion block (dda_motion top: the core on a Wishbone bus, with its
 // command queue; docs/design.md "Motion block"). $(DDA_RTL) as in rtl/dda_core.f.
 -f $(DDA_RTL)/dda_core.f
+$(DDA_RTL)/dda_stepdir.v
 $(DDA_RTL)/dda_motion.v

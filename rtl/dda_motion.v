@@ -19,9 +19,14 @@
 // Refused, with a sticky error: an entry word or a commit while the queue is full
 // (err_overflow), a commit before every word was written (err_partial). The core's
 // err_o (a stalled command) sets err_stall.
-// Abort (CTRL.abort): the core is reset on the edge that takes the write (the step
-// pulses of the cycle before it are counted), the queue and the entry being written
-// are flushed, STATUS.aborted is set.
+// Abort (CTRL.abort): the core is reset on the edge that takes the write, the queue and
+// the entry being written are flushed, the steps waiting in the step/dir stages are
+// dropped (a pulse already out finishes its steplen), STATUS.aborted is set.
+// Axes (docs/design.md, "Step and direction timing"): each core step goes through a
+// step/dir stage (rtl/dda_stepdir.v) with the axis' four timings; the position counters
+// count the pulses the stages start. Feed: a phase accumulator adds the running entry's
+// feed increment every cycle the core may go on; its carry (or an increment of 0) lets
+// the core iterate; while a stage holds the core the accumulator waits.
 `include "dda_params.vh"
 `include "dda_motion_regs.vh"
 
@@ -55,6 +60,8 @@ module dda_motion #(
   localparam integer Lanes = 2 * Words;
   localparam integer LW    = `DDA_MOTION_LEVEL_WIDTH;
   localparam [LW-1:0] Depth = LW'(1) << DepthLog2;
+  localparam integer TW = `DDA_MOTION_TIMING_WIDTH;
+  localparam integer FW = `DDA_MOTION_FEED_WIDTH;
 
   // ---- bus ----
   reg         ack_q /* verilator public_flat_rd */;
@@ -92,6 +99,7 @@ module dda_motion #(
   wire                 err_partial  = commit & ~abort & ~full & ~(&mask_q);
 
   wire        core_ready, core_busy, core_done, core_err, core_iter;
+  wire        core_step_x, core_step_y, core_dir_x, core_dir_y;
   wire        cmd_valid = primed_q & ~empty;
   wire        take      = cmd_valid & core_ready & ~abort;  // the core loads the head entry
   wire [DepthLog2-1:0] head_d = !rst_ni ? '0 : abort ? tail_q : take ? head_q + 1'b1 : head_q;
@@ -133,27 +141,111 @@ module dda_motion #(
     end
     assign entry_q[16*l+:16] = rd_q;
   end
-  wire unused_entry = &{1'b0, entry_q[16*Lanes-1:`DDA_CMD_WIDTH]};
+  // The feed increment: the top FW bits of the entry's last word (above the command).
+  wire [FW-1:0] entry_feed = entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB +: FW];
+  wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:`DDA_CMD_WIDTH]};
+
+  // ---- feed: the phase accumulator that paces the core ----
+  reg  [FW-1:0] feed_q /* verilator public_flat_rd */;  // the running entry's increment
+  reg  [FW-1:0] acc_q  /* verilator public_flat_rd */;
+  wire          hold;                                   // a step/dir stage holds the core
+  wire          advance = ce_i & ~hold;
+  wire [FW:0]   acc_sum = {1'b0, acc_q} + {1'b0, feed_q};
+  wire          core_ce = advance & (feed_q == '0 | acc_sum[FW]);
 
   // ---- the core ----
   dda_core u_core (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni & ~abort),
-    .ce_i        (ce_i),
+    .ce_i        (core_ce),
     .cmd_valid_i (cmd_valid),
     .cmd_ready_o (core_ready),
     .cmd_i       (entry_q[`DDA_CMD_WIDTH-1:0]),
-    .step_x_o    (step_x_o),
-    .step_y_o    (step_y_o),
-    .dir_x_o     (dir_x_o),
-    .dir_y_o     (dir_y_o),
+    .step_x_o    (core_step_x),
+    .step_y_o    (core_step_y),
+    .dir_x_o     (core_dir_x),
+    .dir_y_o     (core_dir_y),
     .busy_o      (core_busy),
     .done_o      (core_done),
     .err_o       (core_err),
     .iter_o      (core_iter)
   );
-  assign busy_o = core_busy;
   wire unused_core = &{1'b0, core_iter};
+
+  always @(posedge clk_i) begin
+    if (!rst_ni || abort) begin
+      feed_q <= '0;
+      acc_q  <= '0;
+    end else begin
+      if (take) feed_q <= entry_feed;
+      if (advance) acc_q <= acc_sum[FW-1:0];
+    end
+  end
+
+  // ---- step/dir stages ----
+  reg [TW-1:0] steplen_x_q   /* verilator public_flat_rd */;
+  reg [TW-1:0] stepspace_x_q /* verilator public_flat_rd */;
+  reg [TW-1:0] dirsetup_x_q  /* verilator public_flat_rd */;
+  reg [TW-1:0] dirhold_x_q   /* verilator public_flat_rd */;
+  reg [TW-1:0] steplen_y_q   /* verilator public_flat_rd */;
+  reg [TW-1:0] stepspace_y_q /* verilator public_flat_rd */;
+  reg [TW-1:0] dirsetup_y_q  /* verilator public_flat_rd */;
+  reg [TW-1:0] dirhold_y_q   /* verilator public_flat_rd */;
+  reg [3:0]    polarity_q    /* verilator public_flat_rd */;  // {dir_y, step_y, dir_x, step_x}
+  wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_busy;
+  wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_busy;
+  dda_stepdir #(.TW(TW)) u_sx (
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_x), .dir_i(core_dir_x),
+    .steplen_i(steplen_x_q), .stepspace_i(stepspace_x_q), .dirsetup_i(dirsetup_x_q), .dirhold_i(dirhold_x_q),
+    .step_o(sx_step), .dir_o(sx_dir), .hold_o(sx_hold), .rise_o(sx_rise), .rise_dir_o(sx_rise_dir), .busy_o(sx_busy)
+  );
+  dda_stepdir #(.TW(TW)) u_sy (
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_y), .dir_i(core_dir_y),
+    .steplen_i(steplen_y_q), .stepspace_i(stepspace_y_q), .dirsetup_i(dirsetup_y_q), .dirhold_i(dirhold_y_q),
+    .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .busy_o(sy_busy)
+  );
+  assign hold     = sx_hold | sy_hold;
+  assign step_x_o = sx_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_X_LSB];
+  assign dir_x_o  = sx_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_X_LSB];
+  assign step_y_o = sy_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_Y_LSB];
+  assign dir_y_o  = sy_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_Y_LSB];
+  wire   busy     = core_busy | sx_busy | sy_busy;
+  assign busy_o   = busy;
+  wire wr_step_x = wr & (adr == `DDA_MOTION_STEP_X_ADDR);
+  wire wr_dir_x  = wr & (adr == `DDA_MOTION_DIR_X_ADDR);
+  wire wr_step_y = wr & (adr == `DDA_MOTION_STEP_Y_ADDR);
+  wire wr_dir_y  = wr & (adr == `DDA_MOTION_DIR_Y_ADDR);
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      steplen_x_q   <= '0;
+      stepspace_x_q <= '0;
+      dirsetup_x_q  <= '0;
+      dirhold_x_q   <= '0;
+      steplen_y_q   <= '0;
+      stepspace_y_q <= '0;
+      dirsetup_y_q  <= '0;
+      dirhold_y_q   <= '0;
+      polarity_q    <= '0;
+    end else begin
+      if (wr_step_x) begin
+        steplen_x_q   <= wb_dat_i[`DDA_MOTION_STEP_X_STEPLEN_LSB+:TW];
+        stepspace_x_q <= wb_dat_i[`DDA_MOTION_STEP_X_STEPSPACE_LSB+:TW];
+      end
+      if (wr_dir_x) begin
+        dirsetup_x_q <= wb_dat_i[`DDA_MOTION_DIR_X_DIRSETUP_LSB+:TW];
+        dirhold_x_q  <= wb_dat_i[`DDA_MOTION_DIR_X_DIRHOLD_LSB+:TW];
+      end
+      if (wr_step_y) begin
+        steplen_y_q   <= wb_dat_i[`DDA_MOTION_STEP_Y_STEPLEN_LSB+:TW];
+        stepspace_y_q <= wb_dat_i[`DDA_MOTION_STEP_Y_STEPSPACE_LSB+:TW];
+      end
+      if (wr_dir_y) begin
+        dirsetup_y_q <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW];
+        dirhold_y_q  <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW];
+      end
+      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wb_dat_i[3:0];
+    end
+  end
 
   // ---- status, interrupts, counters, positions ----
   reg        err_q          /* verilator public_flat_rd */;
@@ -171,10 +263,16 @@ module dda_motion #(
 
   wire err_set = err_overflow | err_partial | core_err;
   wire low_set = take & (level_d < irq_level_q);
-  wire [2:0] irq_set = {low_set, err_set, core_done};
-  // The steps of the cycle before the edge (the core's registered outputs): +1, -1 or 0.
-  wire [31:0] dx = step_x_o ? (dir_x_o ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
-  wire [31:0] dy = step_y_o ? (dir_y_o ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  // A piece is done when the core has finished it and its last steps have left the
+  // stages (no step waits after this edge): DONE_COUNT, IRQ_STATUS.done and the position
+  // counters agree. The core cannot iterate again before that (the stages hold it).
+  reg  done_wait_q /* verilator public_flat_rd */;
+  wire done_any = core_done | done_wait_q;
+  wire done_evt = done_any & ~hold;
+  wire [2:0] irq_set = {low_set, err_set, done_evt};
+  // The pulses the stages start on this edge: +1, -1 or 0.
+  wire [31:0] dx = sx_rise ? (sx_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  wire [31:0] dy = sy_rise ? (sy_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
   wire wr_pos_x = wr & (adr == `DDA_MOTION_POS_X_ADDR);
   wire wr_pos_y = wr & (adr == `DDA_MOTION_POS_Y_ADDR);
 
@@ -189,6 +287,7 @@ module dda_motion #(
       irq_enable_q   <= '0;
       irq_level_q    <= '0;
       done_count_q   <= '0;
+      done_wait_q    <= 1'b0;
       err_count_q    <= '0;
       pos_x_q        <= '0;
       pos_y_q        <= '0;
@@ -203,7 +302,8 @@ module dda_motion #(
                         | irq_set;
       if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wb_dat_i[2:0];
       if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wb_dat_i[LW-1:0];
-      done_count_q <= done_count_q + {31'd0, core_done};
+      done_count_q <= done_count_q + {31'd0, done_evt};
+      done_wait_q  <= done_any & hold & ~abort;
       err_count_q  <= err_count_q + {31'd0, core_err};
       // A preset is the position before the steps of the same edge: none is lost.
       pos_x_q <= (wr_pos_x ? wb_dat_i : pos_x_q) + dx;
@@ -226,7 +326,7 @@ module dda_motion #(
         rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
       end
       `DDA_MOTION_STATUS_ADDR: begin
-        rd[`DDA_MOTION_STATUS_BUSY_LSB]         = core_busy;
+        rd[`DDA_MOTION_STATUS_BUSY_LSB]         = busy;
         rd[`DDA_MOTION_STATUS_EMPTY_LSB]        = empty;
         rd[`DDA_MOTION_STATUS_FULL_LSB]         = full;
         rd[`DDA_MOTION_STATUS_ERR_LSB]          = err_q;
@@ -244,6 +344,23 @@ module dda_motion #(
       `DDA_MOTION_POS_X_ADDR:      rd = pos_x_q;
       `DDA_MOTION_POS_Y_ADDR:      rd = pos_y_q;
       `DDA_MOTION_ENTRY_MASK_ADDR: rd[Words-1:0] = mask_q;
+      `DDA_MOTION_STEP_X_ADDR: begin
+        rd[`DDA_MOTION_STEP_X_STEPLEN_LSB+:TW]   = steplen_x_q;
+        rd[`DDA_MOTION_STEP_X_STEPSPACE_LSB+:TW] = stepspace_x_q;
+      end
+      `DDA_MOTION_DIR_X_ADDR: begin
+        rd[`DDA_MOTION_DIR_X_DIRSETUP_LSB+:TW] = dirsetup_x_q;
+        rd[`DDA_MOTION_DIR_X_DIRHOLD_LSB+:TW]  = dirhold_x_q;
+      end
+      `DDA_MOTION_STEP_Y_ADDR: begin
+        rd[`DDA_MOTION_STEP_Y_STEPLEN_LSB+:TW]   = steplen_y_q;
+        rd[`DDA_MOTION_STEP_Y_STEPSPACE_LSB+:TW] = stepspace_y_q;
+      end
+      `DDA_MOTION_DIR_Y_ADDR: begin
+        rd[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW] = dirsetup_y_q;
+        rd[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW]  = dirhold_y_q;
+      end
+      `DDA_MOTION_POLARITY_ADDR: rd[3:0] = polarity_q;
       default: rd = 32'd0;
     endcase
   end

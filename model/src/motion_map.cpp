@@ -33,8 +33,10 @@ std::string_view access_name(Access a) {
 
 std::string constants_comment() {
   return fmt::format(
-      "ID 0x{:08X}, version {}.{}, entry {} words ({} command bits, {} reserved), AccWidth {}, CntWidth {}", kId,
-      kVersionMajor, kVersionMinor, kEntryWords, hw::kCmdWidth, kEntrySpareBits, hw::kAccWidth, hw::kCntWidth);
+      "ID 0x{:08X}, version {}.{}, entry {} words ({} command bits, {} reserved, a {}-bit feed increment at bit {} "
+      "of word {}), AccWidth {}, CntWidth {}",
+      kId, kVersionMajor, kVersionMinor, kEntryWords, hw::kCmdWidth, kEntrySpareBits - kFeedWidth, kFeedWidth, kFeedLsb,
+      kFeedWord, hw::kAccWidth, hw::kCntWidth);
 }
 
 }  // namespace
@@ -107,8 +109,12 @@ std::string c_header(const Map& m) {
   o += fmt::format("#define DDA_MOTION_ID_VALUE 0x{:08X}u\n", kId);
   o += fmt::format("#define DDA_MOTION_VERSION_MAJOR {}u\n#define DDA_MOTION_VERSION_MINOR {}u\n", kVersionMajor,
                    kVersionMinor);
-  o += fmt::format("#define DDA_MOTION_ENTRY_WORDS {}u\n#define DDA_MOTION_CMD_BITS {}u\n\n", kEntryWords,
+  o += fmt::format("#define DDA_MOTION_ENTRY_WORDS {}u\n#define DDA_MOTION_CMD_BITS {}u\n", kEntryWords,
                    hw::kCmdWidth);
+  o += fmt::format(
+      "#define DDA_MOTION_FEED_WORD {}u  /* the entry word holding the feed increment */\n"
+      "#define DDA_MOTION_FEED_LSB {}u\n#define DDA_MOTION_FEED_MASK 0x{:08X}u\n#define DDA_MOTION_TIMING_WIDTH {}u\n\n",
+      kFeedWord, kFeedLsb, ((std::uint64_t{1} << kFeedWidth) - 1) << kFeedLsb, kTimingWidth);
   for (const auto& r : m.regs) {
     o += fmt::format("#define DDA_MOTION_{}_OFFSET 0x{:02X}u  /* {}: {} */\n", upper(r.name), r.offset,
                      access_name(r.access), r.meaning);
@@ -135,7 +141,10 @@ std::string verilog_header(const Map& m) {
   o += fmt::format("`define DDA_MOTION_ID_VALUE 32'h{:08X}\n", kId);
   o += fmt::format("`define DDA_MOTION_VERSION_VALUE 32'h{:04X}{:04X}\n", kVersionMajor, kVersionMinor);
   o += fmt::format("`define DDA_MOTION_ENTRY_WORDS {}\n`define DDA_MOTION_LEVEL_WIDTH {}\n", kEntryWords, kLevelWidth);
-  o += fmt::format("`define DDA_MOTION_MAX_DEPTH_LOG2 {}\n\n", kMaxDepthLog2);
+  o += fmt::format("`define DDA_MOTION_MAX_DEPTH_LOG2 {}\n", kMaxDepthLog2);
+  o += fmt::format("`define DDA_MOTION_FEED_WORD {}\n`define DDA_MOTION_FEED_LSB {}\n`define DDA_MOTION_FEED_WIDTH {}\n",
+                   kFeedWord, kFeedLsb, kFeedWidth);
+  o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n\n", kTimingWidth);
   for (const auto& r : m.regs) {
     o += fmt::format("`define DDA_MOTION_{}_ADDR {}'h{:02X}  // {}\n", upper(r.name), kAddrWidth, r.offset,
                      access_name(r.access));

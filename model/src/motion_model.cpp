@@ -45,6 +45,12 @@ int width_bits(Width w, int depth_log2) {
       return 1;
     case Width::Three:
       return 3;
+    case Width::Four:
+      return 4;
+    case Width::Timing:
+      return kTimingWidth;
+    case Width::Feed:
+      return kFeedWidth;
     case Width::Word:
       return 32;
     case Width::Level:
@@ -102,9 +108,11 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
   return hw::gtkw_file(g, "the DDA motion block", file, top);
 }
 
-std::vector<std::uint32_t> entry_words(const Command& c) {
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed) {
+  if (feed >> kFeedWidth) throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
   std::vector<std::uint32_t> w = hw::pack_command(c);
   w.resize(kEntryWords, 0);
+  w[kFeedWord] |= feed << kFeedLsb;
   return w;
 }
 
@@ -124,18 +132,79 @@ CmdFields entry_fields(const std::vector<std::uint32_t>& words) {
   return f;
 }
 
+StageRegs stage_reset() {
+  StageRegs r;
+  r.tf = r.ts = std::uint32_t(mask_of(kTimingWidth));
+  return r;
+}
+
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool flush) {
+  const std::uint32_t sat = std::uint32_t(mask_of(kTimingWidth));
+  const std::uint32_t len = t.steplen == 0 ? 1 : t.steplen, space = t.stepspace == 0 ? 1 : t.stepspace;
+  const bool fall = r.step && r.tf >= len;
+  const bool dir_ok = r.step ? (fall && t.dirhold == 0) : r.tf >= t.dirhold;
+  const bool change = r.pend && r.pdir != r.dir && dir_ok;
+  const bool dir_d = change ? r.pdir : r.dir;
+  const std::uint32_t ts_now = change ? 0 : r.ts;
+  const bool rise = r.pend && !r.step && r.tf >= space && dir_d == r.pdir && ts_now >= t.dirsetup;
+  StageEdge e;
+  e.hold = (r.pend && !rise) || step_in;
+  e.rise = rise;
+  e.rise_dir = r.pdir;
+  e.busy = r.pend || r.step;
+  e.next.step = rise || (r.step && !fall);
+  e.next.dir = dir_d;
+  e.next.tf = (rise || fall) ? 1 : r.tf == sat ? sat : r.tf + 1;
+  e.next.ts = change ? 1 : r.ts == sat ? sat : r.ts + 1;
+  e.next.pend = !flush && ((r.pend && !rise) || step_in);
+  e.next.pdir = step_in ? dir_in : r.pdir;
+  return e;
+}
+
 MotionModel::MotionModel(int depth_log2)
     : depth_log2_(depth_log2), mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
   if (depth_log2 < 1 || depth_log2 > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");
 }
 
 std::uint64_t MotionModel::get(std::string_view name) const { return r_[breg(name)]; }
+
+StageRegs MotionModel::stage(char axis) const {
+  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  StageRegs s;
+  s.step = get(p + "step_q") != 0;
+  s.dir = get(p + "dir_q") != 0;
+  s.pend = get(p + "pend_q") != 0;
+  s.pdir = get(p + "pdir_q") != 0;
+  s.tf = std::uint32_t(get(p + "tf_q"));
+  s.ts = std::uint32_t(get(p + "ts_q"));
+  return s;
+}
+
+void MotionModel::set_stage(char axis, const StageRegs& s) {
+  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  reg(p + "step_q") = s.step;
+  reg(p + "dir_q") = s.dir;
+  reg(p + "pend_q") = s.pend;
+  reg(p + "pdir_q") = s.pdir;
+  reg(p + "tf_q") = s.tf;
+  reg(p + "ts_q") = s.ts;
+}
+
+StageTimings MotionModel::timings(char axis) const {
+  const std::string a(1, axis);
+  return StageTimings{std::uint32_t(get("steplen_" + a + "_q")), std::uint32_t(get("stepspace_" + a + "_q")),
+                      std::uint32_t(get("dirsetup_" + a + "_q")), std::uint32_t(get("dirhold_" + a + "_q"))};
+}
+
+bool MotionModel::busy() const {
+  const StageRegs x = stage('x'), y = stage('y');
+  return CoreModel::busy(core_.state()) || x.pend || x.step || y.pend || y.step;
+}
 std::uint64_t& MotionModel::reg(std::string_view name) { return r_[breg(name)]; }
 
 std::uint32_t MotionModel::read(std::uint32_t adr) const {
   const std::uint64_t level = get("level_q");
   const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
-  const Signals& s = core_.state();
   if (adr == reg_offset("ID")) return kId;
   if (adr == reg_offset("VERSION")) return std::uint32_t(kVersionMajor) << 16 | std::uint32_t(kVersionMinor);
   if (adr == reg_offset("CONFIG")) {
@@ -146,7 +215,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   }
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
-    return bit("busy", CoreModel::busy(s)) | bit("empty", level == 0) | bit("full", level == depth) |
+    return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) |
            bit("err", get("err_q")) | bit("err_overflow", get("err_overflow_q")) |
            bit("err_partial", get("err_partial_q")) | bit("err_stall", get("err_stall_q")) |
            bit("aborted", get("aborted_q")) | std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
@@ -159,20 +228,30 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("POS_X")) return std::uint32_t(get("pos_x_q"));
   if (adr == reg_offset("POS_Y")) return std::uint32_t(get("pos_y_q"));
   if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
+  const auto pair = [&](std::string_view r, std::string_view f0, std::string_view f1, std::string_view a,
+                        std::string_view b) {
+    return std::uint32_t(get(a)) << std::uint32_t(field_of(r, f0).lsb) |
+           std::uint32_t(get(b)) << std::uint32_t(field_of(r, f1).lsb);
+  };
+  if (adr == reg_offset("STEP_X")) return pair("STEP_X", "steplen", "stepspace", "steplen_x_q", "stepspace_x_q");
+  if (adr == reg_offset("DIR_X")) return pair("DIR_X", "dirsetup", "dirhold", "dirsetup_x_q", "dirhold_x_q");
+  if (adr == reg_offset("STEP_Y")) return pair("STEP_Y", "steplen", "stepspace", "steplen_y_q", "stepspace_y_q");
+  if (adr == reg_offset("DIR_Y")) return pair("DIR_Y", "dirsetup", "dirhold", "dirsetup_y_q", "dirhold_y_q");
+  if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
   return 0;
 }
 
 BlockOutputs MotionModel::outputs() const {
-  const Signals& s = core_.state();
-  const PortValues p = CoreModel::outputs(s, false);
+  const std::uint64_t pol = get("polarity_q");
+  const auto inv = [&](std::string_view f) { return ((pol >> field_of("POLARITY", f).lsb) & 1u) != 0; };
   BlockOutputs o;
   o.ack = o.stall = get("ack_q") != 0;
   o.dat = std::uint32_t(get("dat_q"));
-  o.step_x = p[out("step_x_o")] != 0;
-  o.step_y = p[out("step_y_o")] != 0;
-  o.dir_x = p[out("dir_x_o")] != 0;
-  o.dir_y = p[out("dir_y_o")] != 0;
-  o.busy = CoreModel::busy(s);
+  o.step_x = (get("u_sx.step_q") != 0) != inv("step_x");
+  o.step_y = (get("u_sy.step_q") != 0) != inv("step_y");
+  o.dir_x = (get("u_sx.dir_q") != 0) != inv("dir_x");
+  o.dir_y = (get("u_sy.dir_q") != 0) != inv("dir_y");
+  o.busy = busy();
   o.irq = (get("irq_status_q") & get("irq_enable_q")) != 0;
   return o;
 }
@@ -201,33 +280,47 @@ void MotionModel::edge(const BlockInputs& in) {
   const bool err_overflow = (wr_entry || commit) && !abort && full;
   const bool err_partial = commit && !abort && !full && !mask_all;
 
-  const bool cmd_valid = get("primed_q") && !empty;
-  const bool take = cmd_valid && core_.cmd_ready(in.ce) && !abort;
-  const std::uint64_t level_d = level + commit_ok - take;
-
-  // The core's outputs during this cycle (registered): what the counters see.
+  // The core's outputs during this cycle (registered): what the stages and counters see.
   const Signals& pre = core_.state();
   const PortValues po = CoreModel::outputs(pre, false);
   const bool core_done = CoreModel::done(pre), core_err = CoreModel::err(pre);
   const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
   const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
+  const StageEdge ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, abort);
+  const StageEdge ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, abort);
+  // The feed: the core may iterate when no stage holds it and the accumulator carries.
+  const bool advance = in.ce && !ex.hold && !ey.hold;
+  const std::uint64_t feed = get("feed_q"), acc_sum = get("acc_q") + feed;
+  const bool core_ce = advance && (feed == 0 || ((acc_sum >> kFeedWidth) & 1u) != 0);
+
+  const bool cmd_valid = get("primed_q") && !empty;
+  const bool take = cmd_valid && core_.cmd_ready(core_ce) && !abort;
+  const std::uint64_t level_d = level + commit_ok - take;
   const std::uint32_t rd = read(adr);
   const std::uint64_t head = get("head_q"), tail = get("tail_q");
+  const std::uint64_t entry_feed = (mem_[head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
 
   CoreInputs ci;
   ci.rst_n = in.rst_n && !abort;
-  ci.ce = in.ce;
+  ci.ce = core_ce;
   ci.cmd_valid = cmd_valid;
   if (cmd_valid) ci.cmd = entry_fields(mem_[head]);
   core_.edge(ci);
 
   if (entry_ok) mem_[tail][word] = b.dat;  // the RAM has no reset
   took_ = false;
+  core_ce_ = false;
+  rise_x_ = rise_y_ = 0;
   if (!in.rst_n) {
     r_ = BlockRegs{};
+    set_stage('x', stage_reset());
+    set_stage('y', stage_reset());
     return;
   }
   took_ = take;
+  core_ce_ = core_ce;
+  rise_x_ = ex.rise ? (ex.rise_dir ? -1 : 1) : 0;
+  rise_y_ = ey.rise ? (ey.rise_dir ? -1 : 1) : 0;
   reg("ack_q") = req;
   if (req && !b.we) reg("dat_q") = rd;
   reg("primed_q") = 1;
@@ -246,7 +339,11 @@ void MotionModel::edge(const BlockInputs& in) {
   }
   const bool err_set = err_overflow || err_partial || core_err;
   const bool low_set = take && level_d < get("irq_level_q");
-  const std::uint64_t irq_set = std::uint64_t(core_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  const bool hold = ex.hold || ey.hold;
+  const bool done_any = core_done || get("done_wait_q");
+  const bool done_evt = done_any && !hold;
+  reg("done_wait_q") = done_any && hold && !abort;
+  const std::uint64_t irq_set = std::uint64_t(done_evt) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
   reg("err_q") = (get("err_q") && !clear) || err_set;
   reg("err_overflow_q") = (get("err_overflow_q") && !clear) || err_overflow;
   reg("err_partial_q") = (get("err_partial_q") && !clear) || err_partial;
@@ -256,14 +353,43 @@ void MotionModel::edge(const BlockInputs& in) {
   reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
   if (wr && adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
   if (wr && adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
-  reg("done_count_q") = (get("done_count_q") + core_done) & 0xFFFFFFFFu;
+  reg("done_count_q") = (get("done_count_q") + done_evt) & 0xFFFFFFFFu;
   reg("err_count_q") = (get("err_count_q") + core_err) & 0xFFFFFFFFu;
-  const std::uint64_t dx = step_x ? (dir_x ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint64_t dy = step_y ? (dir_y ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint64_t dx = ex.rise ? (ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint64_t dy = ey.rise ? (ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint64_t px = wr && adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
   const std::uint64_t py = wr && adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
   reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
   reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
+  if (abort) {
+    reg("feed_q") = 0;
+    reg("acc_q") = 0;
+  } else {
+    if (take) reg("feed_q") = entry_feed;
+    if (advance) reg("acc_q") = acc_sum & mask_of(kFeedWidth);
+  }
+  set_stage('x', ex.next);
+  set_stage('y', ey.next);
+  const auto timing = [&](std::string_view r, std::string_view f) {
+    return (b.dat >> std::uint32_t(field_of(r, f).lsb)) & mask_of(kTimingWidth);
+  };
+  if (wr && adr == reg_offset("STEP_X")) {
+    reg("steplen_x_q") = timing("STEP_X", "steplen");
+    reg("stepspace_x_q") = timing("STEP_X", "stepspace");
+  }
+  if (wr && adr == reg_offset("DIR_X")) {
+    reg("dirsetup_x_q") = timing("DIR_X", "dirsetup");
+    reg("dirhold_x_q") = timing("DIR_X", "dirhold");
+  }
+  if (wr && adr == reg_offset("STEP_Y")) {
+    reg("steplen_y_q") = timing("STEP_Y", "steplen");
+    reg("stepspace_y_q") = timing("STEP_Y", "stepspace");
+  }
+  if (wr && adr == reg_offset("DIR_Y")) {
+    reg("dirsetup_y_q") = timing("DIR_Y", "dirsetup");
+    reg("dirhold_y_q") = timing("DIR_Y", "dirhold");
+  }
+  if (wr && adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
 }
 
 }  // namespace dda::motion

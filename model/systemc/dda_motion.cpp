@@ -25,7 +25,7 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
       mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
   u_core.clk_i(clk_i);
   u_core.rst_ni(core_rst_n);
-  u_core.ce_i(ce_i);
+  u_core.ce_i(core_ce);
   u_core.cmd_valid_i(cmd_valid);
   u_core.cmd_ready_o(core_ready);
   u_core.cmd_i(rd_q);
@@ -37,10 +37,41 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.done_o(core_done);
   u_core.err_o(core_err);
   u_core.iter_o(core_iter);
+  u_sx.clk_i(clk_i);
+  u_sx.rst_ni(rst_ni);
+  u_sx.flush_i(flush);
+  u_sx.step_i(step_x);
+  u_sx.dir_i(dir_x);
+  u_sx.steplen_i(steplen_x_q);
+  u_sx.stepspace_i(stepspace_x_q);
+  u_sx.dirsetup_i(dirsetup_x_q);
+  u_sx.dirhold_i(dirhold_x_q);
+  u_sx.step_o(sx_step);
+  u_sx.dir_o(sx_dir);
+  u_sx.hold_o(sx_hold);
+  u_sx.rise_o(sx_rise);
+  u_sx.rise_dir_o(sx_rise_dir);
+  u_sx.busy_o(sx_busy);
+  u_sy.clk_i(clk_i);
+  u_sy.rst_ni(rst_ni);
+  u_sy.flush_i(flush);
+  u_sy.step_i(step_y);
+  u_sy.dir_i(dir_y);
+  u_sy.steplen_i(steplen_y_q);
+  u_sy.stepspace_i(stepspace_y_q);
+  u_sy.dirsetup_i(dirsetup_y_q);
+  u_sy.dirhold_i(dirhold_y_q);
+  u_sy.step_o(sy_step);
+  u_sy.dir_o(sy_dir);
+  u_sy.hold_o(sy_hold);
+  u_sy.rise_o(sy_rise);
+  u_sy.rise_dir_o(sy_rise_dir);
+  u_sy.busy_o(sy_busy);
 
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << primed_q
-            << level_q << core_busy << step_x << step_y << dir_x << dir_y << irq_status_q << irq_enable_q;
+            << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
+            << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -51,16 +82,22 @@ void dda_motion::comb() {
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
   const bool abort = req && wb_we_i.read() && adr == kCtrl &&
                      ((wb_dat_i.read() >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(primed_q.read() && level_q.read() != 0);
+  const bool advance = ce_i.read() && !sx_hold.read() && !sy_hold.read();
+  const std::uint32_t feed = feed_q.read(), sum = acc_q.read() + feed;
+  core_ce.write(advance && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
   wb_ack_o.write(ack_q.read());
   wb_stall_o.write(ack_q.read());
   wb_dat_o.write(dat_q.read());
-  step_x_o.write(step_x.read());
-  step_y_o.write(step_y.read());
-  dir_x_o.write(dir_x.read());
-  dir_y_o.write(dir_y.read());
-  busy_o.write(core_busy.read());
+  const std::uint32_t pol = polarity_q.read();
+  const auto inv = [pol](std::string_view f) { return ((pol >> motion::field_of("POLARITY", f).lsb) & 1u) != 0; };
+  step_x_o.write(sx_step.read() != inv("step_x"));
+  step_y_o.write(sy_step.read() != inv("step_y"));
+  dir_x_o.write(sx_dir.read() != inv("dir_x"));
+  dir_y_o.write(sy_dir.read() != inv("dir_y"));
+  busy_o.write(core_busy.read() || sx_busy.read() || sy_busy.read());
   irq_o.write((irq_status_q.read() & irq_enable_q.read()) != 0);
 }
 
@@ -76,7 +113,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
-    return bit("busy", core_busy.read()) | bit("empty", level == 0) | bit("full", level == depth) |
+    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read()) | bit("empty", level == 0) | bit("full", level == depth) |
            bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
            bit("err_partial", err_partial_q.read()) | bit("err_stall", err_stall_q.read()) |
            bit("aborted", aborted_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
@@ -89,6 +126,18 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == kPosX) return pos_x_q.read();
   if (adr == kPosY) return pos_y_q.read();
   if (adr == motion::reg_offset("ENTRY_MASK")) return mask_q.read();
+  const auto pair = [](std::string_view r, std::string_view f0, std::uint32_t a, std::string_view f1, std::uint32_t b) {
+    return a << std::uint32_t(motion::field_of(r, f0).lsb) | b << std::uint32_t(motion::field_of(r, f1).lsb);
+  };
+  if (adr == motion::reg_offset("STEP_X"))
+    return pair("STEP_X", "steplen", steplen_x_q.read(), "stepspace", stepspace_x_q.read());
+  if (adr == motion::reg_offset("DIR_X"))
+    return pair("DIR_X", "dirsetup", dirsetup_x_q.read(), "dirhold", dirhold_x_q.read());
+  if (adr == motion::reg_offset("STEP_Y"))
+    return pair("STEP_Y", "steplen", steplen_y_q.read(), "stepspace", stepspace_y_q.read());
+  if (adr == motion::reg_offset("DIR_Y"))
+    return pair("DIR_Y", "dirsetup", dirsetup_y_q.read(), "dirhold", dirhold_y_q.read());
+  if (adr == motion::reg_offset("POLARITY")) return polarity_q.read();
   return 0;
 }
 
@@ -117,12 +166,14 @@ void dda_motion::seq() {
   const std::uint32_t head_d = !rst_ni.read() ? 0 : abort ? tail : take ? (head + 1) & imask : head;
 
   rd_q.write(entry_bits(mem_[head_d]));  // read before this edge's write
+  rd_feed_q.write((mem_[head_d][motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
   if (entry_ok) mem_[tail][word] = dat;
   if (!rst_ni.read()) {
-    for (auto* s : {&ack_q, &primed_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
+    for (auto* s : {&ack_q, &primed_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
       s->write(false);
     for (auto* s : {&dat_q, &head_q, &tail_q, &level_q, &mask_q, &irq_status_q, &irq_enable_q, &irq_level_q,
-                    &done_count_q, &err_count_q, &pos_x_q, &pos_y_q})
+                    &done_count_q, &err_count_q, &pos_x_q, &pos_y_q, &feed_q, &acc_q, &steplen_x_q, &stepspace_x_q,
+                    &dirsetup_x_q, &dirhold_x_q, &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q, &polarity_q})
       s->write(0);
     return;
   }
@@ -142,7 +193,10 @@ void dda_motion::seq() {
       mask_q.write(mask_q.read() | (1u << word));
     }
   }
-  const bool cdone = core_done.read(), cerr = core_err.read();
+  const bool hold = sx_hold.read() || sy_hold.read();
+  const bool done_any = core_done.read() || done_wait_q.read();
+  const bool cdone = done_any && !hold, cerr = core_err.read();
+  done_wait_q.write(done_any && hold && !abort);
   const bool err_set = err_overflow || err_partial || cerr;
   const bool low_set = take && level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
@@ -157,10 +211,39 @@ void dda_motion::seq() {
   if (wr && adr == kIrqLevel) irq_level_q.write(dat & ((1u << motion::kLevelWidth) - 1));
   done_count_q.write(done_count_q.read() + cdone);
   err_count_q.write(err_count_q.read() + cerr);
-  const std::uint32_t dx = step_x.read() ? (dir_x.read() ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint32_t dy = step_y.read() ? (dir_y.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   pos_x_q.write((wr && adr == kPosX ? dat : pos_x_q.read()) + dx);
   pos_y_q.write((wr && adr == kPosY ? dat : pos_y_q.read()) + dy);
+  const std::uint32_t fmask = (1u << motion::kFeedWidth) - 1;
+  if (abort) {
+    feed_q.write(0);
+    acc_q.write(0);
+  } else {
+    if (take) feed_q.write(rd_feed_q.read());
+    if (ce_i.read() && !sx_hold.read() && !sy_hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
+  }
+  const std::uint32_t tmask = (1u << motion::kTimingWidth) - 1;
+  const auto timing = [&](std::string_view r, std::string_view f) {
+    return (dat >> std::uint32_t(motion::field_of(r, f).lsb)) & tmask;
+  };
+  if (wr && adr == motion::reg_offset("STEP_X")) {
+    steplen_x_q.write(timing("STEP_X", "steplen"));
+    stepspace_x_q.write(timing("STEP_X", "stepspace"));
+  }
+  if (wr && adr == motion::reg_offset("DIR_X")) {
+    dirsetup_x_q.write(timing("DIR_X", "dirsetup"));
+    dirhold_x_q.write(timing("DIR_X", "dirhold"));
+  }
+  if (wr && adr == motion::reg_offset("STEP_Y")) {
+    steplen_y_q.write(timing("STEP_Y", "steplen"));
+    stepspace_y_q.write(timing("STEP_Y", "stepspace"));
+  }
+  if (wr && adr == motion::reg_offset("DIR_Y")) {
+    dirsetup_y_q.write(timing("DIR_Y", "dirsetup"));
+    dirhold_y_q.write(timing("DIR_Y", "dirhold"));
+  }
+  if (wr && adr == motion::reg_offset("POLARITY")) polarity_q.write(dat & 0xFu);
 }
 
 }  // namespace dda::sc

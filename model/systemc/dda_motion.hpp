@@ -11,6 +11,7 @@
 
 #include "dda/motion_map.hpp"
 #include "dda_core.hpp"
+#include "dda_stepdir.hpp"
 
 namespace dda::sc {
 
@@ -27,22 +28,33 @@ SC_MODULE(dda_motion) {
   dda_motion(sc_core::sc_module_name name, int depth_log2);
 
   dda_core u_core{"u_core"};
+  dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"};
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
-  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
+  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
       err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"};
   sc_core::sc_signal<std::uint32_t> dat_q{"dat_q"}, head_q{"head_q"}, tail_q{"tail_q"}, level_q{"level_q"},
       mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
-      done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"};
+      done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"},
+      feed_q{"feed_q"}, acc_q{"acc_q"}, steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"},
+      dirsetup_x_q{"dirsetup_x_q"}, dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"},
+      stepspace_y_q{"stepspace_y_q"}, dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"},
+      polarity_q{"polarity_q"};
 
  private:
   int depth_log2_;
   std::vector<std::vector<std::uint32_t>> mem_;
   sc_core::sc_signal<cmd_t> rd_q{"rd_q"};
+  sc_core::sc_signal<std::uint32_t> rd_feed_q{"rd_feed_q"};  // the feed lane of the RAM output
   // Wires.
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
+  sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
+  sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
+      sx_rise_dir{"sx_rise_dir"}, sx_busy{"sx_busy"};
+  sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
+      sy_rise_dir{"sy_rise_dir"}, sy_busy{"sy_busy"};
 
   void comb();
   void seq();

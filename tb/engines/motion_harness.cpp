@@ -38,7 +38,16 @@ VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& s
   const VerilatedScope* s = ctx.scopeFind(scope.c_str());
   if (!s) throw GuardError("motion sampler: no scope " + scope);
   for (const auto& r : kBlockRegs) {
-    VerilatedVar* v = s->varFind(std::string(r.name).c_str());
+    // "u_sx.step_q": a register of a submodule, in the submodule's scope.
+    const std::size_t dot = r.name.find('.');
+    const VerilatedScope* rs = s;
+    if (dot != std::string_view::npos) {
+      const std::string sub = scope + "." + std::string(r.name.substr(0, dot));
+      rs = ctx.scopeFind(sub.c_str());
+      if (!rs) throw GuardError("motion sampler: no scope " + sub);
+    }
+    const std::string var(dot == std::string_view::npos ? r.name : r.name.substr(dot + 1));
+    VerilatedVar* v = rs->varFind(var.c_str());
     if (!v) throw GuardError("motion sampler: the RTL has no public register " + std::string(r.name));
     const int width = v->dims() == 0 ? 1 : v->packed().elements();
     if (width != width_bits(r.width, depth_log2)) {

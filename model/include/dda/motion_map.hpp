@@ -8,8 +8,9 @@
 //
 // Wishbone B4, 32-bit data, byte addresses (word aligned). A command entry is
 // kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
-// (hw::kCmdFields, LSB first) and the entry's reserved bits above it (kEntrySpareBits,
-// written as 0: room for per-command fields of later blocks).
+// (hw::kCmdFields, LSB first) and the entry's spare bits above it (kEntrySpareBits): the
+// top kFeedWidth bits of the last word are the entry's feed increment, the bits between
+// the command and the feed are reserved (written as 0).
 #pragma once
 
 #include <array>
@@ -24,7 +25,7 @@ namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
 inline constexpr int kVersionMajor = 1;
-inline constexpr int kVersionMinor = 0;
+inline constexpr int kVersionMinor = 1;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
 inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
@@ -33,6 +34,16 @@ inline constexpr int kAddrWidth = 8;          // byte address bits the block dec
 inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
 inline constexpr int kLevelWidth = 9;         // queue level: 0 .. 256 entries
 inline constexpr int kMaxDepthLog2 = kLevelWidth - 1;
+// The feed increment of an entry: bits kFeedLsb .. kFeedLsb + kFeedWidth - 1 of entry word
+// kFeedWord. The phase accumulator of the same width adds it every cycle the core may go
+// on and lets the core iterate on its carry: feed / 2^kFeedWidth iterations per clock
+// (0: one per clock, the core's full rate).
+inline constexpr int kFeedWidth = 16;
+inline constexpr int kFeedWord = kEntryWords - 1;
+inline constexpr int kFeedLsb = 32 - kFeedWidth;
+static_assert(kEntrySpareBits >= kFeedWidth, "the feed increment sits in the entry's spare bits");
+// The step/dir stages' timings (STEP_X/Y, DIR_X/Y fields), in clock cycles.
+inline constexpr int kTimingWidth = 12;
 static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
 
 enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
@@ -43,7 +54,7 @@ struct Register {
   Access access;
   std::string_view meaning;
 };
-inline constexpr std::array<Register, 14> kRegisters{{
+inline constexpr std::array<Register, 19> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
     {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
@@ -57,6 +68,11 @@ inline constexpr std::array<Register, 14> kRegisters{{
     {"POS_X", 0x28, Access::RW, "X position in steps, signed; counts the steps sent out; a write presets it"},
     {"POS_Y", 0x2C, Access::RW, "Y position in steps, signed; counts the steps sent out; a write presets it"},
     {"ENTRY_MASK", 0x30, Access::RO, "the words of the entry being written since the last commit"},
+    {"STEP_X", 0x34, Access::RW, "X step/dir stage: step pulse length and space (clock cycles)"},
+    {"DIR_X", 0x38, Access::RW, "X step/dir stage: direction setup and hold (clock cycles)"},
+    {"STEP_Y", 0x3C, Access::RW, "Y step/dir stage: step pulse length and space (clock cycles)"},
+    {"DIR_Y", 0x40, Access::RW, "Y step/dir stage: direction setup and hold (clock cycles)"},
+    {"POLARITY", 0x44, Access::RW, "output polarity: a bit set inverts that output"},
     {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
 }};
 
@@ -67,7 +83,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 32> kFields{{
+inline constexpr std::array<Field, 44> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -78,7 +94,7 @@ inline constexpr std::array<Field, 32> kFields{{
     {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},
     {"CTRL", "abort", 1, 1, "stop the core on this edge, flush the queue and the entry being written"},
     {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
-    {"STATUS", "busy", 0, 1, "the core runs a command"},
+    {"STATUS", "busy", 0, 1, "the core runs a command or a step/dir stage holds a step"},
     {"STATUS", "empty", 1, 1, "the queue is empty"},
     {"STATUS", "full", 2, 1, "the queue is full"},
     {"STATUS", "err", 3, 1, "sticky error: one of the causes below happened since the last clear"},
@@ -99,7 +115,19 @@ inline constexpr std::array<Field, 32> kFields{{
     {"POS_X", "pos", 0, 32, "two's complement"},
     {"POS_Y", "pos", 0, 32, "two's complement"},
     {"ENTRY_MASK", "words", 0, kEntryWords, "bit k: word k written"},
-    {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31"},
+    {"STEP_X", "steplen", 0, kTimingWidth, "step high for max(steplen, 1) cycles"},
+    {"STEP_X", "stepspace", 16, kTimingWidth, "step low for at least max(stepspace, 1) cycles between pulses"},
+    {"DIR_X", "dirsetup", 0, kTimingWidth, "direction stable this many cycles before a rising step edge (0: may change on it)"},
+    {"DIR_X", "dirhold", 16, kTimingWidth, "direction stable this many cycles after a falling step edge (0: may change on it)"},
+    {"STEP_Y", "steplen", 0, kTimingWidth, "as STEP_X.steplen"},
+    {"STEP_Y", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
+    {"DIR_Y", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
+    {"DIR_Y", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
+    {"POLARITY", "step_x", 0, 1, "step_x_o active low"},
+    {"POLARITY", "dir_x", 1, 1, "dir_x_o inverted (low: negative)"},
+    {"POLARITY", "step_y", 2, 1, "step_y_o active low"},
+    {"POLARITY", "dir_y", 3, 1, "dir_y_o inverted (low: negative)"},
+    {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31; the last word's top bits: the feed"},
 }};
 // A register's offset and a field by name (a name not in the map does not compile where
 // the result is a constant expression; at run time it throws).

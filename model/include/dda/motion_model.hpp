@@ -44,24 +44,50 @@ struct BlockOutputs {
 // The block's own registers by their RTL names (below dda_motion), each masked to its
 // width; the harness reads them by these names (public_flat_rd) and compares them with
 // the model's after every edge, beside the core's register table.
-enum class Width { One, Three, Word, Level, Index, Entry };
+enum class Width { One, Three, Four, Word, Level, Index, Entry, Timing, Feed };
 struct BlockReg {
   std::string_view name;
   Width width;
 };
-inline constexpr std::array<BlockReg, 19> kBlockRegs{{
+// Names with a dot are registers of a submodule (u_sx, u_sy: the step/dir stages,
+// rtl/dda_stepdir.v).
+inline constexpr std::array<BlockReg, 43> kBlockRegs{{
     {"ack_q", Width::One},          {"dat_q", Width::Word},         {"head_q", Width::Index},
     {"tail_q", Width::Index},       {"level_q", Width::Level},      {"mask_q", Width::Entry},
     {"primed_q", Width::One},       {"err_q", Width::One},          {"err_overflow_q", Width::One},
     {"err_partial_q", Width::One},  {"err_stall_q", Width::One},    {"aborted_q", Width::One},
     {"irq_status_q", Width::Three}, {"irq_enable_q", Width::Three}, {"irq_level_q", Width::Level},
-    {"done_count_q", Width::Word},  {"err_count_q", Width::Word},   {"pos_x_q", Width::Word},
-    {"pos_y_q", Width::Word},
+    {"done_count_q", Width::Word},  {"done_wait_q", Width::One},  {"err_count_q", Width::Word},   {"pos_x_q", Width::Word},
+    {"pos_y_q", Width::Word},       {"feed_q", Width::Feed},        {"acc_q", Width::Feed},
+    {"steplen_x_q", Width::Timing}, {"stepspace_x_q", Width::Timing}, {"dirsetup_x_q", Width::Timing},
+    {"dirhold_x_q", Width::Timing}, {"steplen_y_q", Width::Timing}, {"stepspace_y_q", Width::Timing},
+    {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing}, {"polarity_q", Width::Four},
+    {"u_sx.step_q", Width::One},    {"u_sx.dir_q", Width::One},     {"u_sx.pend_q", Width::One},
+    {"u_sx.pdir_q", Width::One},    {"u_sx.tf_q", Width::Timing},   {"u_sx.ts_q", Width::Timing},
+    {"u_sy.step_q", Width::One},    {"u_sy.dir_q", Width::One},     {"u_sy.pend_q", Width::One},
+    {"u_sy.pdir_q", Width::One},    {"u_sy.tf_q", Width::Timing},   {"u_sy.ts_q", Width::Timing},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
 int width_bits(Width w, int depth_log2);
 using BlockRegs = std::array<std::uint64_t, kNumBlockRegs>;
+
+// One step/dir stage (rtl/dda_stepdir.v) for one edge: its registers before the edge,
+// the axis' timings and the core's step of this cycle; after() gives its registers
+// after the edge.
+struct StageRegs {
+  bool step = false, dir = false, pend = false, pdir = false;
+  std::uint32_t tf = 0, ts = 0;
+};
+struct StageTimings {
+  std::uint32_t steplen = 0, stepspace = 0, dirsetup = 0, dirhold = 0;
+};
+struct StageEdge {
+  bool hold = false, rise = false, rise_dir = false, busy = false;
+  StageRegs next;
+};
+StageRegs stage_reset();
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool flush);
 
 class MotionModel {
  public:
@@ -74,18 +100,30 @@ class MotionModel {
   int depth_log2() const { return depth_log2_; }
   // What the last edge did: the core took a command; a bus read returned (with ack).
   bool took() const { return took_; }
+  // The core's ce_i on the last edge (the feed and the stages let it go on).
+  bool core_ce() const { return core_ce_; }
+  // The pulses the stages started on the last edge (+1, -1 or 0 per axis).
+  int rise_x() const { return rise_x_; }
+  int rise_y() const { return rise_y_; }
 
  private:
   std::uint32_t read(std::uint32_t adr) const;
   std::uint64_t& reg(std::string_view name);
   std::uint64_t get(std::string_view name) const;
+  StageRegs stage(char axis) const;
+  void set_stage(char axis, const StageRegs& s);
+  StageTimings timings(char axis) const;
+  bool busy() const;  // busy_o: the core runs or a stage holds a step
 
   int depth_log2_;
   CoreModel core_;
   std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
   BlockRegs r_{};
-  bool took_ = false;
+  bool took_ = false, core_ce_ = false;
+  int rise_x_ = 0, rise_y_ = 0;
 };
+
+
 
 // The GTKWave save file of the motion block (docs/dda_motion.gtkw: `dda gen-params
 // --kind gtkw-motion`): the bus, the queue, status and interrupts, the axes and the
@@ -93,8 +131,9 @@ class MotionModel {
 // 2^depth_log2 entries.
 std::string gtkw(std::string_view file, std::string_view top, int depth_log2);
 
-// The entry words of a command: the core's command word LSB first, reserved bits 0.
-std::vector<std::uint32_t> entry_words(const Command& c);
+// The entry words of a command: the core's command word LSB first, reserved bits 0, the
+// feed increment (0: full rate) in its field.
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0);
 // The core's command fields of entry words (the inverse of entry_words on its bits).
 CmdFields entry_fields(const std::vector<std::uint32_t>& words);
 
