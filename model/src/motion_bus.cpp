@@ -2,6 +2,7 @@
 #include "dda/motion_bus.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <numeric>
 #include <string>
 
@@ -93,9 +94,9 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
-void MotionDriver::queue(const Command& c) {
+void MotionDriver::queue(const Command& c, std::uint32_t feed) {
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
-  const std::vector<std::uint32_t> w = entry_words(c);
+  const std::vector<std::uint32_t> w = entry_words(c, feed);
   std::vector<std::size_t> order(w.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
@@ -116,6 +117,20 @@ void MotionDriver::preset(Point p) {
   m_.write(reg_offset("POS_X"), std::uint32_t(p.x));
   m_.write(reg_offset("POS_Y"), std::uint32_t(p.y));
 }
+
+void MotionDriver::set_timings(char axis, const StageTimings& t) {
+  const std::string a(1, char(std::toupper(static_cast<unsigned char>(axis))));
+  const std::string step = "STEP_" + a, dir = "DIR_" + a;
+  const auto put = [](std::string_view r, std::string_view f, std::uint32_t v) {
+    const Field& fl = field_of(r, f);
+    if (v >> fl.width) throw GuardError("motion driver: " + std::string(r) + "." + std::string(f) + " out of range");
+    return v << fl.lsb;
+  };
+  m_.write(reg_offset(step), put(step, "steplen", t.steplen) | put(step, "stepspace", t.stepspace));
+  m_.write(reg_offset(dir), put(dir, "dirsetup", t.dirsetup) | put(dir, "dirhold", t.dirhold));
+}
+
+void MotionDriver::set_polarity(std::uint32_t bits) { m_.write(reg_offset("POLARITY"), bits); }
 
 Point MotionDriver::position() {
   const auto x = std::int32_t(m_.read(reg_offset("POS_X")));

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dda/motion_bus.hpp"
+#include "dda/stepdir_monitor.hpp"
 #include "dda_motion.hpp"
 #include "motion_harness.hpp"
 #include "sc_sampler.hpp"
@@ -60,6 +61,7 @@ class MotionCosim : public BusTarget {
   std::unique_ptr<sc::ScSampler> sc_core_;
   std::unique_ptr<VlBlockSampler> rtl_sampler_;
   MotionModel model_;
+  StepDirChecker timing_;
   BlockOutputs out_;
   std::uint64_t cycle_ = 0;
   bool rst_n_v_ = true, ce_v_ = true;  // applied with the next edge's bus inputs

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dda/motion_bus.hpp"
+#include "dda/stepdir_monitor.hpp"
 #include "vl_sampler.hpp"
 
 class VerilatedContext;
@@ -69,6 +70,7 @@ class MotionHarness : public BusTarget {
   std::unique_ptr<VerilatedVcdC> vcd_;
   std::unique_ptr<VlBlockSampler> sampler_;
   MotionModel model_;
+  StepDirChecker timing_;
   BlockOutputs out_;
   bool rst_n_ = true, ce_ = true;
   std::uint64_t cycle_ = 0;

@@ -1,20 +1,28 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "motion_mix.hpp"
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "dda/errors.hpp"
+#include "dda/stepdir_monitor.hpp"
 #include "dda_random.hpp"
 
 namespace dda::motion {
+
+namespace {
+constexpr std::uint32_t kTimingMax = (1u << kTimingWidth) - 1;
+}
 
 MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bool pipelined, std::int64_t max_axis) {
   MixStats st;
   std::mt19937_64 rng(seed);
   RandomArcs gen(seed, max_axis, 4, ArcKind::Program);
-  PieceMonitor mon(t);
+  RandomArcs short_arcs(seed + 3, std::min<std::int64_t>(max_axis, 8), 4, ArcKind::Program);
+  StepDirMonitor timing(t);
+  PieceMonitor mon(timing);
   WishboneMaster m(mon, seed + 1, pipelined, 20);
   m.each_cycle = [&] { mon.set_ce(rng() % 10 != 0); };
   MotionDriver d(m, seed + 2);
@@ -24,14 +32,29 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
   mon.set_reset(true);
   while (st.arcs < arcs) {
     ++st.batches;
-    // One to four arcs back to back from a preset position.
+    // One to four arcs back to back from a preset position; a twentieth of the batches
+    // are one short arc with large timings.
+    const unsigned kind = unsigned(rng() % 20);
+    const bool large = kind == 0;
     std::vector<Plan> batch;
-    const std::uint64_t n = 1 + rng() % 4;
+    const std::uint64_t n = large ? 1 : 1 + rng() % 4;
     while (batch.size() < n && st.arcs + batch.size() < arcs) {
-      if (auto p = gen.next()) batch.push_back(std::move(*p));
+      if (auto p = (large ? short_arcs : gen).next()) batch.push_back(std::move(*p));
     }
     if (batch.empty()) break;
     d.drain();
+    for (const char axis : {'x', 'y'}) {
+      const auto draw = [&]() -> std::uint32_t {
+        if (large) return rng() % 8 == 0 ? kTimingMax : std::uint32_t(rng() % 1024);
+        return std::uint32_t(rng() % 9);
+      };
+      StageTimings tm;
+      if (large || kind % 2 == 1) tm = StageTimings{draw(), draw(), draw(), draw()};
+      d.set_timings(axis, tm);
+    }
+    st.timed_batches += large || kind % 2 == 1;
+    st.large_timing_batches += large;
+    d.set_polarity(std::uint32_t(rng() % 16));
     d.preset(batch.front().from);
     Point want = batch.front().from;
     if (rng() % 10 == 0) {  // a partial entry committed: refused
@@ -48,7 +71,9 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
       for (const auto& piece : p.pieces) {
         at = Point{at.x + (piece.to.x - piece.from.x), at.y + (piece.to.y - piece.from.y)};
         mon.expect(at);
-        d.queue(piece.cmd);
+        const std::uint32_t feed = rng() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng() % 0xE000);
+        st.fed_pieces += feed != 0;
+        d.queue(piece.cmd, feed);
       }
       want = Point{want.x + (p.to.x - p.from.x), want.y + (p.to.y - p.from.y)};
       st.pieces += p.pieces.size();
@@ -105,6 +130,7 @@ MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bo
     }
   }
   st.piece_checks = mon.checked();
+  st.pulses = timing.pulses(0) + timing.pulses(1);
   return st;
 }
 

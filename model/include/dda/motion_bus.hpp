@@ -110,11 +110,15 @@ std::uint32_t field_bit(std::string_view reg, std::string_view field);
 class MotionDriver {
  public:
   MotionDriver(WishboneMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
-  void queue(const Command& c);
+  // feed: the entry's feed increment (0: the core's full rate).
+  void queue(const Command& c, std::uint32_t feed = 0);
   // Until the queue is empty and the core idle; throws GuardError after max_polls.
   void drain(int max_polls = 1000000);
   void preset(Point p);
   Point position();
+  // An axis' step/dir timings ('x' or 'y'), written to STEP_* and DIR_*.
+  void set_timings(char axis, const StageTimings& t);
+  void set_polarity(std::uint32_t bits);
 
  private:
   WishboneMaster& m_;
