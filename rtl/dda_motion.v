@@ -192,29 +192,32 @@ module dda_motion #(
   reg [TW-1:0] dirsetup_y_q  /* verilator public_flat_rd */;
   reg [TW-1:0] dirhold_y_q   /* verilator public_flat_rd */;
   reg [3:0]    polarity_q    /* verilator public_flat_rd */;  // {dir_y, step_y, dir_x, step_x}
-  wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_busy;
-  wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_busy;
+  wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left, sx_busy;
+  wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left, sy_busy;
   dda_stepdir #(.TW(TW)) u_sx (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_x), .dir_i(core_dir_x),
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_x), .dir_i(core_dir_x), .tag_i(core_done),
     .steplen_i(steplen_x_q), .stepspace_i(stepspace_x_q), .dirsetup_i(dirsetup_x_q), .dirhold_i(dirhold_x_q),
-    .step_o(sx_step), .dir_o(sx_dir), .hold_o(sx_hold), .rise_o(sx_rise), .rise_dir_o(sx_rise_dir), .busy_o(sx_busy)
+    .step_o(sx_step), .dir_o(sx_dir), .hold_o(sx_hold), .rise_o(sx_rise), .rise_dir_o(sx_rise_dir), .wait_o(sx_wait),
+    .tag_left_o(sx_tag_left), .busy_o(sx_busy)
   );
   dda_stepdir #(.TW(TW)) u_sy (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_y), .dir_i(core_dir_y),
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_y), .dir_i(core_dir_y), .tag_i(core_done),
     .steplen_i(steplen_y_q), .stepspace_i(stepspace_y_q), .dirsetup_i(dirsetup_y_q), .dirhold_i(dirhold_y_q),
-    .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .busy_o(sy_busy)
+    .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .wait_o(sy_wait),
+    .tag_left_o(sy_tag_left), .busy_o(sy_busy)
   );
-  assign hold     = sx_hold | sy_hold;
+  wire wr_step_x = wr & (adr == `DDA_MOTION_STEP_X_ADDR);
+  wire wr_dir_x  = wr & (adr == `DDA_MOTION_DIR_X_ADDR);
+  wire wr_step_y = wr & (adr == `DDA_MOTION_STEP_Y_ADDR);
+  wire wr_dir_y  = wr & (adr == `DDA_MOTION_DIR_Y_ADDR);
+  // A timing written on this edge is not in the stages' look-ahead: hold the core once.
+  assign hold     = sx_hold | sy_hold | wr_step_x | wr_dir_x | wr_step_y | wr_dir_y;
   assign step_x_o = sx_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_X_LSB];
   assign dir_x_o  = sx_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_X_LSB];
   assign step_y_o = sy_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_Y_LSB];
   assign dir_y_o  = sy_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_Y_LSB];
   wire   busy     = core_busy | sx_busy | sy_busy;
   assign busy_o   = busy;
-  wire wr_step_x = wr & (adr == `DDA_MOTION_STEP_X_ADDR);
-  wire wr_dir_x  = wr & (adr == `DDA_MOTION_DIR_X_ADDR);
-  wire wr_step_y = wr & (adr == `DDA_MOTION_STEP_Y_ADDR);
-  wire wr_dir_y  = wr & (adr == `DDA_MOTION_DIR_Y_ADDR);
   always @(posedge clk_i) begin
     if (!rst_ni) begin
       steplen_x_q   <= '0;
@@ -264,12 +267,16 @@ module dda_motion #(
   wire err_set = err_overflow | err_partial | core_err;
   wire low_set = take & (level_d < irq_level_q);
   // A piece is done when the core has finished it and its last steps have left the
-  // stages (no step waits after this edge): DONE_COUNT, IRQ_STATUS.done and the position
-  // counters agree. The core cannot iterate again before that (the stages hold it).
+  // stages: DONE_COUNT, IRQ_STATUS.done and the position counters agree. On the core's
+  // done_o the stages tag the step waiting after the edge, if any (none of the next
+  // piece's can wait yet); done_wait_q holds the piece until no tagged step waits. A
+  // piece finished on the edge a tagged one leaves makes two on that edge.
   reg  done_wait_q /* verilator public_flat_rd */;
-  wire done_any = core_done | done_wait_q;
-  wire done_evt = done_any & ~hold;
-  wire [2:0] irq_set = {low_set, err_set, done_evt};
+  wire tags_left = sx_tag_left | sy_tag_left;
+  wire old_done  = done_wait_q & ~tags_left;
+  wire new_wait  = core_done & (sx_wait | sy_wait);
+  wire new_done  = core_done & ~new_wait;
+  wire [2:0] irq_set = {low_set, err_set, old_done | new_done};
   // The pulses the stages start on this edge: +1, -1 or 0.
   wire [31:0] dx = sx_rise ? (sx_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
   wire [31:0] dy = sy_rise ? (sy_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
@@ -302,8 +309,8 @@ module dda_motion #(
                         | irq_set;
       if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wb_dat_i[2:0];
       if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wb_dat_i[LW-1:0];
-      done_count_q <= done_count_q + {31'd0, done_evt};
-      done_wait_q  <= done_any & hold & ~abort;
+      done_count_q <= done_count_q + {31'd0, old_done} + {31'd0, new_done};
+      done_wait_q  <= ~abort & (new_wait | (done_wait_q & tags_left));
       err_count_q  <= err_count_q + {31'd0, core_err};
       // A preset is the position before the steps of the same edge: none is lost.
       pos_x_q <= (wr_pos_x ? wb_dat_i : pos_x_q) + dx;

@@ -10,10 +10,15 @@
 //   dirhold   and for at least dirhold cycles after a falling one (0: it may change on the
 //             falling edge itself).
 // A core step waits in a one-step buffer (pend_q, with its direction) until the timings
-// let it out; hold_o asks the block to stop the core while the buffer is (or is about to
-// be) full, so no step is dropped, merged or reordered. rise_o marks the edge on which a
-// pulse starts (the block counts the position there, in the direction dir_d). flush_i
-// (abort) empties the buffer; a pulse already out finishes its steplen.
+// let it out. hold_o stops the core in a cycle only when the step its iteration would
+// make could not enter the buffer: a step waits after this edge and will not leave on
+// the next one (the next edge's rise, computed from this edge's next state), so no step
+// is dropped, merged or reordered and the core is not held when the timings allow its
+// pace. rise_o marks the edge on which a pulse starts (the block counts the position
+// there, in the direction rise_dir_o). flush_i (abort) empties the buffer; a pulse
+// already out finishes its steplen. tag_i (the core's done_o) marks the step waiting
+// after this edge, if any, as the finished piece's last: tag_left_o is high while it
+// waits (the block counts the piece done once no tagged step waits).
 `include "dda_assert.vh"
 
 module dda_stepdir #(
@@ -24,6 +29,7 @@ module dda_stepdir #(
   input  wire          flush_i,
   input  wire          step_i,      // the core's step pulse (registered in the core)
   input  wire          dir_i,       // its direction (1: negative)
+  input  wire          tag_i,       // the core finished a piece in this cycle
   input  wire [TW-1:0] steplen_i,
   input  wire [TW-1:0] stepspace_i,
   input  wire [TW-1:0] dirsetup_i,
@@ -33,6 +39,8 @@ module dda_stepdir #(
   output wire          hold_o,      // the core must not iterate in this cycle
   output wire          rise_o,      // a pulse starts on this edge
   output wire          rise_dir_o,  // its direction
+  output wire          wait_o,      // a step waits after this edge
+  output wire          tag_left_o,  // a finished piece's last step still waits after this edge
   output wire          busy_o       // a step waits or a pulse is out
 );
 
@@ -42,6 +50,7 @@ module dda_stepdir #(
   reg          pdir_q /* verilator public_flat_rd */;  // its direction
   reg [TW-1:0] tf_q   /* verilator public_flat_rd */;  // cycles the step output has held its level (saturates)
   reg [TW-1:0] ts_q   /* verilator public_flat_rd */;  // cycles the direction output has held (saturates)
+  reg          tag_q  /* verilator public_flat_rd */;  // the waiting step is a finished piece's last
 
   localparam [TW-1:0] One = TW'(1);
   wire [TW-1:0] len   = steplen_i == '0 ? One : steplen_i;
@@ -57,6 +66,16 @@ module dda_stepdir #(
   wire [TW-1:0] tf_inc = &tf_q ? tf_q : tf_q + One;
   wire [TW-1:0] ts_inc = &ts_q ? ts_q : ts_q + One;
 
+  // The next state, and whether a step waiting then leaves on the next edge.
+  wire          step_d = rise | (step_q & ~fall);
+  wire [TW-1:0] tf_d   = (rise | fall) ? One : tf_inc;
+  wire [TW-1:0] ts_d   = change ? One : ts_inc;
+  wire          pend_d = (pend_q & ~rise) | step_i;
+  wire          pdir_d = step_i ? dir_i : pdir_q;
+  wire          turn_n = pdir_d != dir_d;
+  wire          rise_n = ~step_d & (tf_d >= space) & (turn_n ? (tf_d >= dirhold_i) & (dirsetup_i == '0)
+                                                             : (ts_d >= dirsetup_i));
+
   always @(posedge clk_i) begin
     if (!rst_ni) begin
       step_q <= 1'b0;
@@ -65,19 +84,23 @@ module dda_stepdir #(
       pdir_q <= 1'b0;
       tf_q   <= '1;
       ts_q   <= '1;
+      tag_q  <= 1'b0;
     end else begin
-      step_q <= rise | (step_q & ~fall);
+      step_q <= step_d;
       dir_q  <= dir_d;
-      tf_q   <= (rise | fall) ? One : tf_inc;
-      ts_q   <= change ? One : ts_inc;
-      pend_q <= ~flush_i & ((pend_q & ~rise) | step_i);
-      if (step_i) pdir_q <= dir_i;
+      tf_q   <= tf_d;
+      ts_q   <= ts_d;
+      pend_q <= ~flush_i & pend_d;
+      pdir_q <= pdir_d;
+      tag_q  <= ~flush_i & (tag_i ? pend_d : tag_q & ~rise);
     end
   end
 
   assign step_o     = step_q;
   assign dir_o      = dir_q;
-  assign hold_o     = (pend_q & ~rise) | step_i;
+  assign hold_o     = pend_d & ~rise_n;
+  assign wait_o     = pend_d;
+  assign tag_left_o = tag_q & ~rise;
   assign rise_o     = rise;
   assign rise_dir_o = pdir_q;
   assign busy_o     = pend_q | step_q;

@@ -138,7 +138,7 @@ StageRegs stage_reset() {
   return r;
 }
 
-StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool flush) {
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool tag_in, bool flush) {
   const std::uint32_t sat = std::uint32_t(mask_of(kTimingWidth));
   const std::uint32_t len = t.steplen == 0 ? 1 : t.steplen, space = t.stepspace == 0 ? 1 : t.stepspace;
   const bool fall = r.step && r.tf >= len;
@@ -148,16 +148,24 @@ StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bo
   const std::uint32_t ts_now = change ? 0 : r.ts;
   const bool rise = r.pend && !r.step && r.tf >= space && dir_d == r.pdir && ts_now >= t.dirsetup;
   StageEdge e;
-  e.hold = (r.pend && !rise) || step_in;
+  const bool pend_d = (r.pend && !rise) || step_in;
   e.rise = rise;
   e.rise_dir = r.pdir;
+  e.wait = pend_d;
+  e.tag_left = r.tag && !rise;
   e.busy = r.pend || r.step;
   e.next.step = rise || (r.step && !fall);
   e.next.dir = dir_d;
   e.next.tf = (rise || fall) ? 1 : r.tf == sat ? sat : r.tf + 1;
   e.next.ts = change ? 1 : r.ts == sat ? sat : r.ts + 1;
-  e.next.pend = !flush && ((r.pend && !rise) || step_in);
+  e.next.pend = !flush && pend_d;
   e.next.pdir = step_in ? dir_in : r.pdir;
+  e.next.tag = !flush && (tag_in ? pend_d : r.tag && !rise);
+  // Hold the core unless a step waiting after this edge leaves on the next one.
+  const StageRegs& n = e.next;
+  const bool turn_n = n.pdir != n.dir;
+  const bool rise_n = !n.step && n.tf >= space && (turn_n ? n.tf >= t.dirhold && t.dirsetup == 0 : n.ts >= t.dirsetup);
+  e.hold = pend_d && !rise_n;
   return e;
 }
 
@@ -177,6 +185,7 @@ StageRegs MotionModel::stage(char axis) const {
   s.pdir = get(p + "pdir_q") != 0;
   s.tf = std::uint32_t(get(p + "tf_q"));
   s.ts = std::uint32_t(get(p + "ts_q"));
+  s.tag = get(p + "tag_q") != 0;
   return s;
 }
 
@@ -188,6 +197,7 @@ void MotionModel::set_stage(char axis, const StageRegs& s) {
   reg(p + "pdir_q") = s.pdir;
   reg(p + "tf_q") = s.tf;
   reg(p + "ts_q") = s.ts;
+  reg(p + "tag_q") = s.tag;
 }
 
 StageTimings MotionModel::timings(char axis) const {
@@ -286,10 +296,14 @@ void MotionModel::edge(const BlockInputs& in) {
   const bool core_done = CoreModel::done(pre), core_err = CoreModel::err(pre);
   const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
   const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
-  const StageEdge ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, abort);
-  const StageEdge ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, abort);
-  // The feed: the core may iterate when no stage holds it and the accumulator carries.
-  const bool advance = in.ce && !ex.hold && !ey.hold;
+  const StageEdge ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, core_done, abort);
+  const StageEdge ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, core_done, abort);
+  // The feed: the core may iterate when no stage holds it and the accumulator carries
+  // (a timing written on this edge holds it once: the stages' look-ahead used the old).
+  const bool wr_timing = wr && (adr == reg_offset("STEP_X") || adr == reg_offset("DIR_X") ||
+                                adr == reg_offset("STEP_Y") || adr == reg_offset("DIR_Y"));
+  const bool hold = ex.hold || ey.hold || wr_timing;
+  const bool advance = in.ce && !hold;
   const std::uint64_t feed = get("feed_q"), acc_sum = get("acc_q") + feed;
   const bool core_ce = advance && (feed == 0 || ((acc_sum >> kFeedWidth) & 1u) != 0);
 
@@ -339,11 +353,13 @@ void MotionModel::edge(const BlockInputs& in) {
   }
   const bool err_set = err_overflow || err_partial || core_err;
   const bool low_set = take && level_d < get("irq_level_q");
-  const bool hold = ex.hold || ey.hold;
-  const bool done_any = core_done || get("done_wait_q");
-  const bool done_evt = done_any && !hold;
-  reg("done_wait_q") = done_any && hold && !abort;
-  const std::uint64_t irq_set = std::uint64_t(done_evt) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  // A piece is done once its last steps (tagged on the core's done_o) have left.
+  const bool tags_left = ex.tag_left || ey.tag_left;
+  const bool old_done = get("done_wait_q") && !tags_left;
+  const bool new_wait = core_done && (ex.wait || ey.wait);
+  const bool new_done = core_done && !new_wait;
+  reg("done_wait_q") = !abort && (new_wait || (get("done_wait_q") && tags_left));
+  const std::uint64_t irq_set = std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
   reg("err_q") = (get("err_q") && !clear) || err_set;
   reg("err_overflow_q") = (get("err_overflow_q") && !clear) || err_overflow;
   reg("err_partial_q") = (get("err_partial_q") && !clear) || err_partial;
@@ -353,7 +369,7 @@ void MotionModel::edge(const BlockInputs& in) {
   reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
   if (wr && adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
   if (wr && adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
-  reg("done_count_q") = (get("done_count_q") + done_evt) & 0xFFFFFFFFu;
+  reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
   reg("err_count_q") = (get("err_count_q") + core_err) & 0xFFFFFFFFu;
   const std::uint64_t dx = ex.rise ? (ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint64_t dy = ey.rise ? (ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;

@@ -19,9 +19,12 @@ void StepDirChecker::check_axis(const MotionModel& m, int a, bool step, bool dir
     throw GuardError("step/dir monitor, axis " + n + ", cycle " + std::to_string(cycle_) + ": " + what);
   };
   const bool rise = step && !x.step, fall = !step && x.step, turn = dir != x.dir;
+  Shortest& sh = short_[std::size_t(a)];
   if (turn) {
     if (x.step && step) fail("the direction changed during a pulse");
     const std::uint64_t after = fall ? 0 : x.since_fall;
+    if (x.seen_fall) sh.hold = std::min(sh.hold, after);
+    x.turned = true;
     if (x.seen_fall && after < hold) {
       fail("the direction changed " + std::to_string(after) + " cycles after a falling step edge, dirhold " +
            std::to_string(hold));
@@ -29,6 +32,9 @@ void StepDirChecker::check_axis(const MotionModel& m, int a, bool step, bool dir
   }
   if (rise) {
     const std::uint64_t stable = turn ? 0 : x.dir_cycles;
+    if (x.turned) sh.setup = std::min(sh.setup, stable);
+    if (x.seen_fall) sh.low = std::min(sh.low, x.level_cycles);
+    x.turned = false;
     if ((x.seen_dir || turn) && stable < setup) {
       fail("a rising step edge " + std::to_string(stable) + " cycles after a direction change, dirsetup " +
            std::to_string(setup));
@@ -40,6 +46,7 @@ void StepDirChecker::check_axis(const MotionModel& m, int a, bool step, bool dir
     ++pulses_[std::size_t(a)];
     x.moved += dir ? -1 : 1;
   }
+  if (fall) sh.high = std::min(sh.high, x.level_cycles);
   if (fall && x.level_cycles < len) {
     fail("a pulse " + std::to_string(x.level_cycles) + " cycles long, steplen " + std::to_string(len));
   }

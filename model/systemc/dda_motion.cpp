@@ -42,6 +42,9 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_sx.flush_i(flush);
   u_sx.step_i(step_x);
   u_sx.dir_i(dir_x);
+  u_sx.tag_i(core_done);
+  u_sx.wait_o(sx_wait);
+  u_sx.tag_left_o(sx_tag_left);
   u_sx.steplen_i(steplen_x_q);
   u_sx.stepspace_i(stepspace_x_q);
   u_sx.dirsetup_i(dirsetup_x_q);
@@ -57,6 +60,9 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_sy.flush_i(flush);
   u_sy.step_i(step_y);
   u_sy.dir_i(dir_y);
+  u_sy.tag_i(core_done);
+  u_sy.wait_o(sy_wait);
+  u_sy.tag_left_o(sy_tag_left);
   u_sy.steplen_i(steplen_y_q);
   u_sy.stepspace_i(stepspace_y_q);
   u_sy.dirsetup_i(dirsetup_y_q);
@@ -85,7 +91,13 @@ void dda_motion::comb() {
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(primed_q.read() && level_q.read() != 0);
-  const bool advance = ce_i.read() && !sx_hold.read() && !sy_hold.read();
+  // A timing written on this edge holds the core once (the stages' look-ahead used the old).
+  const bool wr = req && wb_we_i.read();
+  const bool wr_timing = wr && (adr == motion::reg_offset("STEP_X") || adr == motion::reg_offset("DIR_X") ||
+                                adr == motion::reg_offset("STEP_Y") || adr == motion::reg_offset("DIR_Y"));
+  const bool held = sx_hold.read() || sy_hold.read() || wr_timing;
+  hold.write(held);
+  const bool advance = ce_i.read() && !held;
   const std::uint32_t feed = feed_q.read(), sum = acc_q.read() + feed;
   core_ce.write(advance && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
   wb_ack_o.write(ack_q.read());
@@ -193,10 +205,13 @@ void dda_motion::seq() {
       mask_q.write(mask_q.read() | (1u << word));
     }
   }
-  const bool hold = sx_hold.read() || sy_hold.read();
-  const bool done_any = core_done.read() || done_wait_q.read();
-  const bool cdone = done_any && !hold, cerr = core_err.read();
-  done_wait_q.write(done_any && hold && !abort);
+  // A piece is done once its last steps (tagged on the core's done_o) have left.
+  const bool tags_left = sx_tag_left.read() || sy_tag_left.read();
+  const bool old_done = done_wait_q.read() && !tags_left;
+  const bool new_wait = core_done.read() && (sx_wait.read() || sy_wait.read());
+  const bool new_done = core_done.read() && !new_wait;
+  const bool cdone = old_done || new_done, cerr = core_err.read();
+  done_wait_q.write(!abort && (new_wait || (done_wait_q.read() && tags_left)));
   const bool err_set = err_overflow || err_partial || cerr;
   const bool low_set = take && level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
@@ -209,7 +224,7 @@ void dda_motion::seq() {
   irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
   if (wr && adr == kIrqEnable) irq_enable_q.write(dat & 7u);
   if (wr && adr == kIrqLevel) irq_level_q.write(dat & ((1u << motion::kLevelWidth) - 1));
-  done_count_q.write(done_count_q.read() + cdone);
+  done_count_q.write(done_count_q.read() + std::uint32_t(old_done) + std::uint32_t(new_done));
   err_count_q.write(err_count_q.read() + cerr);
   const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
@@ -221,7 +236,7 @@ void dda_motion::seq() {
     acc_q.write(0);
   } else {
     if (take) feed_q.write(rd_feed_q.read());
-    if (ce_i.read() && !sx_hold.read() && !sy_hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
+    if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
   }
   const std::uint32_t tmask = (1u << motion::kTimingWidth) - 1;
   const auto timing = [&](std::string_view r, std::string_view f) {

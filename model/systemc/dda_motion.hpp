@@ -52,9 +52,10 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
   sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
   sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
-      sx_rise_dir{"sx_rise_dir"}, sx_busy{"sx_busy"};
+      sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};
   sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
-      sy_rise_dir{"sy_rise_dir"}, sy_busy{"sy_busy"};
+      sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
+  sc_core::sc_signal<bool> hold{"hold"};
 
   void comb();
   void seq();

@@ -51,7 +51,7 @@ struct BlockReg {
 };
 // Names with a dot are registers of a submodule (u_sx, u_sy: the step/dir stages,
 // rtl/dda_stepdir.v).
-inline constexpr std::array<BlockReg, 43> kBlockRegs{{
+inline constexpr std::array<BlockReg, 45> kBlockRegs{{
     {"ack_q", Width::One},          {"dat_q", Width::Word},         {"head_q", Width::Index},
     {"tail_q", Width::Index},       {"level_q", Width::Level},      {"mask_q", Width::Entry},
     {"primed_q", Width::One},       {"err_q", Width::One},          {"err_overflow_q", Width::One},
@@ -64,6 +64,7 @@ inline constexpr std::array<BlockReg, 43> kBlockRegs{{
     {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing}, {"polarity_q", Width::Four},
     {"u_sx.step_q", Width::One},    {"u_sx.dir_q", Width::One},     {"u_sx.pend_q", Width::One},
     {"u_sx.pdir_q", Width::One},    {"u_sx.tf_q", Width::Timing},   {"u_sx.ts_q", Width::Timing},
+    {"u_sx.tag_q", Width::One},     {"u_sy.tag_q", Width::One},
     {"u_sy.step_q", Width::One},    {"u_sy.dir_q", Width::One},     {"u_sy.pend_q", Width::One},
     {"u_sy.pdir_q", Width::One},    {"u_sy.tf_q", Width::Timing},   {"u_sy.ts_q", Width::Timing},
 }};
@@ -76,18 +77,18 @@ using BlockRegs = std::array<std::uint64_t, kNumBlockRegs>;
 // the axis' timings and the core's step of this cycle; after() gives its registers
 // after the edge.
 struct StageRegs {
-  bool step = false, dir = false, pend = false, pdir = false;
+  bool step = false, dir = false, pend = false, pdir = false, tag = false;
   std::uint32_t tf = 0, ts = 0;
 };
 struct StageTimings {
   std::uint32_t steplen = 0, stepspace = 0, dirsetup = 0, dirhold = 0;
 };
 struct StageEdge {
-  bool hold = false, rise = false, rise_dir = false, busy = false;
+  bool hold = false, rise = false, rise_dir = false, wait = false, tag_left = false, busy = false;
   StageRegs next;
 };
 StageRegs stage_reset();
-StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool flush);
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool tag_in, bool flush);
 
 class MotionModel {
  public:

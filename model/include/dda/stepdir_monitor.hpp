@@ -28,11 +28,20 @@ class StepDirChecker {
   void edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const MotionModel& m);
   // Pulses seen per axis (0: x, 1: y) since the checker started.
   std::uint64_t pulses(int axis) const { return pulses_[std::size_t(axis)]; }
+  // The shortest of each timing seen per axis, in cycles (kNone: not seen): pulse high,
+  // low between pulses, direction before the first rising edge after a change, and
+  // after a falling edge before a change.
+  static constexpr std::uint64_t kNone = ~std::uint64_t{0};
+  struct Shortest {
+    std::uint64_t high = kNone, low = kNone, setup = kNone, hold = kNone;
+  };
+  const Shortest& shortest(int axis) const { return short_[std::size_t(axis)]; }
 
  private:
   struct Axis {
     bool step = false, dir = false;
     bool seen_fall = false, seen_dir = false;  // the timers below started
+    bool turned = false;                       // a direction change since the last pulse
     std::uint64_t level_cycles = 0;            // cycles the step output has held its level
     std::uint64_t dir_cycles = 0;              // cycles the direction output has held
     std::uint64_t since_fall = 0;              // cycles since the last falling edge
@@ -43,6 +52,7 @@ class StepDirChecker {
 
   std::array<Axis, 2> ax_{};
   std::array<std::uint64_t, 2> pulses_{};
+  std::array<Shortest, 2> short_{};
   bool started_ = false;
   std::uint64_t cycle_ = 0;
 };
