@@ -293,7 +293,7 @@ void MotionModel::edge(const BlockInputs& in) {
   // The core's outputs during this cycle (registered): what the stages and counters see.
   const Signals& pre = core_.state();
   const PortValues po = CoreModel::outputs(pre, false);
-  const bool core_done = CoreModel::done(pre), core_err = CoreModel::err(pre);
+  const bool core_done = CoreModel::done(pre), core_err = CoreModel::err(pre), running = CoreModel::busy(pre);
   const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
   const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
   const StageEdge ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, core_done, abort);
@@ -323,7 +323,7 @@ void MotionModel::edge(const BlockInputs& in) {
 
   if (entry_ok) mem_[tail][word] = b.dat;  // the RAM has no reset
   took_ = false;
-  core_ce_ = false;
+  core_ce_ = iterated_ = false;
   rise_x_ = rise_y_ = 0;
   if (!in.rst_n) {
     r_ = BlockRegs{};
@@ -333,6 +333,7 @@ void MotionModel::edge(const BlockInputs& in) {
   }
   took_ = take;
   core_ce_ = core_ce;
+  iterated_ = core_ce && !abort && running;
   rise_x_ = ex.rise ? (ex.rise_dir ? -1 : 1) : 0;
   rise_y_ = ey.rise ? (ey.rise_dir ? -1 : 1) : 0;
   reg("ack_q") = req;

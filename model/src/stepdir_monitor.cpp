@@ -8,10 +8,10 @@
 
 namespace dda::motion {
 
-void StepDirChecker::check_axis(const MotionModel& m, int a, bool step, bool dir, bool preset, std::uint32_t pos) {
+void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos) {
   Axis& x = ax_[std::size_t(a)];
   const std::string n = a == 0 ? "x" : "y";
-  const auto reg = [&](const std::string& r) { return m.regs()[breg(r + "_" + n + "_q")]; };
+  const auto reg = [&](const std::string& f) { return r[breg(f + "_" + n + "_q")]; };
   const std::uint64_t len = std::max<std::uint64_t>(reg("steplen"), 1);
   const std::uint64_t space = std::max<std::uint64_t>(reg("stepspace"), 1);
   const std::uint64_t setup = reg("dirsetup"), hold = reg("dirhold");
@@ -69,9 +69,8 @@ void StepDirChecker::check_axis(const MotionModel& m, int a, bool step, bool dir
   }
 }
 
-void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const MotionModel& m) {
+void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const BlockRegs& r) {
   ++cycle_;
-  const BlockRegs& r = m.regs();
   const std::uint64_t pol = r[breg("polarity_q")];
   const auto inv = [&](std::string_view f) { return ((pol >> field_of("POLARITY", f).lsb) & 1u) != 0; };
   const bool step_x = o.step_x != inv("step_x"), dir_x = o.dir_x != inv("dir_x");
@@ -91,8 +90,8 @@ void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, c
   // A write the block took on this edge: it acknowledges it after the edge.
   const std::uint32_t adr = bus.adr & ((1u << kAddrWidth) - 1) & ~3u;
   const bool wrote = bus.cyc && bus.stb && bus.we && o.ack;
-  check_axis(m, 0, step_x, dir_x, wrote && adr == reg_offset("POS_X"), pos_x);
-  check_axis(m, 1, step_y, dir_y, wrote && adr == reg_offset("POS_Y"), pos_y);
+  check_axis(r, 0, step_x, dir_x, wrote && adr == reg_offset("POS_X"), pos_x);
+  check_axis(r, 1, step_y, dir_y, wrote && adr == reg_offset("POS_Y"), pos_y);
 }
 
 }  // namespace dda::motion

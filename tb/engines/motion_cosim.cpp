@@ -117,7 +117,7 @@ void MotionCosim::tick(const BusIn& bus) {
   const std::string diff = compare_block(sb, sc_core, model_);
   if (!diff.empty()) throw GuardError(at + "SystemC model: " + diff);
   out_ = s;
-  timing_.edge(in.bus, rst_n_v_, out_, model_);
+  timing_.edge(in.bus, rst_n_v_, out_, model_.regs());
 }
 
 }  // namespace dda::motion

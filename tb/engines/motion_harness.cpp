@@ -150,7 +150,7 @@ void MotionHarness::tick(const BusIn& bus) {
   if (!(out_ == want)) throw GuardError(at + "output ports " + out_.diff(want) + " (rtl/reference model)");
   const std::string diff = compare_block(sampler_->block(), sampler_->core(), model_);
   if (!diff.empty()) throw GuardError(at + diff);
-  timing_.edge(in.bus, rst_n_, out_, model_);
+  timing_.edge(in.bus, rst_n_, out_, model_.regs());
 }
 
 }  // namespace dda::motion

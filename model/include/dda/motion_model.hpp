@@ -101,8 +101,10 @@ class MotionModel {
   int depth_log2() const { return depth_log2_; }
   // What the last edge did: the core took a command; a bus read returned (with ack).
   bool took() const { return took_; }
-  // The core's ce_i on the last edge (the feed and the stages let it go on).
+  // The core's ce_i on the last edge (the feed and the stages let it go on), and whether
+  // the core iterated on it (ce_i while it ran a command).
   bool core_ce() const { return core_ce_; }
+  bool iterated() const { return iterated_; }
   // The pulses the stages started on the last edge (+1, -1 or 0 per axis).
   int rise_x() const { return rise_x_; }
   int rise_y() const { return rise_y_; }
@@ -120,7 +122,7 @@ class MotionModel {
   CoreModel core_;
   std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
   BlockRegs r_{};
-  bool took_ = false, core_ce_ = false;
+  bool took_ = false, core_ce_ = false, iterated_ = false;
   int rise_x_ = 0, rise_y_ = 0;
 };
 

@@ -23,9 +23,9 @@ namespace dda::motion {
 
 class StepDirChecker {
  public:
-  // After an edge with these bus inputs and reset: the block's outputs and the reference
-  // model (its registers: the timings, polarity, position counters) after it.
-  void edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const MotionModel& m);
+  // After an edge with these bus inputs and reset: the block's outputs and its registers
+  // (the reference model's, kBlockRegs: the timings, polarity, position counters) after it.
+  void edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const BlockRegs& r);
   // Pulses seen per axis (0: x, 1: y) since the checker started.
   std::uint64_t pulses(int axis) const { return pulses_[std::size_t(axis)]; }
   // The shortest of each timing seen per axis, in cycles (kNone: not seen): pulse high,
@@ -48,7 +48,7 @@ class StepDirChecker {
     std::int64_t moved = 0;  // pulses in their direction since the last preset or reset
     std::uint32_t pos0 = 0;  // the position counter at that point
   };
-  void check_axis(const MotionModel& m, int a, bool step, bool dir, bool preset, std::uint32_t pos);
+  void check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos);
 
   std::array<Axis, 2> ax_{};
   std::array<std::uint64_t, 2> pulses_{};
@@ -67,11 +67,12 @@ class StepDirMonitor : public BusTarget {
   void set_ce(bool ce) override { t_.set_ce(ce); }
   void tick(const BusIn& bus) override {
     t_.tick(bus);
-    c_.edge(bus, rst_n_, t_.outputs(), t_.model());
+    c_.edge(bus, rst_n_, t_.outputs(), t_.model().regs());
   }
   const BlockOutputs& outputs() const override { return t_.outputs(); }
   const MotionModel& model() const override { return t_.model(); }
   std::uint64_t pulses(int axis) const { return c_.pulses(axis); }
+  const StepDirChecker::Shortest& shortest(int axis) const { return c_.shortest(axis); }
 
  private:
   BusTarget& t_;

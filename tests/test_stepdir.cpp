@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: Apache-2.0
+// Step and direction timing and feed pacing in the motion block (rtl/dda_stepdir.v,
+// rtl/dda_motion.v; docs/design.md "Step and direction timing"): the timing monitor names
+// every violated rule; on the RTL (in lockstep with the reference model, the monitor on
+// every edge) pulses are exactly steplen long and no shorter apart than the timings
+// allow, an abort lets a pulse finish and counts it, polarity inverts the outputs, and a
+// feed increment paces the core at feed / 2^16 iterations per clock without catching up
+// after the stages held it.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+#include "dda/golden.hpp"
+#include "dda/stepdir_monitor.hpp"
+#include "motion_harness.hpp"
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+// One piece of outputs for the synthetic checks: x's step and direction, and the
+// position counter that follows the pulses (or not).
+struct Sample {
+  bool step, dir;
+  std::int32_t pos;
+};
+
+// Runs the checker over x's samples with these timings; returns its message ("" if none).
+std::string check_x(const StageTimings& t, const std::vector<Sample>& samples) {
+  BlockRegs r{};
+  r[breg("steplen_x_q")] = t.steplen;
+  r[breg("stepspace_x_q")] = t.stepspace;
+  r[breg("dirsetup_x_q")] = t.dirsetup;
+  r[breg("dirhold_x_q")] = t.dirhold;
+  StepDirChecker c;
+  try {
+    c.edge(BusIn{}, true, BlockOutputs{}, r);  // the first edge: the baseline
+    for (const Sample& s : samples) {
+      BlockOutputs o;
+      o.step_x = s.step;
+      o.dir_x = s.dir;
+      r[breg("pos_x_q")] = std::uint32_t(s.pos);
+      c.edge(BusIn{}, true, o, r);
+    }
+  } catch (const GuardError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Plan circle(std::int64_t radius) {
+  ArcSpec s;
+  s.a = s.b = radius;
+  s.preload = Preload::Half;
+  s.from_theta = 0;
+  s.to_theta = 0;  // one full turn: both axes change direction
+  return plan_arc(s);
+}
+
+// The steps a plan makes per axis (its pieces are monotone).
+std::uint64_t steps(const Plan& p, int axis) {
+  std::uint64_t n = 0;
+  for (const auto& q : p.pieces) n += std::uint64_t(std::abs(axis == 0 ? q.to.x - q.from.x : q.to.y - q.from.y));
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("stepdir: the timing monitor names every rule a drive's signals break", "[stepdir]") {
+  const StageTimings t{3, 2, 2, 2};  // steplen, stepspace, dirsetup, dirhold
+  // A good pulse: direction set 2 cycles ahead, high 3, then low.
+  CHECK(check_x(t, {{false, true, 0}, {false, true, 0}, {true, true, -1}, {true, true, -1}, {true, true, -1},
+                    {false, true, -1}})
+            .empty());
+  CHECK_THAT(check_x(t, {{false, false, 0}, {true, false, 1}, {true, false, 1}, {false, false, 1}}),
+             Catch::Contains("a pulse 2 cycles long, steplen 3"));
+  CHECK_THAT(check_x(t, {{true, false, 1}, {true, false, 1}, {true, false, 1}, {false, false, 1}, {true, false, 2}}),
+             Catch::Contains("a pulse 1 cycles after the last one, stepspace 2"));
+  CHECK_THAT(check_x(t, {{false, true, 0}, {true, true, -1}}),
+             Catch::Contains("a rising step edge 1 cycles after a direction change, dirsetup 2"));
+  CHECK_THAT(check_x(t, {{true, false, 1}, {true, false, 1}, {true, false, 1}, {false, false, 1}, {false, true, 1}}),
+             Catch::Contains("the direction changed 1 cycles after a falling step edge, dirhold 2"));
+  CHECK_THAT(check_x(t, {{true, false, 1}, {true, true, 1}}), Catch::Contains("the direction changed during a pulse"));
+  CHECK_THAT(check_x(t, {{true, false, 0}}),
+             Catch::Contains("the position counter is 0, the pulses that went out make it 1"));
+  CHECK_THAT(check_x(t, {{false, false, 1}}),
+             Catch::Contains("the position counter is 1, the pulses that went out make it 0"));
+}
+
+TEST_CASE("stepdir: a full circle with timings on the RTL: exact pulse lengths, every step out, ends on its end",
+          "[stepdir]") {
+  const Plan p = circle(40);
+  MotionHarness h;
+  StepDirMonitor mon(h);
+  WishboneMaster m(mon, 3, false, 10);
+  MotionDriver d(m, 3);
+  const StageTimings tx{5, 3, 4, 2}, ty{7, 1, 0, 0};
+  d.set_timings('x', tx);
+  d.set_timings('y', ty);
+  d.preset(p.from);
+  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  d.drain();
+  const Point at = d.position();
+  CHECK(at.x == p.to.x);
+  CHECK(at.y == p.to.y);
+  CHECK(mon.pulses(0) == steps(p, 0));
+  CHECK(mon.pulses(1) == steps(p, 1));
+  CHECK(m.read(reg_offset("DONE_COUNT")) == p.pieces.size());
+  CHECK(mon.shortest(0).high == tx.steplen);
+  CHECK(mon.shortest(1).high == ty.steplen);
+}
+
+TEST_CASE("stepdir: timings read back, polarity inverts the outputs, pulses are exactly steplen", "[stepdir]") {
+  const Plan p = circle(25);
+  MotionHarness h;
+  StepDirMonitor mon(h);
+  WishboneMaster m(mon, 5, true, 0);
+  MotionDriver d(m, 5);
+  d.set_timings('x', StageTimings{9, 4, 6, 3});
+  d.set_timings('y', StageTimings{0, 0, 0, 0});
+  CHECK(get_field("STEP_X", "steplen", m.read(reg_offset("STEP_X"))) == 9);
+  CHECK(get_field("STEP_X", "stepspace", m.read(reg_offset("STEP_X"))) == 4);
+  CHECK(get_field("DIR_X", "dirsetup", m.read(reg_offset("DIR_X"))) == 6);
+  CHECK(get_field("DIR_X", "dirhold", m.read(reg_offset("DIR_X"))) == 3);
+  d.set_polarity(field_bit("POLARITY", "step_x") | field_bit("POLARITY", "dir_y"));
+  m.idle(1);
+  CHECK(h.outputs().step_x);   // idle, active low
+  CHECK(!h.outputs().step_y);  // idle, active high
+  CHECK(h.outputs().dir_y);    // inverted
+  d.preset(p.from);
+  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  d.drain();
+  CHECK(d.position().x == p.to.x);
+  CHECK(d.position().y == p.to.y);
+  const auto& sx = mon.shortest(0);
+  const auto& sy = mon.shortest(1);
+  CHECK(sx.high == 9);  // exactly steplen: never longer, the monitor checks never shorter
+  CHECK(sx.low == 4);   // the next step was waiting: out as soon as stepspace allows
+  CHECK(sx.setup == 6);
+  CHECK(sx.hold >= 3);  // a turn comes long after the last pulse on a circle: seen, and kept
+  CHECK(sy.high == 1);  // 0 means one cycle
+}
+
+TEST_CASE("stepdir: an abort lets the pulse in progress finish its steplen and counts it", "[stepdir]") {
+  const Plan p = circle(30);
+  MotionHarness h;
+  StepDirMonitor mon(h);
+  WishboneMaster m(mon, 7, false, 0);
+  MotionDriver d(m, 7);
+  d.set_timings('x', StageTimings{400, 1, 0, 0});
+  d.set_timings('y', StageTimings{400, 1, 0, 0});
+  d.preset(p.from);
+  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  // Wait for a pulse, let it run a while, then abort.
+  int guard = 0;
+  while (!h.outputs().step_x && !h.outputs().step_y && ++guard < 100000) m.idle(1);
+  REQUIRE(guard < 100000);
+  m.idle(50);
+  const bool x_high = h.outputs().step_x;
+  m.write(reg_offset("CTRL"), field_bit("CTRL", "abort"));
+  CHECK((x_high ? h.outputs().step_x : h.outputs().step_y));  // still high after the abort
+  std::uint32_t st = m.read(reg_offset("STATUS"));
+  CHECK(get_field("STATUS", "busy", st) == 1);  // the pulse is still out
+  CHECK(get_field("STATUS", "level", st) == 0);
+  int high = 0;
+  while ((x_high ? h.outputs().step_x : h.outputs().step_y) && high < 1000) {
+    m.idle(1);
+    ++high;
+  }
+  CHECK(high > 0);
+  CHECK(high < 400 - 50);
+  st = m.read(reg_offset("STATUS"));
+  CHECK(get_field("STATUS", "busy", st) == 0);
+  // Every pulse that went out is in the position counters (the monitor checked it on
+  // every edge); nothing moves any more.
+  const Point at = d.position();
+  CHECK(std::int64_t(mon.pulses(0) + mon.pulses(1)) > 0);
+  m.idle(500);
+  CHECK(d.position().x == at.x);
+  CHECK(d.position().y == at.y);
+  CHECK(mon.shortest(x_high ? 0 : 1).high == 400);
+}
+
+TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations per clock, without bursts",
+          "[stepdir]") {
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.preload = Preload::Zero;
+  const Plan p = plan_arc(s);
+  struct Case {
+    std::uint32_t feed;
+    StageTimings t;
+    int min_gap, max_gap;  // cycles between iterations
+  };
+  // 1/4 and 1/2 of the clock with zero timings: the stages never hold the core, so the
+  // iterations are exactly 4 (2) cycles apart; slow drives (long pulses) hold it, and
+  // then the iterations only spread out: never closer than the feed's own period.
+  const std::vector<Case> cases = {
+      {0x4000, {}, 4, 4}, {0x8000, {}, 2, 2}, {0x2000, {}, 8, 8}, {0x4000, {30, 30, 0, 0}, 4, 1000}};
+  for (const auto& c : cases) {
+    INFO("feed 0x" << std::hex << c.feed << std::dec << ", steplen " << c.t.steplen);
+    MotionHarness h;
+    WishboneMaster m(h, 11, false, 0);
+    MotionDriver d(m, 11, false);
+    d.set_timings('x', c.t);
+    d.set_timings('y', c.t);
+    std::vector<std::uint64_t> at;
+    std::uint64_t cycle = 0;
+    m.each_cycle = [&] {
+      if (h.model().iterated()) at.push_back(cycle);
+      ++cycle;
+    };
+    // The whole arc queued before the core starts (ce_i low), so it never waits for the bus.
+    h.set_ce(false);
+    for (const auto& piece : p.pieces) d.queue(piece.cmd, c.feed);
+    h.set_ce(true);
+    d.drain();
+    REQUIRE(at.size() > 10);
+    int lo = 1 << 30, hi = 0;
+    for (std::size_t i = 1; i < at.size(); ++i) {
+      const int gap = int(at[i] - at[i - 1]);
+      lo = std::min(lo, gap);
+      hi = std::max(hi, gap);
+    }
+    CHECK(lo >= c.min_gap);
+    CHECK(hi <= c.max_gap);
+    if (c.max_gap > c.min_gap) CHECK(hi > c.min_gap);  // the slow drive did hold the core
+  }
+}
