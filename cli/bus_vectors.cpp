@@ -5,10 +5,13 @@
 // steps, directions, interrupt, positions and queue level out.
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
+
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
+#include "dda/feed.hpp"
 #include "dda/motion_bus.hpp"
 #include "motion_harness.hpp"
 #include "vectors.hpp"
@@ -39,7 +42,7 @@ std::vector<BusField> bus_expect_fields() {
           {"step_y_o", 1, "Y step pulse", "step_y"},
           {"dir_x_o", 1, "X direction", "dir_x"},
           {"dir_y_o", 1, "Y direction", "dir_y"},
-          {"busy_o", 1, "the core runs a command", "busy"},
+          {"busy_o", 1, "the core runs a command or a step/dir stage holds a step", "busy"},
           {"irq_o", 1, "interrupt", "irq"},
           {"pos_x_q", 32, "X position register", "dut.pos_x_q"},
           {"pos_y_q", 32, "Y position register", "dut.pos_y_q"},
@@ -104,6 +107,70 @@ std::string bus_verilog_fields() {
   return s.str();
 }
 
+void add_bus_options(CLI::App* vectors, BusCli& c) {
+  vectors->add_flag("--bus", c.bus, "the motion block's set: Wishbone cycles in, steps and positions out");
+  vectors->add_flag("--pipelined", c.pipelined, "with --bus: pipelined Wishbone cycles (default classic)");
+  vectors->add_option("--abort-after", c.abort_after, "with --bus: abort N cycles after the last commit")
+      ->check(CLI::Range(1, 100000000));
+  vectors->add_option("--timing", c.timing,
+                      "with --bus: STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD in clock cycles, both axes (default 0,0,0,0)");
+  vectors->add_option("--timing-x", c.timing_x, "with --bus: X's timings (as --timing)");
+  vectors->add_option("--timing-y", c.timing_y, "with --bus: Y's timings (as --timing)");
+  vectors->add_option("--polarity", c.polarity, "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8)")
+      ->check(CLI::Range(0, 15));
+  vectors->add_option("--feed", c.feed, "with --bus: every piece's feed increment, iterations per clock x 65536 (0: full rate)")
+      ->check(CLI::Range(0, (1 << motion::kFeedWidth) - 1));
+  vectors->add_option("--feed-rate", c.feed_rate, "with --bus: feed in steps per second along the path (needs --clock)");
+  vectors->add_option("--clock", c.clock_hz, "with --bus --feed-rate: the block's clock in Hz");
+}
+
+namespace {
+motion::StageTimings parse_timing(const std::string& opt, const std::string& s) {
+  std::vector<std::uint32_t> v;
+  std::stringstream in(s);
+  std::string item;
+  const std::uint32_t max = (1u << motion::kTimingWidth) - 1;
+  while (std::getline(in, item, ',')) {
+    std::size_t used = 0;
+    unsigned long n = 0;
+    try {
+      n = std::stoul(item, &used, 10);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size() || item[0] == '-' || n > max) {
+      throw InputError(fmt::format("{} '{}': each timing is a number of clock cycles from 0 to {}", opt, s, max));
+    }
+    v.push_back(std::uint32_t(n));
+  }
+  if (v.size() != 4) throw InputError(opt + " '" + s + "': give STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD");
+  return motion::StageTimings{v[0], v[1], v[2], v[3]};
+}
+}  // namespace
+
+BusOptions bus_options(const BusCli& c) {
+  const bool any = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() || !c.timing_y.empty() ||
+                   c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0;
+  if (!c.bus) {
+    if (any) throw InputError("--pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only");
+    return BusOptions{};
+  }
+  BusOptions b;
+  b.pipelined = c.pipelined;
+  b.abort_after = c.abort_after;
+  if (!c.timing.empty()) b.timing_x = b.timing_y = parse_timing("--timing", c.timing);
+  if (!c.timing_x.empty()) b.timing_x = parse_timing("--timing-x", c.timing_x);
+  if (!c.timing_y.empty()) b.timing_y = parse_timing("--timing-y", c.timing_y);
+  b.polarity = c.polarity;
+  if (c.feed && c.feed_rate != 0) throw InputError("--feed and --feed-rate are alternatives: give one");
+  if ((c.feed_rate != 0) != (c.clock_hz != 0)) throw InputError("--feed-rate and --clock go together");
+  if (c.feed_rate < 0 || c.clock_hz < 0) throw InputError("--feed-rate and --clock must be positive");
+  b.feed = c.feed;
+  b.feed_rate = c.feed_rate;
+  b.clock_hz = c.clock_hz;
+  return b;
+}
+
 // The firmware's work: reset, preset the positions to the first arc's start, queue every
 // piece, then drain the queue (or abort), read the positions.
 void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
@@ -114,9 +181,17 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
   t.set_reset(false);
   m.idle(2);
   t.set_reset(true);
+  d.set_timings('x', bus.timing_x);
+  d.set_timings('y', bus.timing_y);
+  d.set_polarity(bus.polarity);
   d.preset(plans.front().from);
   for (const auto& p : plans) {
-    for (const auto& piece : p.pieces) d.queue(piece.cmd);
+    for (const auto& piece : p.pieces) {
+      const std::uint32_t f = bus.feed_rate > 0
+                                  ? feed::feed_increment(feed::piece_motion(piece.cmd), bus.feed_rate, bus.clock_hz)
+                                  : bus.feed;
+      d.queue(piece.cmd, f);
+    }
   }
   if (bus.abort_after > 0) {
     m.idle(bus.abort_after);
@@ -161,6 +236,19 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   j["queue_depth_log2"] = motion::kMaxDepthLog2;
   j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
   j["abort_after"] = bus.abort_after;
+  const auto timing = [](const motion::StageTimings& t) {
+    return nlohmann::ordered_json{
+        {"steplen", t.steplen}, {"stepspace", t.stepspace}, {"dirsetup", t.dirsetup}, {"dirhold", t.dirhold}};
+  };
+  j["timing_x"] = timing(bus.timing_x);
+  j["timing_y"] = timing(bus.timing_y);
+  j["polarity"] = bus.polarity;
+  if (bus.feed_rate > 0) {
+    j["feed_rate_steps_per_s"] = bus.feed_rate;
+    j["clock_hz"] = bus.clock_hz;
+  } else {
+    j["feed_increment"] = bus.feed;
+  }
   j["files"] = {{"counts.hex", "the number of cycles"},
                 {"cycle_in.hex", "per cycle: the inputs applied before the edge (layout cycle_in)"},
                 {"cycle_exp.hex", "per cycle: the outputs and registers after the edge (layout cycle_exp)"}};

@@ -293,12 +293,8 @@ int main(int argc, char** argv) {
   vectors->add_option("--then", ve_then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
   vectors->add_option("--seed", ve_seed, "seed of the ce pattern (default 1)");
   vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
-  bool ve_bus = false, ve_pipelined = false;
-  int ve_abort = 0;
-  vectors->add_flag("--bus", ve_bus, "the motion block's set: Wishbone cycles in, steps and positions out");
-  vectors->add_flag("--pipelined", ve_pipelined, "with --bus: pipelined Wishbone cycles (default classic)");
-  vectors->add_option("--abort-after", ve_abort, "with --bus: abort N cycles after the last commit")
-      ->check(CLI::Range(1, 100000000));
+  vec::BusCli ve_bus;
+  vec::add_bus_options(vectors, ve_bus);
   auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
   add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
@@ -373,7 +369,7 @@ int main(int argc, char** argv) {
       if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
       if (ve.engine != "golden")
         throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
-      if (!ve.out.empty() || (!ve.vcd.empty() && !ve_bus)) {
+      if (!ve.out.empty() || (!ve.vcd.empty() && !ve_bus.bus)) {
         throw InputError("vectors write --out-dir DIR, not --out (nor --vcd, but with --bus: the RTL's waveform)");
       }
       vec::Options vo;
@@ -397,16 +393,14 @@ int main(int argc, char** argv) {
         }
         plans.push_back(make_plan(o));
       }
-      if (ve_bus) {
-        vec::BusOptions bo;
-        bo.pipelined = ve_pipelined;
-        bo.abort_after = ve_abort;
+      if (ve_bus.bus) {
+        vec::BusOptions bo = vec::bus_options(ve_bus);
         AtomicFile wave(ve.vcd);  // the RTL run beside the set: written only on success
         bo.vcd = wave.write_path();
         vec::write_bus_vector_set(plans, vo, bo);
         wave.commit();
       } else {
-        if (ve_pipelined || ve_abort) throw InputError("--pipelined and --abort-after go with --bus only");
+        vec::bus_options(ve_bus);  // refuses the bus options without --bus
         vec::write_vector_set(plans, vo);
       }
     } else if (plot->parsed()) {

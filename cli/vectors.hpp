@@ -9,6 +9,11 @@
 
 #include "dda/golden.hpp"
 #include "dda/hw_params.hpp"
+#include "dda/motion_model.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace dda::vec {
 
@@ -29,7 +34,22 @@ struct BusOptions {
   int idle_percent = 20;   // chance of an idle cycle before each request (seeded)
   int abort_after = 0;     // > 0: abort that many cycles after the last commit
   std::string vcd;         // non-empty: also run the RTL through the same cycles, this waveform
+  motion::StageTimings timing_x, timing_y;  // the step/dir stages' timings (cycles)
+  std::uint32_t polarity = 0;               // POLARITY
+  std::uint32_t feed = 0;                   // every piece's feed increment (0: full rate) ...
+  double feed_rate = 0, clock_hz = 0;       // ... or each piece's for this feed (steps/s) and clock
 };
+// The --bus options of `dda vectors` as given, and their checked values (InputError for
+// a malformed timing, a feed without --bus, ...).
+struct BusCli {
+  bool bus = false, pipelined = false;
+  int abort_after = 0;
+  std::string timing, timing_x, timing_y;
+  std::uint32_t polarity = 0, feed = 0;
+  double feed_rate = 0, clock_hz = 0;
+};
+void add_bus_options(CLI::App* vectors, BusCli& c);
+BusOptions bus_options(const BusCli& c);
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);
 // The bus bench's field table (tb/hdl/dda_bus_vec_fields.vh).
 std::string bus_verilog_fields();

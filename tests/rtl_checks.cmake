@@ -125,6 +125,12 @@ function(dda_bus_vec_set name)
                        ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_bus)
 endfunction()
 dda_bus_vec_set(paper --a 10 --b 6 --bits 4 --preload zero)
+# Drive timings and a feed (issue 14): the paper's example at a feed in steps per second
+# for a 48 MHz clock with slow-drive timings, the lathe example at a constant increment.
+dda_bus_vec_set(paper_timed --a 10 --b 6 --bits 4 --preload zero --timing-x 5,3,4,2 --timing-y 2,9,0,3
+                --polarity 5 --feed-rate 400000 --clock 48000000 --seed 5)
+dda_bus_vec_set(lathe_timed ${_dda_lathe} --preload zero --timing 2,2,3,1 --feed 49152 --pipelined --seed 9)
+set_property(TEST vectors.bus.paper_timed vectors.bus.lathe_timed APPEND PROPERTY LABELS stepdir)
 dda_bus_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
 dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-percent 90 --seed 7
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
