@@ -28,6 +28,7 @@
 #include "dda/motion_model.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
+#include "feed_report.hpp"
 #include "vectors.hpp"
 
 namespace dda::cli {
@@ -295,6 +296,13 @@ int main(int argc, char** argv) {
   vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
   vec::BusCli ve_bus;
   vec::add_bus_options(vectors, ve_bus);
+  ArcOptions fd;
+  bool fd_summary = false;
+  std::string fd_label = "arc";
+  auto* feedc = app.add_subcommand("feed", "the DDA's speed along the path at a constant feed increment, per piece");
+  add_arc_options(feedc, fd, "markdown", "markdown");
+  feedc->add_flag("--summary", fd_summary, "one row for the arc (the table of docs/results.md)");
+  feedc->add_option("--label", fd_label, "the arc's name in the --summary row");
   auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
   add_arc_options(plot, pl, "svg", "svg");
   std::string gp_kind = "verilog", gp_out;
@@ -403,6 +411,9 @@ int main(int argc, char** argv) {
         vec::bus_options(ve_bus);  // refuses the bus options without --bus
         vec::write_vector_set(plans, vo);
       }
+    } else if (feedc->parsed()) {
+      parse_enum<int>("format", fd.format, {{"markdown", 0}});
+      write_feed_report(std::cout, make_plan(fd), fd_summary, fd_label);
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
       if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
