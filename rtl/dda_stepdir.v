@@ -56,15 +56,30 @@ module dda_stepdir #(
   wire [TW-1:0] len   = steplen_i == '0 ? One : steplen_i;
   wire [TW-1:0] space = stepspace_i == '0 ? One : stepspace_i;
 
-  wire fall   = step_q & (tf_q >= len);
-  // The direction may change once the last pulse has held it dirhold cycles after its fall.
-  wire dir_ok = step_q ? (fall & (dirhold_i == '0)) : (tf_q >= dirhold_i);
-  wire change = pend_q & (pdir_q != dir_q) & dir_ok;
-  wire dir_d  = change ? pdir_q : dir_q;
-  wire [TW-1:0] ts_now = change ? '0 : ts_q;
-  wire rise   = pend_q & ~step_q & (tf_q >= space) & (dir_d == pdir_q) & (ts_now >= dirsetup_i);
   wire [TW-1:0] tf_inc = &tf_q ? tf_q : tf_q + One;
   wire [TW-1:0] ts_inc = &ts_q ? ts_q : ts_q + One;
+  // Every comparison is on the registers, side by side; the next state's ones are chosen
+  // below by what this edge does (tf_d is 1 or tf_inc, ts_d is 1 or ts_inc), which keeps
+  // the path into hold_o (and the core's ce_i) short.
+  wire tf_ge_len      = tf_q >= len;
+  wire tf_ge_space    = tf_q >= space;
+  wire tf_ge_hold     = tf_q >= dirhold_i;
+  wire ts_ge_setup    = ts_q >= dirsetup_i;
+  wire inc_ge_space   = tf_inc >= space;
+  wire inc_ge_hold    = tf_inc >= dirhold_i;
+  wire tsinc_ge_setup = ts_inc >= dirsetup_i;
+  wire hold0          = dirhold_i == '0;
+  wire setup0         = dirsetup_i == '0;
+  wire hold_le1       = dirhold_i <= One;
+  wire setup_le1      = dirsetup_i <= One;
+  wire space1         = space == One;
+
+  wire fall   = step_q & tf_ge_len;
+  // The direction may change once the last pulse has held it dirhold cycles after its fall.
+  wire dir_ok = step_q ? (fall & hold0) : tf_ge_hold;
+  wire change = pend_q & (pdir_q != dir_q) & dir_ok;
+  wire dir_d  = change ? pdir_q : dir_q;
+  wire rise   = pend_q & ~step_q & tf_ge_space & (dir_d == pdir_q) & (change ? setup0 : ts_ge_setup);
 
   // The next state, and whether a step waiting then leaves on the next edge.
   wire          step_d = rise | (step_q & ~fall);
@@ -73,8 +88,10 @@ module dda_stepdir #(
   wire          pend_d = (pend_q & ~rise) | step_i;
   wire          pdir_d = step_i ? dir_i : pdir_q;
   wire          turn_n = pdir_d != dir_d;
-  wire          rise_n = ~step_d & (tf_d >= space) & (turn_n ? (tf_d >= dirhold_i) & (dirsetup_i == '0)
-                                                             : (ts_d >= dirsetup_i));
+  wire          tfd_ge_space = (rise | fall) ? space1 : inc_ge_space;
+  wire          tfd_ge_hold  = (rise | fall) ? hold_le1 : inc_ge_hold;
+  wire          tsd_ge_setup = change ? setup_le1 : tsinc_ge_setup;
+  wire          rise_n = ~step_d & tfd_ge_space & (turn_n ? tfd_ge_hold & setup0 : tsd_ge_setup);
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin

@@ -97,7 +97,20 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 reg("pos_x_q", true),
                 reg("pos_y_q", true),
                 reg("done_count_q"),
+                reg("done_wait_q"),
                 reg("err_count_q")}});
+  g.push_back({"Step/dir and feed",
+               {reg("u_sx.step_q"),
+                reg("u_sx.dir_q"),
+                reg("u_sx.pend_q"),
+                reg("u_sx.tf_q"),
+                reg("u_sy.step_q"),
+                reg("u_sy.dir_q"),
+                reg("u_sy.pend_q"),
+                reg("u_sy.tf_q"),
+                reg("feed_q"),
+                reg("acc_q"),
+                {"core_ce", 1}}});
   hw::WaveGroup core{"Core", {}};
   for (const auto& r : hw::kSignals) {
     if (r.kind == hw::SigKind::Reg && (r.group == "Control" || r.group == "Counters")) {
