@@ -314,7 +314,7 @@ int main(int argc, char** argv) {
                   "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
                   "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
                   "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
-                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), gtkw-motion "
+                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
                   "(docs/dda_motion.gtkw)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
   gen->add_option("--acc-width", gp_acc,
@@ -443,12 +443,15 @@ int main(int argc, char** argv) {
                                         {"motion-c", 8},
                                         {"motion-verilog", 9},
                                         {"motion-vector-fields", 10},
-                                        {"gtkw-motion", 11}});
+                                        {"gtkw-motion", 11},
+                                        {"stepdir-diagram", 12}});
       if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
         throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
       }
       Output out(gp_out);
-      if (kind == 11) {  // the motion block's waveform: dda vectors --bus --vcd
+      if (kind == 12) {  // the step/dir stage's edge-by-edge diagram (docs/design.md)
+        out.stream() << motion::stage_diagram();
+      } else if (kind == 11) {  // the motion block's waveform: dda vectors --bus --vcd
         out.stream() << motion::gtkw("dda_motion.gtkw", "dut.dda_motion", motion::kMaxDepthLog2);
       } else if (kind == 10) {  // the bus bench's field table
         out.stream() << vec::bus_verilog_fields();

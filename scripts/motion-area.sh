@@ -11,12 +11,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-core_srcs=$(scripts/rtl-files.sh rtl/dda_core.f | tr "\n" " ")
+# Every source of the block but rtl/dda_motion.v itself (the copies replace it).
+other_srcs=$(scripts/rtl-files.sh rtl/dda_motion.f | grep -v '/dda_motion\.v$' | tr "\n" " ")
 
 luts() {  # luts FILE [DEPTH_LOG2] -> "LUT4s flip-flops carry-cells"
   local chp=""
   [ -n "${2:-}" ] && chp="chparam -set DepthLog2 $2 dda_motion;"
-  yosys -q -p "read_verilog -sv -DDDA_ICE40 -Irtl $core_srcs $1; blackbox dda_core; $chp \
+  yosys -q -p "read_verilog -sv -DDDA_ICE40 -Irtl $other_srcs $1; blackbox dda_core; $chp \
     synth_ice40 -top dda_motion; tee -o $work/stat.txt stat" >/dev/null
   awk '$1 == "SB_LUT4" {l += $2} $1 ~ /^SB_DFF/ {f += $2} $1 == "SB_CARRY" {c += $2}
        END {print l + 0, f + 0, c + 0}' "$work/stat.txt"
@@ -41,17 +42,29 @@ row() {  # row LABEL "LUT4s FFs carries"
   read -r l f c <<< "$2"
   printf '| %s | %d | %d | %d | %+d |\n' "$1" "$l" "$f" "$c" $((l - base_l))
 }
+# Each figure in an assignment of its own, so that a failed edit or synthesis stops the script.
+depth3=$(luts rtl/dda_motion.v 3)
+f=$(variant nopreset '(wr_pos_x ? wb_dat_i : pos_x_q) + dx' 'pos_x_q + dx' \
+  '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy')
+nopreset=$(luts "$f")
+f=$(variant count16 'reg [31:0] done_count_q' 'reg [15:0] done_count_q' 'reg [31:0] err_count_q' \
+  'reg [15:0] err_count_q' "{31'd0, old_done} + {31'd0, new_done}" "{15'd0, old_done} + {15'd0, new_done}" \
+  "{31'd0, core_err}" "{15'd0, core_err}")
+count16=$(luts "$f")
+f=$(variant noreadmux 'if (req && !wb_we_i) dat_q <= rd;' \
+  'if (req && !wb_we_i) dat_q <= pos_x_q ^ pos_y_q ^ done_count_q ^ err_count_q;')
+noreadmux=$(luts "$f")
 echo "| rtl/dda_motion.v, core a black box | LUT4s | flip-flops | carry cells | LUT4s vs the block |"
 echo "|---|---|---|---|---|"
 row "the block (queue 2^8 entries)" "$base"
-row "queue 2^3 entries (DepthLog2 = 3)" "$(luts rtl/dda_motion.v 3)"
-row "no position preset" "$(luts "$(variant nopreset \
-  '(wr_pos_x ? wb_dat_i : pos_x_q) + dx' 'pos_x_q + dx' '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy')")"
-row "done and err counters of 16 bits" "$(luts "$(variant count16 \
-  'reg [31:0] done_count_q' 'reg [15:0] done_count_q' 'reg [31:0] err_count_q' 'reg [15:0] err_count_q' \
-  "{31'd0, core_done}" "{15'd0, core_done}" "{31'd0, core_err}" "{15'd0, core_err}")")"
-row "read multiplexer replaced by the XOR of the four 32-bit registers" "$(luts "$(variant noreadmux \
-  'if (req && !wb_we_i) dat_q <= rd;' 'if (req && !wb_we_i) dat_q <= pos_x_q ^ pos_y_q ^ done_count_q ^ err_count_q;')")"
+row "queue 2^3 entries (DepthLog2 = 3)" "$depth3"
+row "no position preset" "$nopreset"
+row "done and err counters of 16 bits" "$count16"
+row "read multiplexer replaced by the XOR of the four 32-bit registers" "$noreadmux"
+# One step/dir stage by itself (two in the block).
+yosys -q -p "read_verilog -sv -Irtl rtl/dda_stepdir.v; synth_ice40 -top dda_stepdir; tee -o $work/stat.txt stat" >/dev/null
+echo
+echo "one step/dir stage alone (rtl/dda_stepdir.v, 12-bit timings): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 ~ /^SB_DFF/ {s += $2} END {print s}' "$work/stat.txt") flip-flops, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"
 # One position counter by itself: a 32-bit counter with a preset and a +-1 step.
 cat > "$work/counter.v" <<'EOF'
 module counter (input clk, input rst_ni, input wr, input [31:0] d, input step, input dir, output reg [31:0] q);
@@ -60,5 +73,4 @@ module counter (input clk, input rst_ni, input wr, input [31:0] d, input step, i
 endmodule
 EOF
 yosys -q -p "read_verilog $work/counter.v; synth_ice40 -top counter; tee -o $work/stat.txt stat" >/dev/null
-echo
 echo "one position counter alone (32 bits, preset, +-1 step): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include "dda/golden.hpp"
@@ -232,4 +234,13 @@ TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations pe
     CHECK(hi <= c.max_gap);
     if (c.max_gap > c.min_gap) CHECK(hi > c.min_gap);  // the slow drive did hold the core
   }
+}
+
+TEST_CASE("stepdir: the diagram of docs/design.md is what the stage does", "[stepdir]") {
+  std::ifstream f(std::string(DDA_SOURCE_DIR) + "/docs/design.md", std::ios::binary);
+  std::ostringstream doc;
+  doc << f.rdbuf();
+  const std::string want = "```\n" + stage_diagram() + "```\n";
+  INFO("dda gen-params --kind stepdir-diagram prints:\n" << stage_diagram());
+  CHECK(doc.str().find(want) != std::string::npos);
 }

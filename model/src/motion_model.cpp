@@ -182,6 +182,47 @@ StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bo
   return e;
 }
 
+std::string stage_diagram() {
+  const StageTimings t{3, 2, 2, 1};
+  const int edges = 12;
+  StageRegs r = stage_reset();
+  // The core's step register after each edge: + set on edge 0, then - on the first edge
+  // whose cycle the stage does not hold (the core iterates only then).
+  std::vector<int> core(edges + 2, 0);  // 0 none, 1 +, -1 -
+  core[0] = 1;
+  bool minus_done = false;
+  std::string row_core = "core step ", row_hold = "core held ", row_pend = "pend_q    ", row_step = "step out  ",
+              row_dir = "dir out   ", row_edge = "edge      ";
+  const auto cell = [](std::string& row, const std::string& v) { row += v + std::string(4 - v.size(), ' '); };
+  cell(row_edge, "0");
+  cell(row_core, "+");
+  cell(row_hold, "");
+  cell(row_pend, "0");
+  cell(row_step, "_");
+  cell(row_dir, "+");
+  for (int e = 1; e <= edges; ++e) {
+    const bool in = core[std::size_t(e - 1)] != 0, in_dir = core[std::size_t(e - 1)] < 0;
+    const StageEdge x = stage_edge(r, t, in, in_dir, false, false);
+    if (!minus_done && !x.hold) {
+      core[std::size_t(e)] = -1;
+      minus_done = true;
+    }
+    r = x.next;
+    cell(row_edge, std::to_string(e));
+    cell(row_core, core[std::size_t(e)] > 0 ? "+" : core[std::size_t(e)] < 0 ? "-" : "");
+    cell(row_hold, x.hold ? "1" : "");
+    cell(row_pend, r.pend ? "1" : "0");
+    cell(row_step, r.step ? "#" : "_");
+    cell(row_dir, r.dir ? "-" : "+");
+  }
+  std::string o;
+  for (std::string* row : {&row_edge, &row_core, &row_hold, &row_pend, &row_step, &row_dir}) {
+    while (!row->empty() && row->back() == ' ') row->pop_back();
+    o += *row + "\n";
+  }
+  return o;
+}
+
 MotionModel::MotionModel(int depth_log2)
     : depth_log2_(depth_log2), mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
   if (depth_log2 < 1 || depth_log2 > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");

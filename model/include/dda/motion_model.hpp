@@ -88,6 +88,10 @@ struct StageEdge {
   StageRegs next;
 };
 StageRegs stage_reset();
+// The edge-by-edge diagram of docs/design.md ("Step and direction timing"): one stage
+// with steplen 3, stepspace 2, dirsetup 2, dirhold 1, the core stepping + then - as
+// fast as the stage lets it (`dda gen-params --kind stepdir-diagram`).
+std::string stage_diagram();
 StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool tag_in, bool flush);
 
 class MotionModel {
