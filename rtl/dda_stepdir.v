@@ -41,7 +41,7 @@ module dda_stepdir #(
   output wire          rise_dir_o,  // its direction
   output wire          wait_o,      // a step waits after this edge
   output wire          tag_left_o,  // a finished piece's last step still waits after this edge
-  output wire          busy_o       // a step waits or a pulse is out
+  output wire          busy_o       // a core step arrives, a step waits or a pulse is out
 );
 
   reg          step_q /* verilator public_flat_rd */;  // the step output
@@ -120,7 +120,7 @@ module dda_stepdir #(
   assign tag_left_o = tag_q & ~rise;
   assign rise_o     = rise;
   assign rise_dir_o = pdir_q;
-  assign busy_o     = pend_q | step_q;
+  assign busy_o     = step_i | pend_q | step_q;
 
 `ifndef SYNTHESIS
   // Assertions (rtl/dda_assert.vh): the block stops the core in time (a core step never

@@ -244,3 +244,29 @@ TEST_CASE("stepdir: the diagram of docs/design.md is what the stage does", "[ste
   INFO("dda gen-params --kind stepdir-diagram prints:\n" << stage_diagram());
   CHECK(doc.str().find(want) != std::string::npos);
 }
+
+TEST_CASE("stepdir: STATUS.busy stays high from a piece's last iteration until its last pulse is out", "[stepdir]") {
+  // A one-step piece, polled from every phase: whenever STATUS shows the queue empty and
+  // the block idle, the position is already the end point (the core's step output in
+  // the cycle after its last iteration counts as busy: found by the random mix).
+  Command c;
+  c.jv_y = 1;
+  c.cap = 1;
+  c.cnt_y = 1;
+  c.dir_y_neg = true;
+  for (int phase = 0; phase < 24; ++phase) {
+    INFO("polling from cycle " << phase << " after the commit");
+    MotionHarness h;
+    WishboneMaster m(h, 13, true, 0);
+    MotionDriver d(m, 13, false);
+    d.set_timings('y', StageTimings{1, 1, 60, 2});  // the pulse waits 60 cycles for its direction
+    d.queue(c);
+    m.idle(phase);
+    for (int polls = 0; polls < 100; ++polls) {
+      const std::uint32_t st = m.read(reg_offset("STATUS"));
+      if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st)) break;
+    }
+    CHECK(d.position().y == -1);
+    CHECK(m.read(reg_offset("DONE_COUNT")) == 1);
+  }
+}

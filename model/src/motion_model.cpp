@@ -166,7 +166,7 @@ StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bo
   e.rise_dir = r.pdir;
   e.wait = pend_d;
   e.tag_left = r.tag && !rise;
-  e.busy = r.pend || r.step;
+  e.busy = step_in || r.pend || r.step;
   e.next.step = rise || (r.step && !fall);
   e.next.dir = dir_d;
   e.next.tf = (rise || fall) ? 1 : r.tf == sat ? sat : r.tf + 1;
@@ -261,8 +261,12 @@ StageTimings MotionModel::timings(char axis) const {
 }
 
 bool MotionModel::busy() const {
+  // The core runs, or a step is on its way to the pins: the core's step output (it enters
+  // a stage on the next edge), a step waiting in a stage, a pulse out.
   const StageRegs x = stage('x'), y = stage('y');
-  return CoreModel::busy(core_.state()) || x.pend || x.step || y.pend || y.step;
+  const PortValues p = CoreModel::outputs(core_.state(), false);
+  return CoreModel::busy(core_.state()) || p[out("step_x_o")] != 0 || p[out("step_y_o")] != 0 || x.pend || x.step ||
+         y.pend || y.step;
 }
 std::uint64_t& MotionModel::reg(std::string_view name) { return r_[breg(name)]; }
 

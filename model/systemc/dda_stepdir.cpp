@@ -53,7 +53,7 @@ void dda_stepdir::comb() {
   tag_left_o.write(tag_q.read() && !w.rise);
   rise_o.write(w.rise);
   rise_dir_o.write(pdir_q.read());
-  busy_o.write(pend_q.read() || step_q.read());
+  busy_o.write(step_i.read() || pend_q.read() || step_q.read());
 }
 
 void dda_stepdir::seq() {

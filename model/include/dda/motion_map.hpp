@@ -94,7 +94,7 @@ inline constexpr std::array<Field, 44> kFields{{
     {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},
     {"CTRL", "abort", 1, 1, "stop the core on this edge, flush the queue and the entry being written"},
     {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
-    {"STATUS", "busy", 0, 1, "the core runs a command or a step/dir stage holds a step"},
+    {"STATUS", "busy", 0, 1, "the core runs a command, or a step is on its way to the pins or a pulse is out"},
     {"STATUS", "empty", 1, 1, "the queue is empty"},
     {"STATUS", "full", 2, 1, "the queue is full"},
     {"STATUS", "err", 3, 1, "sticky error: one of the causes below happened since the last clear"},
