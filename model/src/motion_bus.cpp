@@ -39,9 +39,13 @@ void PieceMonitor::tick(const BusIn& bus) {
   }
   if (err != err_) throw GuardError("piece monitor: a queued piece stalled (ERR_COUNT " + std::to_string(err) + ")");
   if (done == done_) return;
+  // Two pieces can finish on one edge (a piece whose last step leaves as a piece with no
+  // step waiting ends): the position is then the later one's end.
+  const std::uint64_t finished = (done - done_) & 0xFFFFFFFFu;
   done_ = done;
-  if (next_ >= ends_.size()) throw GuardError("piece monitor: a piece finished that was not queued");
-  const Point want = ends_[next_++];
+  if (next_ + finished > ends_.size()) throw GuardError("piece monitor: a piece finished that was not queued");
+  next_ += std::size_t(finished);
+  const Point want = ends_[next_ - 1];
   const auto x = std::int32_t(r[breg("pos_x_q")]), y = std::int32_t(r[breg("pos_y_q")]);
   if (x != want.x || y != want.y) {
     throw GuardError("piece monitor: piece " + std::to_string(next_) + " finished at (" + std::to_string(x) + ", " +
