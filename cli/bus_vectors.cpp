@@ -118,9 +118,12 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
   vectors->add_option("--timing-y", c.timing_y, "with --bus: Y's timings (as --timing)");
   vectors->add_option("--polarity", c.polarity, "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8)")
       ->check(CLI::Range(0, 15));
-  vectors->add_option("--feed", c.feed, "with --bus: every piece's feed increment, iterations per clock x 65536 (0: full rate)")
+  vectors
+      ->add_option("--feed", c.feed,
+                   "with --bus: every piece's feed increment, iterations per clock x 65536 (0: full rate)")
       ->check(CLI::Range(0, (1 << motion::kFeedWidth) - 1));
-  vectors->add_option("--feed-rate", c.feed_rate, "with --bus: feed in steps per second along the path (needs --clock)");
+  vectors->add_option("--feed-rate", c.feed_rate,
+                      "with --bus: feed in steps per second along the path (needs --clock)");
   vectors->add_option("--clock", c.clock_hz, "with --bus --feed-rate: the block's clock in Hz");
 }
 
@@ -152,7 +155,8 @@ BusOptions bus_options(const BusCli& c) {
   const bool any = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() || !c.timing_y.empty() ||
                    c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0;
   if (!c.bus) {
-    if (any) throw InputError("--pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only");
+    if (any)
+      throw InputError("--pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only");
     return BusOptions{};
   }
   BusOptions b;

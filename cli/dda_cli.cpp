@@ -308,14 +308,15 @@ int main(int argc, char** argv) {
   std::string gp_kind = "verilog", gp_out;
   int gp_acc = hw::kAccWidth, gp_cnt = hw::kCntWidth;
   auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
-  gen->add_option("--kind", gp_kind,
-                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
-                  "the largest semi-axis they hold at the default width), vector-fields "
-                  "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
-                  "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
-                  "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
-                  "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
-                  "(docs/dda_motion.gtkw)");
+  gen->add_option(
+      "--kind", gp_kind,
+      "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
+      "the largest semi-axis they hold at the default width), vector-fields "
+      "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
+      "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
+      "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
+      "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
+      "(docs/dda_motion.gtkw)");
   gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
   gen->add_option("--acc-width", gp_acc,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")

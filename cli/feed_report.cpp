@@ -26,7 +26,8 @@ void write_feed_report(std::ostream& os, const Plan& plan, bool summary, const s
   double worst_ripple = 1;
   std::uint64_t iters = 0;
   if (!summary) {
-    os << "| piece | iterations | path (steps) | speed per iteration: min / mean / max (steps) | ripple (max/min) | feed "
+    os << "| piece | iterations | path (steps) | speed per iteration: min / mean / max (steps) | ripple (max/min) | "
+          "feed "
           "error at the piece's own increment |\n|---|---|---|---|---|---|\n";
   }
   for (std::size_t i = 0; i < plan.pieces.size(); ++i) {
@@ -55,8 +56,9 @@ void write_feed_report(std::ostream& os, const Plan& plan, bool summary, const s
     os << fmt::format("| {} | {} | {} | {:.0f} | {:.4f} / {:.4f} / {:.4f} | {:.3f} | {:.1f}% | {:.1f}% |\n", label,
                       plan.pieces.size(), iters, path, lo, mean, hi, worst_ripple, worst_piece_err, arc_err);
   } else {
-    os << fmt::format("| arc | {} | {:.1f} | {:.4f} / {:.4f} / {:.4f} | {:.3f} | {:.1f}% (one increment for the arc) |\n",
-                      iters, path, lo, mean, hi, hi / lo, arc_err);
+    os << fmt::format(
+        "| arc | {} | {:.1f} | {:.4f} / {:.4f} / {:.4f} | {:.3f} | {:.1f}% (one increment for the arc) |\n", iters,
+        path, lo, mean, hi, hi / lo, arc_err);
   }
 }
 

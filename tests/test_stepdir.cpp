@@ -63,6 +63,21 @@ Plan circle(std::int64_t radius) {
   return plan_arc(s);
 }
 
+// The RTL harness (in lockstep with the reference model) under a timing monitor whose
+// figures the tests read, driven by a Wishbone master and the firmware driver.
+struct Rig {
+  MotionHarness h;
+  StepDirMonitor mon{h};
+  WishboneMaster m;
+  MotionDriver d;
+  Rig(std::uint64_t seed, bool pipelined, int idle_percent) : m(mon, seed, pipelined, idle_percent), d(m, seed) {}
+  // Presets the positions to the plan's start and queues its pieces (not waiting).
+  void start(const Plan& p) {
+    d.preset(p.from);
+    for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  }
+};
+
 // The steps a plan makes per axis (its pieces are monotone).
 std::uint64_t steps(const Plan& p, int axis) {
   std::uint64_t n = 0;
@@ -75,9 +90,11 @@ std::uint64_t steps(const Plan& p, int axis) {
 TEST_CASE("stepdir: the timing monitor names every rule a drive's signals break", "[stepdir]") {
   const StageTimings t{3, 2, 2, 2};  // steplen, stepspace, dirsetup, dirhold
   // A good pulse: direction set 2 cycles ahead, high 3, then low.
-  CHECK(check_x(t, {{false, true, 0}, {false, true, 0}, {true, true, -1}, {true, true, -1}, {true, true, -1},
-                    {false, true, -1}})
-            .empty());
+  CHECK(
+      check_x(
+          t,
+          {{false, true, 0}, {false, true, 0}, {true, true, -1}, {true, true, -1}, {true, true, -1}, {false, true, -1}})
+          .empty());
   CHECK_THAT(check_x(t, {{false, false, 0}, {true, false, 1}, {true, false, 1}, {false, false, 1}}),
              Catch::Contains("a pulse 2 cycles long, steplen 3"));
   CHECK_THAT(check_x(t, {{true, false, 1}, {true, false, 1}, {true, false, 1}, {false, false, 1}, {true, false, 2}}),
@@ -96,15 +113,12 @@ TEST_CASE("stepdir: the timing monitor names every rule a drive's signals break"
 TEST_CASE("stepdir: a full circle with timings on the RTL: exact pulse lengths, every step out, ends on its end",
           "[stepdir]") {
   const Plan p = circle(40);
-  MotionHarness h;
-  StepDirMonitor mon(h);
-  WishboneMaster m(mon, 3, false, 10);
-  MotionDriver d(m, 3);
+  Rig r(3, false, 10);
+  auto& [h, mon, m, d] = r;
   const StageTimings tx{5, 3, 4, 2}, ty{7, 1, 0, 0};
   d.set_timings('x', tx);
   d.set_timings('y', ty);
-  d.preset(p.from);
-  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  r.start(p);
   d.drain();
   const Point at = d.position();
   CHECK(at.x == p.to.x);
@@ -118,10 +132,8 @@ TEST_CASE("stepdir: a full circle with timings on the RTL: exact pulse lengths, 
 
 TEST_CASE("stepdir: timings read back, polarity inverts the outputs, pulses are exactly steplen", "[stepdir]") {
   const Plan p = circle(25);
-  MotionHarness h;
-  StepDirMonitor mon(h);
-  WishboneMaster m(mon, 5, true, 0);
-  MotionDriver d(m, 5);
+  Rig r(5, true, 0);
+  auto& [h, mon, m, d] = r;
   d.set_timings('x', StageTimings{9, 4, 6, 3});
   d.set_timings('y', StageTimings{0, 0, 0, 0});
   CHECK(get_field("STEP_X", "steplen", m.read(reg_offset("STEP_X"))) == 9);
@@ -133,8 +145,7 @@ TEST_CASE("stepdir: timings read back, polarity inverts the outputs, pulses are 
   CHECK(h.outputs().step_x);   // idle, active low
   CHECK(!h.outputs().step_y);  // idle, active high
   CHECK(h.outputs().dir_y);    // inverted
-  d.preset(p.from);
-  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  r.start(p);
   d.drain();
   CHECK(d.position().x == p.to.x);
   CHECK(d.position().y == p.to.y);
@@ -149,14 +160,11 @@ TEST_CASE("stepdir: timings read back, polarity inverts the outputs, pulses are 
 
 TEST_CASE("stepdir: an abort lets the pulse in progress finish its steplen and counts it", "[stepdir]") {
   const Plan p = circle(30);
-  MotionHarness h;
-  StepDirMonitor mon(h);
-  WishboneMaster m(mon, 7, false, 0);
-  MotionDriver d(m, 7);
+  Rig r(7, false, 0);
+  auto& [h, mon, m, d] = r;
   d.set_timings('x', StageTimings{400, 1, 0, 0});
   d.set_timings('y', StageTimings{400, 1, 0, 0});
-  d.preset(p.from);
-  for (const auto& piece : p.pieces) d.queue(piece.cmd);
+  r.start(p);
   // Wait for a pulse, let it run a while, then abort.
   int guard = 0;
   while (!h.outputs().step_x && !h.outputs().step_y && ++guard < 100000) m.idle(1);
@@ -187,8 +195,7 @@ TEST_CASE("stepdir: an abort lets the pulse in progress finish its steplen and c
   CHECK(mon.shortest(x_high ? 0 : 1).high == 400);
 }
 
-TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations per clock, without bursts",
-          "[stepdir]") {
+TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations per clock, without bursts", "[stepdir]") {
   ArcSpec s;
   s.a = 10;
   s.b = 6;

@@ -43,13 +43,14 @@ std::uint32_t feed_increment(const PieceMotion& m, double feed_steps_per_s, doub
   const double one = double(std::uint64_t{1} << motion::kFeedWidth);
   const double inc = std::round(one * double(m.iterations) * feed_steps_per_s / (m.path * clock_hz));
   if (inc >= one) {
-    throw InputError(fmt::format("feed: {} steps/s needs {:.3f} iterations per clock on this piece; the core does at "
-                                 "most 1 (at {} Hz: at most {:.0f} steps/s here)",
-                                 feed_steps_per_s, inc / one, clock_hz, m.path * clock_hz / double(m.iterations)));
+    throw InputError(
+        fmt::format("feed: {} steps/s needs {:.3f} iterations per clock on this piece; the core does at "
+                    "most 1 (at {} Hz: at most {:.0f} steps/s here)",
+                    feed_steps_per_s, inc / one, clock_hz, m.path * clock_hz / double(m.iterations)));
   }
   if (inc < 1) {
-    throw InputError(fmt::format("feed: {} steps/s is below the slowest pace, one iteration per {} clocks", feed_steps_per_s,
-                                 std::uint64_t{1} << motion::kFeedWidth));
+    throw InputError(fmt::format("feed: {} steps/s is below the slowest pace, one iteration per {} clocks",
+                                 feed_steps_per_s, std::uint64_t{1} << motion::kFeedWidth));
   }
   return std::uint32_t(inc);
 }

@@ -122,7 +122,8 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
 }
 
 std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed) {
-  if (feed >> kFeedWidth) throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
+  if (feed >> kFeedWidth)
+    throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
   std::vector<std::uint32_t> w = hw::pack_command(c);
   w.resize(kEntryWords, 0);
   w[kFeedWord] |= feed << kFeedLsb;
@@ -255,9 +256,10 @@ void MotionModel::set_stage(char axis, const StageRegs& s) {
 }
 
 StageTimings MotionModel::timings(char axis) const {
-  const std::string a(1, axis);
-  return StageTimings{std::uint32_t(get("steplen_" + a + "_q")), std::uint32_t(get("stepspace_" + a + "_q")),
-                      std::uint32_t(get("dirsetup_" + a + "_q")), std::uint32_t(get("dirhold_" + a + "_q"))};
+  const auto t = [&](std::size_t i) {
+    return std::uint32_t(get(std::string(kTimingFields[i].name) + "_" + axis + "_q"));
+  };
+  return StageTimings{t(0), t(1), t(2), t(3)};
 }
 
 bool MotionModel::busy() const {
@@ -283,10 +285,10 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   }
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
-    return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) |
-           bit("err", get("err_q")) | bit("err_overflow", get("err_overflow_q")) |
-           bit("err_partial", get("err_partial_q")) | bit("err_stall", get("err_stall_q")) |
-           bit("aborted", get("aborted_q")) | std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
+    return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) | bit("err", get("err_q")) |
+           bit("err_overflow", get("err_overflow_q")) | bit("err_partial", get("err_partial_q")) |
+           bit("err_stall", get("err_stall_q")) | bit("aborted", get("aborted_q")) |
+           std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
   }
   if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
   if (adr == reg_offset("IRQ_ENABLE")) return std::uint32_t(get("irq_enable_q"));
@@ -296,17 +298,16 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("POS_X")) return std::uint32_t(get("pos_x_q"));
   if (adr == reg_offset("POS_Y")) return std::uint32_t(get("pos_y_q"));
   if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
-  const auto pair = [&](std::string_view r, std::string_view f0, std::string_view f1, std::string_view a,
-                        std::string_view b) {
-    return std::uint32_t(get(a)) << std::uint32_t(field_of(r, f0).lsb) |
-           std::uint32_t(get(b)) << std::uint32_t(field_of(r, f1).lsb);
-  };
-  if (adr == reg_offset("STEP_X")) return pair("STEP_X", "steplen", "stepspace", "steplen_x_q", "stepspace_x_q");
-  if (adr == reg_offset("DIR_X")) return pair("DIR_X", "dirsetup", "dirhold", "dirsetup_x_q", "dirhold_x_q");
-  if (adr == reg_offset("STEP_Y")) return pair("STEP_Y", "steplen", "stepspace", "steplen_y_q", "stepspace_y_q");
-  if (adr == reg_offset("DIR_Y")) return pair("DIR_Y", "dirsetup", "dirhold", "dirsetup_y_q", "dirhold_y_q");
   if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
-  return 0;
+  std::uint32_t v = 0;
+  for (const char axis : {'x', 'y'}) {
+    for (const auto& t : kTimingFields) {
+      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
+      if (adr == reg_offset(r))
+        v |= std::uint32_t(get(std::string(t.name) + "_" + axis + "_q")) << field_of(r, t.name).lsb;
+    }
+  }
+  return v;
 }
 
 BlockOutputs MotionModel::outputs() const {
@@ -418,7 +419,8 @@ void MotionModel::edge(const BlockInputs& in) {
   const bool new_wait = core_done && (ex.wait || ey.wait);
   const bool new_done = core_done && !new_wait;
   reg("done_wait_q") = !abort && (new_wait || (get("done_wait_q") && tags_left));
-  const std::uint64_t irq_set = std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  const std::uint64_t irq_set =
+      std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
   reg("err_q") = (get("err_q") && !clear) || err_set;
   reg("err_overflow_q") = (get("err_overflow_q") && !clear) || err_overflow;
   reg("err_partial_q") = (get("err_partial_q") && !clear) || err_partial;
@@ -445,24 +447,13 @@ void MotionModel::edge(const BlockInputs& in) {
   }
   set_stage('x', ex.next);
   set_stage('y', ey.next);
-  const auto timing = [&](std::string_view r, std::string_view f) {
-    return (b.dat >> std::uint32_t(field_of(r, f).lsb)) & mask_of(kTimingWidth);
-  };
-  if (wr && adr == reg_offset("STEP_X")) {
-    reg("steplen_x_q") = timing("STEP_X", "steplen");
-    reg("stepspace_x_q") = timing("STEP_X", "stepspace");
-  }
-  if (wr && adr == reg_offset("DIR_X")) {
-    reg("dirsetup_x_q") = timing("DIR_X", "dirsetup");
-    reg("dirhold_x_q") = timing("DIR_X", "dirhold");
-  }
-  if (wr && adr == reg_offset("STEP_Y")) {
-    reg("steplen_y_q") = timing("STEP_Y", "steplen");
-    reg("stepspace_y_q") = timing("STEP_Y", "stepspace");
-  }
-  if (wr && adr == reg_offset("DIR_Y")) {
-    reg("dirsetup_y_q") = timing("DIR_Y", "dirsetup");
-    reg("dirhold_y_q") = timing("DIR_Y", "dirhold");
+  for (const char axis : {'x', 'y'}) {
+    for (const auto& t : kTimingFields) {
+      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
+      if (wr && adr == reg_offset(r)) {
+        reg(std::string(t.name) + "_" + axis + "_q") = (b.dat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
+      }
+    }
   }
   if (wr && adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
 }

@@ -76,8 +76,8 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
 
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << primed_q
-            << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
-            << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy;
+            << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q << sx_step
+            << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -125,8 +125,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
-    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read()) | bit("empty", level == 0) | bit("full", level == depth) |
-           bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
+    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read()) | bit("empty", level == 0) |
+           bit("full", level == depth) | bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
            bit("err_partial", err_partial_q.read()) | bit("err_stall", err_stall_q.read()) |
            bit("aborted", aborted_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
@@ -138,19 +138,15 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == kPosX) return pos_x_q.read();
   if (adr == kPosY) return pos_y_q.read();
   if (adr == motion::reg_offset("ENTRY_MASK")) return mask_q.read();
-  const auto pair = [](std::string_view r, std::string_view f0, std::uint32_t a, std::string_view f1, std::uint32_t b) {
-    return a << std::uint32_t(motion::field_of(r, f0).lsb) | b << std::uint32_t(motion::field_of(r, f1).lsb);
-  };
-  if (adr == motion::reg_offset("STEP_X"))
-    return pair("STEP_X", "steplen", steplen_x_q.read(), "stepspace", stepspace_x_q.read());
-  if (adr == motion::reg_offset("DIR_X"))
-    return pair("DIR_X", "dirsetup", dirsetup_x_q.read(), "dirhold", dirhold_x_q.read());
-  if (adr == motion::reg_offset("STEP_Y"))
-    return pair("STEP_Y", "steplen", steplen_y_q.read(), "stepspace", stepspace_y_q.read());
-  if (adr == motion::reg_offset("DIR_Y"))
-    return pair("DIR_Y", "dirsetup", dirsetup_y_q.read(), "dirhold", dirhold_y_q.read());
   if (adr == motion::reg_offset("POLARITY")) return polarity_q.read();
-  return 0;
+  std::uint32_t v = 0;
+  const auto regs = timing_regs();
+  for (std::size_t i = 0; i < regs.size(); ++i) {
+    const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
+    const std::string r = std::string(t.reg) + (i < motion::kTimingFields.size() ? "_X" : "_Y");
+    if (adr == motion::reg_offset(r)) v |= regs[i]->read() << motion::field_of(r, t.name).lsb;
+  }
+  return v;
 }
 
 void dda_motion::seq() {
@@ -183,9 +179,10 @@ void dda_motion::seq() {
   if (!rst_ni.read()) {
     for (auto* s : {&ack_q, &primed_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
       s->write(false);
-    for (auto* s : {&dat_q, &head_q, &tail_q, &level_q, &mask_q, &irq_status_q, &irq_enable_q, &irq_level_q,
-                    &done_count_q, &err_count_q, &pos_x_q, &pos_y_q, &feed_q, &acc_q, &steplen_x_q, &stepspace_x_q,
-                    &dirsetup_x_q, &dirhold_x_q, &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q, &polarity_q})
+    for (auto* s : {&dat_q,        &head_q,        &tail_q,       &level_q,       &mask_q,       &irq_status_q,
+                    &irq_enable_q, &irq_level_q,   &done_count_q, &err_count_q,   &pos_x_q,      &pos_y_q,
+                    &feed_q,       &acc_q,         &steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
+                    &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q,   &polarity_q})
       s->write(0);
     return;
   }
@@ -239,24 +236,11 @@ void dda_motion::seq() {
     if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
   }
   const std::uint32_t tmask = (1u << motion::kTimingWidth) - 1;
-  const auto timing = [&](std::string_view r, std::string_view f) {
-    return (dat >> std::uint32_t(motion::field_of(r, f).lsb)) & tmask;
-  };
-  if (wr && adr == motion::reg_offset("STEP_X")) {
-    steplen_x_q.write(timing("STEP_X", "steplen"));
-    stepspace_x_q.write(timing("STEP_X", "stepspace"));
-  }
-  if (wr && adr == motion::reg_offset("DIR_X")) {
-    dirsetup_x_q.write(timing("DIR_X", "dirsetup"));
-    dirhold_x_q.write(timing("DIR_X", "dirhold"));
-  }
-  if (wr && adr == motion::reg_offset("STEP_Y")) {
-    steplen_y_q.write(timing("STEP_Y", "steplen"));
-    stepspace_y_q.write(timing("STEP_Y", "stepspace"));
-  }
-  if (wr && adr == motion::reg_offset("DIR_Y")) {
-    dirsetup_y_q.write(timing("DIR_Y", "dirsetup"));
-    dirhold_y_q.write(timing("DIR_Y", "dirhold"));
+  const auto regs = timing_regs();
+  for (std::size_t i = 0; i < regs.size(); ++i) {
+    const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
+    const std::string r = std::string(t.reg) + (i < motion::kTimingFields.size() ? "_X" : "_Y");
+    if (wr && adr == motion::reg_offset(r)) regs[i]->write((dat >> motion::field_of(r, t.name).lsb) & tmask);
   }
   if (wr && adr == motion::reg_offset("POLARITY")) polarity_q.write(dat & 0xFu);
 }

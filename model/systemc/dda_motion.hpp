@@ -6,7 +6,9 @@
 // next head address on the last edge (the RTL's block-RAM output registers).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "dda/motion_map.hpp"
@@ -31,8 +33,9 @@ SC_MODULE(dda_motion) {
   dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"};
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
-  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
-      err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"};
+  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"},
+      err_overflow_q{"err_overflow_q"}, err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"},
+      aborted_q{"aborted_q"};
   sc_core::sc_signal<std::uint32_t> dat_q{"dat_q"}, head_q{"head_q"}, tail_q{"tail_q"}, level_q{"level_q"},
       mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
       done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"},
@@ -57,6 +60,15 @@ SC_MODULE(dda_motion) {
       sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
   sc_core::sc_signal<bool> hold{"hold"};
 
+  // The timing registers in motion::kTimingFields' order, X's then Y's.
+  std::array<sc_core::sc_signal<std::uint32_t>*, 8> timing_regs() {
+    return {&steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
+            &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q};
+  }
+  std::array<const sc_core::sc_signal<std::uint32_t>*, 8> timing_regs() const {
+    return {&steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
+            &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q};
+  }
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;

@@ -11,8 +11,8 @@ constexpr std::uint32_t kSat = (1u << motion::kTimingWidth) - 1;
 
 dda_stepdir::dda_stepdir(sc_core::sc_module_name name) : sc_core::sc_module(name) {
   SC_METHOD(comb);
-  sensitive << step_i << dir_i << steplen_i << stepspace_i << dirsetup_i << dirhold_i << step_q << dir_q << pend_q << pdir_q
-            << tf_q << ts_q << tag_q;
+  sensitive << step_i << dir_i << steplen_i << stepspace_i << dirsetup_i << dirhold_i << step_q << dir_q << pend_q
+            << pdir_q << tf_q << ts_q << tag_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();

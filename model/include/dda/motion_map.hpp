@@ -42,8 +42,15 @@ inline constexpr int kFeedWidth = 16;
 inline constexpr int kFeedWord = kEntryWords - 1;
 inline constexpr int kFeedLsb = 32 - kFeedWidth;
 static_assert(kEntrySpareBits >= kFeedWidth, "the feed increment sits in the entry's spare bits");
-// The step/dir stages' timings (STEP_X/Y, DIR_X/Y fields), in clock cycles.
+// The step/dir stages' timings (STEP_X/Y, DIR_X/Y fields), in clock cycles: each is
+// field `name` of register `reg`_X / `reg`_Y, held in the block register
+// `name`_x_q / `name`_y_q.
 inline constexpr int kTimingWidth = 12;
+struct TimingField {
+  std::string_view reg, name;
+};
+inline constexpr std::array<TimingField, 4> kTimingFields{
+    {{"STEP", "steplen"}, {"STEP", "stepspace"}, {"DIR", "dirsetup"}, {"DIR", "dirhold"}}};
 static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
 
 enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
@@ -117,8 +124,10 @@ inline constexpr std::array<Field, 44> kFields{{
     {"ENTRY_MASK", "words", 0, kEntryWords, "bit k: word k written"},
     {"STEP_X", "steplen", 0, kTimingWidth, "step high for max(steplen, 1) cycles"},
     {"STEP_X", "stepspace", 16, kTimingWidth, "step low for at least max(stepspace, 1) cycles between pulses"},
-    {"DIR_X", "dirsetup", 0, kTimingWidth, "direction stable this many cycles before a rising step edge (0: may change on it)"},
-    {"DIR_X", "dirhold", 16, kTimingWidth, "direction stable this many cycles after a falling step edge (0: may change on it)"},
+    {"DIR_X", "dirsetup", 0, kTimingWidth,
+     "direction stable this many cycles before a rising step edge (0: may change on it)"},
+    {"DIR_X", "dirhold", 16, kTimingWidth,
+     "direction stable this many cycles after a falling step edge (0: may change on it)"},
     {"STEP_Y", "steplen", 0, kTimingWidth, "as STEP_X.steplen"},
     {"STEP_Y", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
     {"DIR_Y", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},

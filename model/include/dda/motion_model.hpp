@@ -52,21 +52,29 @@ struct BlockReg {
 // Names with a dot are registers of a submodule (u_sx, u_sy: the step/dir stages,
 // rtl/dda_stepdir.v).
 inline constexpr std::array<BlockReg, 45> kBlockRegs{{
-    {"ack_q", Width::One},          {"dat_q", Width::Word},         {"head_q", Width::Index},
-    {"tail_q", Width::Index},       {"level_q", Width::Level},      {"mask_q", Width::Entry},
-    {"primed_q", Width::One},       {"err_q", Width::One},          {"err_overflow_q", Width::One},
-    {"err_partial_q", Width::One},  {"err_stall_q", Width::One},    {"aborted_q", Width::One},
-    {"irq_status_q", Width::Three}, {"irq_enable_q", Width::Three}, {"irq_level_q", Width::Level},
-    {"done_count_q", Width::Word},  {"done_wait_q", Width::One},  {"err_count_q", Width::Word},   {"pos_x_q", Width::Word},
-    {"pos_y_q", Width::Word},       {"feed_q", Width::Feed},        {"acc_q", Width::Feed},
-    {"steplen_x_q", Width::Timing}, {"stepspace_x_q", Width::Timing}, {"dirsetup_x_q", Width::Timing},
-    {"dirhold_x_q", Width::Timing}, {"steplen_y_q", Width::Timing}, {"stepspace_y_q", Width::Timing},
-    {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing}, {"polarity_q", Width::Four},
-    {"u_sx.step_q", Width::One},    {"u_sx.dir_q", Width::One},     {"u_sx.pend_q", Width::One},
-    {"u_sx.pdir_q", Width::One},    {"u_sx.tf_q", Width::Timing},   {"u_sx.ts_q", Width::Timing},
-    {"u_sx.tag_q", Width::One},     {"u_sy.tag_q", Width::One},
-    {"u_sy.step_q", Width::One},    {"u_sy.dir_q", Width::One},     {"u_sy.pend_q", Width::One},
-    {"u_sy.pdir_q", Width::One},    {"u_sy.tf_q", Width::Timing},   {"u_sy.ts_q", Width::Timing},
+    {"ack_q", Width::One},           {"dat_q", Width::Word},
+    {"head_q", Width::Index},        {"tail_q", Width::Index},
+    {"level_q", Width::Level},       {"mask_q", Width::Entry},
+    {"primed_q", Width::One},        {"err_q", Width::One},
+    {"err_overflow_q", Width::One},  {"err_partial_q", Width::One},
+    {"err_stall_q", Width::One},     {"aborted_q", Width::One},
+    {"irq_status_q", Width::Three},  {"irq_enable_q", Width::Three},
+    {"irq_level_q", Width::Level},   {"done_count_q", Width::Word},
+    {"done_wait_q", Width::One},     {"err_count_q", Width::Word},
+    {"pos_x_q", Width::Word},        {"pos_y_q", Width::Word},
+    {"feed_q", Width::Feed},         {"acc_q", Width::Feed},
+    {"steplen_x_q", Width::Timing},  {"stepspace_x_q", Width::Timing},
+    {"dirsetup_x_q", Width::Timing}, {"dirhold_x_q", Width::Timing},
+    {"steplen_y_q", Width::Timing},  {"stepspace_y_q", Width::Timing},
+    {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing},
+    {"polarity_q", Width::Four},     {"u_sx.step_q", Width::One},
+    {"u_sx.dir_q", Width::One},      {"u_sx.pend_q", Width::One},
+    {"u_sx.pdir_q", Width::One},     {"u_sx.tf_q", Width::Timing},
+    {"u_sx.ts_q", Width::Timing},    {"u_sx.tag_q", Width::One},
+    {"u_sy.tag_q", Width::One},      {"u_sy.step_q", Width::One},
+    {"u_sy.dir_q", Width::One},      {"u_sy.pend_q", Width::One},
+    {"u_sy.pdir_q", Width::One},     {"u_sy.tf_q", Width::Timing},
+    {"u_sy.ts_q", Width::Timing},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -129,8 +137,6 @@ class MotionModel {
   bool took_ = false, core_ce_ = false, iterated_ = false;
   int rise_x_ = 0, rise_y_ = 0;
 };
-
-
 
 // The GTKWave save file of the motion block (docs/dda_motion.gtkw: `dda gen-params
 // --kind gtkw-motion`): the bus, the queue, status and interrupts, the axes and the

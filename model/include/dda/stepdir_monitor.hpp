@@ -45,8 +45,8 @@ class StepDirChecker {
     std::uint64_t level_cycles = 0;            // cycles the step output has held its level
     std::uint64_t dir_cycles = 0;              // cycles the direction output has held
     std::uint64_t since_fall = 0;              // cycles since the last falling edge
-    std::int64_t moved = 0;  // pulses in their direction since the last preset or reset
-    std::uint32_t pos0 = 0;  // the position counter at that point
+    std::int64_t moved = 0;                    // pulses in their direction since the last preset or reset
+    std::uint32_t pos0 = 0;                    // the position counter at that point
   };
   void check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos);
 
