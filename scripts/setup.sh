@@ -8,7 +8,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
-  z3 librsvg2-bin clang-format parallel
+  z3 librsvg2-bin clang-format parallel tao-pegtl-dev
 )
 
 missing=()

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// The part-program reader (issue 15, docs/programs.md): G-code of RS274 / ISO 6983 with
+// modal groups, read with PEGTL into the motion blocks a program describes, in the
+// machine's plane and in integer nanometres (1e-6 mm), with each block's source
+// position. It is the planner's side, before the lattice: the geometry is as the
+// program gives it (centres, radii and semi-axes anywhere), checked (an arc's end on
+// its curve, a reachable radius), and nothing else is decided here.
+//
+// Bad input throws ProgramError, whose message is one line "FILE:LINE:COLUMN: message"
+// (the CLI prints it and exits with status 2).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dda/errors.hpp"
+
+namespace dda::program {
+
+class ProgramError : public InputError {
+ public:
+  ProgramError(const std::string& file, std::size_t line, std::size_t column, const std::string& message);
+  std::size_t line() const { return line_; }
+  std::size_t column() const { return column_; }
+
+ private:
+  std::size_t line_, column_;
+};
+
+// Lengths in nanometres of the program's unit (1e-6 mm); angles in 0.001 degree.
+using Length = std::int64_t;
+inline constexpr Length kNmPerMm = 1000000;
+// An arc's end may be off its curve by this much (as real controls check the radius to
+// the end against the radius to the start): 0.002 mm.
+inline constexpr Length kEndTolerance = 2000;
+
+// A point of the machine's plane: (u, v) = mill G17 (X, Y), G18 (Z, X), G19 (Y, Z);
+// lathe (Z, X as a radius). The lattice's x is u, its y is v.
+struct Point2 {
+  Length u = 0, v = 0;
+  friend bool operator==(const Point2& a, const Point2& b) { return a.u == b.u && a.v == b.v; }
+};
+
+enum class Machine { Mill, Lathe };
+enum class MoveKind { Rapid, Line, ArcCw, ArcCcw, EllipseCw, EllipseCcw };
+std::string_view kind_name(MoveKind k);  // "rapid", "line", "arc cw", ...
+
+struct SourcePos {
+  std::size_t line = 0, column = 0;  // 1-based
+};
+
+// One motion block. Clockwise is seen from the positive side of the axis normal to the
+// plane (G17: +Z, G18: +Y, G19: +X): on the lattice (u right, v up) a clockwise block
+// turns clockwise in G17 and G19 and in G18 as the ZX plane is drawn with Z right and X
+// up (a lathe's rear-tool-post view).
+struct Move {
+  SourcePos pos;
+  std::optional<std::int64_t> block_number;  // N
+  MoveKind kind = MoveKind::Line;
+  Point2 from, to;
+  // Arcs and ellipses: the centre (absolute); arcs: the radius (to the start), full
+  // turn (end equal to start, given by a centre).
+  Point2 center;
+  Length radius = 0;
+  bool full = false;
+  // Ellipses: semi-axes a (along the direction q) and b, q in 0.001 degree from +u.
+  Length a = 0, b = 0;
+  std::int64_t q_millideg = 0;
+  // The feed in force (F, program units per minute as written, 0 if none yet).
+  double feed = 0;
+};
+
+// A word that does not move the tool, accepted and reported ("S1200", "M03", "G54").
+struct Ignored {
+  SourcePos pos;
+  std::string word;
+};
+
+struct Program {
+  std::vector<Move> moves;
+  std::vector<Ignored> ignored;
+  Point2 start;
+  bool ended = false;  // M02 or M30 seen (text after it is not read)
+};
+
+struct ReadOptions {
+  Machine machine = Machine::Mill;
+  std::optional<Point2> start;  // default (0, 0)
+};
+
+// Reads a program's text; `file` names it in error messages.
+Program read(std::string_view text, const std::string& file, const ReadOptions& opt = {});
+
+}  // namespace dda::program

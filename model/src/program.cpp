@@ -1,0 +1,398 @@
+// SPDX-License-Identifier: Apache-2.0
+// The program reader's interpreter: each line's words (program_grammar.cpp) through the
+// modal state of RS274 into motion blocks (docs/programs.md).
+#include "dda/program.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "program_detail.hpp"
+
+namespace dda::program {
+
+ProgramError::ProgramError(const std::string& file, std::size_t line, std::size_t column, const std::string& message)
+    : InputError(fmt::format("{}:{}:{}: {}", file, line, column, message)), line_(line), column_(column) {}
+
+std::string_view kind_name(MoveKind k) {
+  switch (k) {
+    case MoveKind::Rapid:
+      return "rapid";
+    case MoveKind::Line:
+      return "line";
+    case MoveKind::ArcCw:
+      return "arc cw";
+    case MoveKind::ArcCcw:
+      return "arc ccw";
+    case MoveKind::EllipseCw:
+      return "ellipse cw";
+    case MoveKind::EllipseCcw:
+      return "ellipse ccw";
+  }
+  return "?";
+}
+
+namespace {
+
+using detail::Word;
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::int64_t pow10(int n) {
+  std::int64_t p = 1;
+  for (int i = 0; i < n; ++i) p *= 10;
+  return p;
+}
+
+// a * num / den rounded half away from zero, in 128 bits.
+std::int64_t scale_round(std::int64_t a, std::int64_t num, std::int64_t den) {
+  const __int128 p = static_cast<__int128>(a) * num;
+  const __int128 h = den / 2;
+  return static_cast<std::int64_t>(p >= 0 ? (p + h) / den : -((-p + h) / den));
+}
+
+double length_mm(Length l) { return double(l) / double(kNmPerMm); }
+
+struct Modal {
+  int motion = -1;  // G-code in tenths: 0, 10, 20, 30, 62, 63; -1: none yet
+  int plane = 170;
+  bool inch = false;
+  bool incremental = false;
+  bool diameter = true;  // lathe: X and U as diameters (G36), or radii (G37)
+  double feed = 0;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& file, const ReadOptions& opt) : file_(file), opt_(opt) {
+    if (opt.machine == Machine::Lathe) m_.plane = 180;
+    if (opt.start) prog_.start = *opt.start;
+    at_ = prog_.start;
+  }
+
+  Program run(const std::vector<detail::Line>& lines) {
+    bool in_program = false;
+    for (const auto& l : lines) {
+      if (l.header) {
+        if (in_program && !prog_.moves.empty()) break;  // the next program: the first is the main one
+        in_program = true;
+        continue;
+      }
+      block(l);
+      if (prog_.ended) break;
+    }
+    return prog_;
+  }
+
+ private:
+  [[noreturn]] void fail(const SourcePos& p, const std::string& msg) const {
+    throw ProgramError(file_, p.line, p.column, msg);
+  }
+  std::string name(const Word& w) const { return std::string(1, w.letter) + w.text; }
+
+  Length length(const Word& w) const {
+    if (m_.inch) return scale_round(w.mantissa, 25400000, pow10(w.decimals));
+    if (w.decimals <= 6) return w.mantissa * pow10(6 - w.decimals);
+    return scale_round(w.mantissa, 1, pow10(w.decimals - 6));
+  }
+  // A code's number in tenths (G6.2: 62, G01: 10), or an integer word's value.
+  int tenths(const Word& w) const {
+    if (w.decimals > 1 && w.mantissa % pow10(w.decimals - 1) != 0) fail(w.pos, "no code " + name(w));
+    const std::int64_t t = w.decimals == 0 ? w.mantissa * 10 : w.mantissa / pow10(w.decimals - 1);
+    if (t < 0 || t > 100000) fail(w.pos, "no code " + name(w));
+    return int(t);
+  }
+  std::int64_t integer(const Word& w) const {
+    if (w.decimals > 0 && w.mantissa % pow10(w.decimals) != 0) fail(w.pos, name(w) + ": a whole number is needed");
+    return w.mantissa / pow10(w.decimals);
+  }
+
+  void block(const detail::Line& l);
+  void motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n);
+  void arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
+  void ellipse(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
+
+  // The letters of the plane's two axes and their centre offsets, per machine and plane.
+  struct PlaneLetters {
+    char u, v, iu, iv, inc_u, inc_v;  // inc_*: the lathe's incremental letters (0: none)
+  };
+  PlaneLetters letters() const {
+    if (opt_.machine == Machine::Lathe) return {'Z', 'X', 'K', 'I', 'W', 'U'};
+    if (m_.plane == 180) return {'Z', 'X', 'K', 'I', 0, 0};
+    if (m_.plane == 190) return {'Y', 'Z', 'J', 'K', 0, 0};
+    return {'X', 'Y', 'I', 'J', 0, 0};
+  }
+
+  std::string file_;
+  ReadOptions opt_;
+  Modal m_;
+  Program prog_;
+  Point2 at_;
+};
+
+void Reader::block(const detail::Line& l) {
+  if (l.words.empty()) return;
+  const SourcePos first = l.words.front().pos;
+  std::optional<std::int64_t> n;
+  std::array<const Word*, 8> group{};  // modal groups: motion, plane, units, distance, diameter, comp, dwell, work
+  std::map<char, const Word*> axes;
+  bool end = false;
+  const auto set_group = [&](std::size_t g, const Word& w, const char* what) {
+    if (group[g]) fail(w.pos, "G" + group[g]->text + " and G" + w.text + " in one block: one " + what + " per block");
+    group[g] = &w;
+  };
+  for (const Word& w : l.words) {
+    switch (w.letter) {
+      case 'N':
+        n = integer(w);
+        break;
+      case 'G': {
+        const int g = tenths(w);
+        if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63) {
+          set_group(0, w, "motion");
+        } else if (g == 170 || g == 180 || g == 190) {
+          if (opt_.machine == Machine::Lathe && g != 180) fail(w.pos, "a lathe works in G18 (Z and X)");
+          set_group(1, w, "plane");
+        } else if (g == 200 || g == 210) {
+          set_group(2, w, "unit");
+        } else if (g == 900 || g == 910) {
+          set_group(3, w, "distance mode");
+        } else if (g == 360 || g == 370) {
+          if (opt_.machine != Machine::Lathe)
+            fail(w.pos, "G36/G37 (diameter or radius X) are lathe codes (--machine lathe)");
+          set_group(4, w, "X mode");
+        } else if (g == 400) {
+          prog_.ignored.push_back({w.pos, name(w)});
+        } else if (g == 410 || g == 420) {
+          fail(w.pos, "tool radius compensation (G41/G42) is not supported: program the tool's path");
+        } else if (g == 40) {
+          set_group(6, w, "dwell");
+          prog_.ignored.push_back({w.pos, name(w)});
+        } else if ((g >= 540 && g <= 590 && g % 10 == 0) || g == 940 || g == 950 || g == 800) {
+          prog_.ignored.push_back({w.pos, name(w)});
+        } else {
+          fail(w.pos, "unknown or unsupported code " + name(w));
+        }
+        break;
+      }
+      case 'M': {
+        const std::int64_t m = integer(w);
+        if (m == 2 || m == 30) {
+          end = true;
+        } else if (m == 0 || m == 1 || m == 3 || m == 4 || m == 5 || m == 8 || m == 9) {
+          prog_.ignored.push_back({w.pos, name(w)});
+        } else if (m == 98 || m == 99) {
+          fail(w.pos, "subprogram calls (M98/M99) are not supported yet");
+        } else {
+          fail(w.pos, "unknown or unsupported code " + name(w));
+        }
+        break;
+      }
+      case 'S':
+      case 'T':
+        prog_.ignored.push_back({w.pos, name(w)});
+        break;
+      case 'F': {
+        const double f = double(w.mantissa) / double(pow10(w.decimals));
+        if (f <= 0) fail(w.pos, "the feed F must be positive");
+        m_.feed = f;
+        break;
+      }
+      default:
+        if (std::string_view("XYZUVWIJKRABQP").find(w.letter) == std::string_view::npos) {
+          fail(w.pos, std::string("unknown word ") + w.letter);
+        }
+        if (axes.count(w.letter)) fail(w.pos, std::string(1, w.letter) + " twice in one block");
+        axes[w.letter] = &w;
+    }
+  }
+  // The modal codes take effect before the block's motion (RS274's order).
+  if (group[1]) m_.plane = tenths(*group[1]);
+  if (group[2]) m_.inch = tenths(*group[2]) == 200;
+  if (group[3]) m_.incremental = tenths(*group[3]) == 910;
+  if (group[4]) m_.diameter = tenths(*group[4]) == 360;
+  if (group[0]) m_.motion = tenths(*group[0]);
+  if (group[6]) {  // G04: X, U or P is the dwell time, nothing moves
+    for (const auto& [c, w] : axes) {
+      if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
+      prog_.ignored.push_back({w->pos, name(*w)});
+    }
+  } else {
+    if (const auto p = axes.find('P'); p != axes.end()) fail(p->second->pos, "P is read only with G04");
+    const bool moves = !axes.empty() || (group[0] && (m_.motion == 20 || m_.motion == 30));
+    if (moves) motion(axes, group[0] ? group[0]->pos : first, n);
+  }
+  if (end) prog_.ended = true;
+}
+
+void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n) {
+  if (m_.motion < 0) fail(where, "a move with no motion mode (G00, G01, G02, G03, G6.2, G6.3) in force");
+  const PlaneLetters pl = letters();
+  const bool ellipse_mode = m_.motion == 62 || m_.motion == 63;
+  const bool arc_mode = m_.motion == 20 || m_.motion == 30;
+  for (const auto& [c, w] : axes) {
+    const bool axis = c == pl.u || c == pl.v || (pl.inc_u && (c == pl.inc_u || c == pl.inc_v));
+    const bool centre = c == pl.iu || c == pl.iv;
+    if (axis) continue;
+    if (centre && (arc_mode || ellipse_mode)) continue;
+    if (c == 'R' && arc_mode) continue;
+    if ((c == 'A' || c == 'B' || c == 'Q') && ellipse_mode) continue;
+    if (c == 'X' || c == 'Y' || c == 'Z' || c == 'U' || c == 'V' || c == 'W') {
+      fail(w->pos, std::string(1, c) + " is not an axis of the " +
+                       (opt_.machine == Machine::Lathe ? std::string("lathe (Z and X)")
+                                                       : "plane in force (G17 X Y, G18 Z X, G19 Y Z)"));
+    }
+    if (centre || c == 'I' || c == 'J' || c == 'K') fail(w->pos, std::string(1, c) + " is not a centre word here");
+    fail(w->pos, std::string(1, c) + (c == 'R' ? " is read only with G02/G03" : " is read only with G6.2/G6.3"));
+  }
+  const bool lathe = opt_.machine == Machine::Lathe;
+  const auto v_len = [&](const Word& w) {  // the lathe's X and U: diameters unless G37
+    const Length l = length(w);
+    return lathe && m_.diameter ? l / 2 : l;
+  };
+  Point2 to = at_;
+  if (const auto u = axes.find(pl.u); u != axes.end())
+    to.u = m_.incremental ? at_.u + length(*u->second) : length(*u->second);
+  if (const auto v = axes.find(pl.v); v != axes.end())
+    to.v = m_.incremental ? at_.v + v_len(*v->second) : v_len(*v->second);
+  if (pl.inc_u) {
+    const auto iu = axes.find(pl.inc_u), iv = axes.find(pl.inc_v);
+    if (iu != axes.end() && axes.count(pl.u)) fail(iu->second->pos, std::string("both ") + pl.u + " and " + pl.inc_u);
+    if (iv != axes.end() && axes.count(pl.v)) fail(iv->second->pos, std::string("both ") + pl.v + " and " + pl.inc_v);
+    if (iu != axes.end()) to.u = at_.u + length(*iu->second);
+    if (iv != axes.end()) to.v = at_.v + v_len(*iv->second);
+  }
+  Move mv;
+  mv.pos = where;
+  mv.block_number = n;
+  mv.from = at_;
+  mv.to = to;
+  mv.feed = m_.feed;
+  if (m_.motion == 0 || m_.motion == 10) {
+    mv.kind = m_.motion == 0 ? MoveKind::Rapid : MoveKind::Line;
+  } else if (arc_mode) {
+    mv.kind = m_.motion == 20 ? MoveKind::ArcCw : MoveKind::ArcCcw;
+    arc(mv, axes, where);
+  } else {
+    mv.kind = m_.motion == 62 ? MoveKind::EllipseCw : MoveKind::EllipseCcw;
+    ellipse(mv, axes, where);
+  }
+  prog_.moves.push_back(mv);
+  at_ = to;
+}
+
+// The centre of a circle of radius r through p and q, on the side that makes the turn
+// from p to q in direction cw sweep at most half a turn (short) or at least (long).
+Point2 centre_through(Point2 p, Point2 q, double r, bool cw, bool short_arc) {
+  const double mx = (double(p.u) + double(q.u)) / 2, my = (double(p.v) + double(q.v)) / 2;
+  const double dx = double(q.u) - double(p.u), dy = double(q.v) - double(p.v);
+  const double d = std::hypot(dx, dy);
+  const double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
+  // Left of the chord (counter-clockwise side): a ccw short arc has its centre there.
+  const double lx = -dy / d, ly = dx / d;
+  const bool left = (!cw) == short_arc;
+  const double s = left ? h : -h;
+  return Point2{Length(std::llround(mx + s * lx)), Length(std::llround(my + s * ly))};
+}
+
+void Reader::arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where) {
+  const PlaneLetters pl = letters();
+  const auto iu = axes.find(pl.iu), iv = axes.find(pl.iv), r = axes.find('R');
+  const bool has_centre = iu != axes.end() || iv != axes.end();
+  if (r != axes.end() && has_centre) fail(r->second->pos, "an arc takes a centre or a radius R, not both");
+  if (r == axes.end() && !has_centre) {
+    fail(where, std::string("an arc needs a centre (") + pl.iu + ", " + pl.iv + ") or a radius R");
+  }
+  const bool cw = mv.kind == MoveKind::ArcCw;
+  if (has_centre) {
+    // Centre words are offsets from the start (RS274); the lathe's I is a radius.
+    mv.center = mv.from;
+    if (iu != axes.end()) mv.center.u += length(*iu->second);
+    if (iv != axes.end()) mv.center.v += length(*iv->second);
+    const double r0 = std::hypot(double(mv.from.u - mv.center.u), double(mv.from.v - mv.center.v));
+    const double r1 = std::hypot(double(mv.to.u - mv.center.u), double(mv.to.v - mv.center.v));
+    if (r0 < 1) fail(where, "the arc's centre is its start point");
+    if (std::fabs(r1 - r0) > double(kEndTolerance)) {
+      fail(where, fmt::format("the end is {:.4f} mm off the arc's circle (radius {:.4f} mm; tolerance {:.3f} mm)",
+                              length_mm(Length(std::llround(std::fabs(r1 - r0)))), r0 / double(kNmPerMm),
+                              length_mm(kEndTolerance)));
+    }
+    mv.radius = Length(std::llround(r0));
+    mv.full = mv.from == mv.to;
+    return;
+  }
+  const Length rr = length(*r->second);
+  if (rr == 0) fail(r->second->pos, "the radius R must not be 0");
+  if (mv.from == mv.to) fail(r->second->pos, "a full circle needs a centre, not R");
+  const double d = std::hypot(double(mv.to.u - mv.from.u), double(mv.to.v - mv.from.v));
+  const double ar = std::fabs(double(rr));
+  if (d > 2 * ar + double(kEndTolerance)) {
+    fail(r->second->pos, fmt::format("the end is out of reach: {:.4f} mm from the start, more than twice R {:.4f} mm",
+                                     d / double(kNmPerMm), ar / double(kNmPerMm)));
+  }
+  mv.center = centre_through(mv.from, mv.to, ar, cw, rr > 0);
+  mv.radius = Length(std::llround(ar));
+}
+
+void Reader::ellipse(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where) {
+  const PlaneLetters pl = letters();
+  const auto a = axes.find('A'), b = axes.find('B'), q = axes.find('Q');
+  if (a == axes.end() || b == axes.end()) fail(where, "an ellipse block needs its semi-axes A and B");
+  mv.a = length(*a->second);
+  mv.b = length(*b->second);
+  if (mv.a <= 0) fail(a->second->pos, "the semi-axis A must be positive");
+  if (mv.b <= 0) fail(b->second->pos, "the semi-axis B must be positive");
+  mv.q_millideg = q == axes.end() ? 0 : integer(*q->second);
+  const bool cw = mv.kind == MoveKind::EllipseCw;
+  const double th = double(mv.q_millideg) / 1000.0 * kPi / 180.0, c = std::cos(th), s = std::sin(th);
+  const double A = double(mv.a), B = double(mv.b);
+  // To the ellipse's frame, with the minor axis stretched to A: the ellipse is a circle.
+  const auto to_frame = [&](double x, double y) {
+    return std::pair<double, double>{c * x + s * y, (-s * x + c * y) * A / B};
+  };
+  const auto from_frame = [&](double x, double y) {
+    const double yy = y * B / A;
+    return std::pair<double, double>{c * x - s * yy, s * x + c * yy};
+  };
+  const auto iu = axes.find(pl.iu), iv = axes.find(pl.iv);
+  if (iu != axes.end() || iv != axes.end()) {
+    mv.center = mv.from;
+    if (iu != axes.end()) mv.center.u += length(*iu->second);
+    if (iv != axes.end()) mv.center.v += length(*iv->second);
+  } else {
+    if (mv.from == mv.to) fail(where, "a full ellipse needs its centre (I, K)");
+    const auto [px, py] = to_frame(double(mv.from.u), double(mv.from.v));
+    const auto [qx, qy] = to_frame(double(mv.to.u), double(mv.to.v));
+    const double d = std::hypot(qx - px, qy - py);
+    if (d > 2 * A + double(kEndTolerance)) fail(where, "the end is out of reach of an ellipse with these A, B and Q");
+    // The circle's centre for the shorter arc; the frame keeps the turning sense.
+    const Point2 cf = centre_through(Point2{Length(std::llround(px)), Length(std::llround(py))},
+                                     Point2{Length(std::llround(qx)), Length(std::llround(qy))}, A, cw, true);
+    const auto [cx, cy] = from_frame(double(cf.u), double(cf.v));
+    mv.center = Point2{Length(std::llround(cx)), Length(std::llround(cy))};
+  }
+  // Both ends on the ellipse, within the tolerance along the radius.
+  const std::array<Point2, 2> ends{mv.from, mv.to};
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const double x = double(ends[i].u - mv.center.u), y = double(ends[i].v - mv.center.v);
+    const double xe = c * x + s * y, ye = -s * x + c * y;
+    const double rho = std::hypot(xe / A, ye / B);
+    const double off = std::fabs(rho - 1) * std::hypot(x, y) / std::max(rho, 1e-12);
+    if (off > double(kEndTolerance)) {
+      fail(where, fmt::format("the {} is {:.4f} mm off the ellipse (tolerance {:.3f} mm)", i == 0 ? "start" : "end",
+                              off / double(kNmPerMm), length_mm(kEndTolerance)));
+    }
+  }
+  mv.full = mv.from == mv.to;
+}
+
+}  // namespace
+
+Program read(std::string_view text, const std::string& file, const ReadOptions& opt) {
+  Reader r(file, opt);
+  return r.run(detail::parse_lines(text, file));
+}
+
+}  // namespace dda::program

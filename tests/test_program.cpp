@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: Apache-2.0
+// The part-program reader (model/include/dda/program.hpp, docs/programs.md): the G-code
+// it accepts becomes the motion blocks the program describes, in nanometres of the
+// plane; every class of bad input is one "FILE:LINE:COLUMN: message" at the right place.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dda/program.hpp"
+
+using namespace dda::program;
+
+namespace {
+
+constexpr Length mm(double v) { return Length(v * 1e6 + (v < 0 ? -0.5 : 0.5)); }
+
+Program mill(const std::string& text) { return read(text, "p.nc", ReadOptions{Machine::Mill, {}}); }
+Program lathe(const std::string& text) { return read(text, "p.nc", ReadOptions{Machine::Lathe, {}}); }
+
+// The error a program raises ("" if none).
+std::string error_of(const std::string& text, Machine m = Machine::Mill) {
+  try {
+    read(text, "p.nc", ReadOptions{m, {}});
+  } catch (const ProgramError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("program: lines, modal motion, incremental moves, block numbers and comments", "[program]") {
+  const Program p = mill(
+      "%\n(a contour)\nN10 G21 G90 G00 X1 Y2 ; rapid to the start\nN20 G01 X10 Y5 F250\nX20\nG91 Y-5.5\nM30\nX99\n");
+  REQUIRE(p.moves.size() == 4);
+  CHECK(p.ended);
+  CHECK(p.moves[0].kind == MoveKind::Rapid);
+  CHECK(p.moves[0].to == Point2{mm(1), mm(2)});
+  CHECK(*p.moves[0].block_number == 10);
+  CHECK(p.moves[1].kind == MoveKind::Line);
+  CHECK(p.moves[1].feed == 250);
+  CHECK(p.moves[2].to == Point2{mm(20), mm(5)});  // G01 and F stay in force
+  CHECK(p.moves[2].kind == MoveKind::Line);
+  CHECK(p.moves[3].from == Point2{mm(20), mm(5)});
+  CHECK(p.moves[3].to == Point2{mm(20), mm(-0.5)});
+  CHECK(p.moves[3].pos.line == 6);
+}
+
+TEST_CASE("program: circular arcs by centre (off the lattice) and by radius, and full circles", "[program]") {
+  const Program p = mill("G17 G02 X10 Y0 I5 J0\nG03 X0 Y0 R5.0003\nG02 X10 Y0 R-10\nG02 X10 Y0 I-2.5 J0.0004\n");
+  REQUIRE(p.moves.size() == 4);
+  CHECK(p.moves[0].kind == MoveKind::ArcCw);
+  CHECK(p.moves[0].center == Point2{mm(5), 0});
+  CHECK(p.moves[0].radius == mm(5));
+  // R > 0: the short arc; from (10, 0) back to (0, 0) counter-clockwise: centre just
+  // below the chord's middle.
+  CHECK(std::llabs(p.moves[1].center.u - mm(5)) <= 1);
+  CHECK(p.moves[1].center.v < 0);
+  // R < 0: the long arc, clockwise from (0, 0) to (10, 0): centre above the chord.
+  CHECK(p.moves[2].center.v == mm(std::sqrt(75.0)));
+  CHECK(p.moves[2].radius == mm(10));
+  // A full circle, its centre off the lattice.
+  CHECK(p.moves[3].full);
+  CHECK(p.moves[3].center == Point2{mm(7.5), mm(0.0004)});
+}
+
+TEST_CASE("program: a lathe programs X as a diameter (G36) or a radius (G37), U and W incrementally", "[program]") {
+  const Program p = lathe("G00 X20 Z0\nG01 U10 W-5\nG37 X20\nG36 G02 X40 Z-15 R5\n");
+  REQUIRE(p.moves.size() == 4);
+  CHECK(p.moves[0].to == Point2{0, mm(10)});        // (Z, X radius)
+  CHECK(p.moves[1].to == Point2{mm(-5), mm(15)});   // U10: 5 more in radius
+  CHECK(p.moves[2].to == Point2{mm(-5), mm(20)});   // G37: X20 is the radius
+  CHECK(p.moves[3].to == Point2{mm(-15), mm(20)});  // back to diameters
+  CHECK(p.moves[3].kind == MoveKind::ArcCw);
+  CHECK(error_of("G01 Y5\n", Machine::Lathe) == "p.nc:1:5: Y is not an axis of the lathe (Z and X)");
+  CHECK(error_of("G17\n", Machine::Lathe) == "p.nc:1:1: a lathe works in G18 (Z and X)");
+}
+
+TEST_CASE("program: ellipse blocks G6.2 and G6.3 with and without a centre", "[program]") {
+  // A 30-degree ellipse, a = 20, b = 10, centred at the origin; from its +a vertex to its
+  // +b vertex counter-clockwise (lathe plane, radius programming).
+  const double q = 30.0 * 3.14159265358979323846 / 180.0;
+  const double ax = 20 * std::cos(q), ay = 20 * std::sin(q), bx = -10 * std::sin(q), by = 10 * std::cos(q);
+  const std::string start = "G37 G00 Z" + std::to_string(ax) + " X" + std::to_string(ay) + "\n";
+  const std::string end = " Z" + std::to_string(bx) + " X" + std::to_string(by);
+  const Program with =
+      lathe(start + "G6.3" + end + " A20 B10 Q30000 K" + std::to_string(-ax) + " I" + std::to_string(-ay) + "\n");
+  const Program without = lathe(start + "G6.3" + end + " A20 B10 Q30000\n");
+  REQUIRE(with.moves.size() == 2);
+  REQUIRE(without.moves.size() == 2);
+  for (const Program* p : {&with, &without}) {
+    const Move& e = p->moves[1];
+    CHECK(e.kind == MoveKind::EllipseCcw);
+    CHECK(std::llabs(e.center.u) <= 2);  // the origin, to the rounding of 1e-6 mm
+    CHECK(std::llabs(e.center.v) <= 2);
+    CHECK(e.a == mm(20));
+    CHECK(e.b == mm(10));
+    CHECK(e.q_millideg == 30000);
+  }
+  // Clockwise between the same points without a centre: the shorter clockwise arc has
+  // the centre on the other side.
+  const Program cw = lathe(start + "G6.2" + end + " A20 B10 Q30000\n");
+  CHECK(cw.moves[1].kind == MoveKind::EllipseCw);
+  CHECK(std::hypot(double(cw.moves[1].center.u), double(cw.moves[1].center.v)) > double(mm(5)));
+}
+
+TEST_CASE("program: words that do not move the tool are accepted and reported", "[program]") {
+  const Program p = mill("G54 T1 M03 S1200 M08\nG04 P500\nG01 X1 F100\nM09 M05\nM02\n");
+  CHECK(p.moves.size() == 1);
+  REQUIRE(p.ignored.size() == 9);
+  CHECK(p.ignored[0].word == "G54");
+  CHECK(p.ignored[3].word == "S1200");
+  CHECK(p.ignored[5].word == "G04");
+  CHECK(p.ignored[6].word == "P500");
+}
+
+TEST_CASE("program: inches (G20) are read exactly in nanometres", "[program]") {
+  const Program p = mill("G20 G01 X1 Y-0.0005\n");
+  CHECK(p.moves[0].to == Point2{25400000, -12700});
+}
+
+TEST_CASE("program: every class of bad input names its file, line and column", "[program]") {
+  CHECK(error_of("G01 X1\nG01 E5\n") == "p.nc:2:5: unknown word E");
+  CHECK(error_of("G93 X1\n") == "p.nc:1:1: unknown or unsupported code G93");
+  CHECK(error_of("G01 X1.2.3\n") == "p.nc:1:9: unexpected '.'");
+  CHECK(error_of("G01 X Y1\n") == "p.nc:1:7: a number must follow the letter");
+  CHECK(error_of("G01 X1 (open comment\n") == "p.nc:1:21: a comment opened with '(' must close on its line");
+  CHECK(error_of("X1\n") == "p.nc:1:1: a move with no motion mode (G00, G01, G02, G03, G6.2, G6.3) in force");
+  CHECK(error_of("G02 X10 Y0\n") == "p.nc:1:1: an arc needs a centre (I, J) or a radius R");
+  CHECK(error_of("G02 X10 Y0 I5 R5\n") == "p.nc:1:15: an arc takes a centre or a radius R, not both");
+  CHECK(error_of("G02 X10 Y0 I4\n") ==
+        "p.nc:1:1: the end is 2.0000 mm off the arc's circle (radius 4.0000 mm; tolerance 0.002 mm)");
+  CHECK(error_of("G02 X10 Y0 I5.0009\n").empty());  // the radii differ by 0.0018 mm: within the tolerance
+  CHECK(error_of("G02 X10 Y0 I5.0011\n") ==
+        "p.nc:1:1: the end is 0.0022 mm off the arc's circle (radius 5.0011 mm; tolerance 0.002 mm)");
+  CHECK(error_of("G02 X10 Y0 R4\n") ==
+        "p.nc:1:12: the end is out of reach: 10.0000 mm from the start, more than twice R 4.0000 mm");
+  CHECK(error_of("G02 X0 Y0 R4\n") == "p.nc:1:11: a full circle needs a centre, not R");
+  CHECK(error_of("G6.2 X10 Y0 A0 B2\n") == "p.nc:1:13: the semi-axis A must be positive");
+  CHECK(error_of("G6.2 X10 Y0 A5 B-2\n") == "p.nc:1:16: the semi-axis B must be positive");
+  CHECK(error_of("G6.2 X10 Y0 A5\n") == "p.nc:1:1: an ellipse block needs its semi-axes A and B");
+  CHECK(error_of("G6.2 X30 Y0 A5 B2\n") == "p.nc:1:1: the end is out of reach of an ellipse with these A, B and Q");
+  CHECK(error_of("G41 G01 X1\n") ==
+        "p.nc:1:1: tool radius compensation (G41/G42) is not supported: program the tool's path");
+  CHECK(error_of("G01 X1 Z5\n") == "p.nc:1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)");
+  CHECK(error_of("G01 G02 X1\n") == "p.nc:1:5: G01 and G02 in one block: one motion per block");
+  CHECK(error_of("G01 X1 X2\n") == "p.nc:1:8: X twice in one block");
+  CHECK(error_of("M98 P10\n") == "p.nc:1:1: subprogram calls (M98/M99) are not supported yet");
+  CHECK(error_of("G01 X1 F0\n") == "p.nc:1:8: the feed F must be positive");
+}
