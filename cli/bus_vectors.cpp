@@ -42,7 +42,7 @@ std::vector<BusField> bus_expect_fields() {
           {"step_y_o", 1, "Y step pulse", "step_y"},
           {"dir_x_o", 1, "X direction", "dir_x"},
           {"dir_y_o", 1, "Y direction", "dir_y"},
-          {"busy_o", 1, "the core runs a command or a step/dir stage holds a step", "busy"},
+          {"busy_o", 1, "the core runs, or a step is on its way to the pins or a pulse is out", "busy"},
           {"irq_o", 1, "interrupt", "irq"},
           {"pos_x_q", 32, "X position register", "dut.pos_x_q"},
           {"pos_y_q", 32, "Y position register", "dut.pos_y_q"},

@@ -33,8 +33,8 @@ void write_feed_report(std::ostream& os, const Plan& plan, bool summary, const s
   for (std::size_t i = 0; i < plan.pieces.size(); ++i) {
     const feed::PieceMotion m = feed::piece_motion(plan.pieces[i].cmd);
     if (m.iterations == 0) continue;
-    // A piece's own increment sets its mean speed to the feed (feed_increment uses the
-    // piece's path over its iterations, which the mean of the integrands' speed follows).
+    // A piece's own increment sets its mean speed to the feed (feed_increment: its path
+    // over its iterations is this mean).
     const double mean = m.speed_mean;
     const double ripple = m.speed_min > 0 ? m.speed_max / m.speed_min : std::numeric_limits<double>::infinity();
     const double err = error_percent(m.speed_min, mean, m.speed_max);

@@ -10,8 +10,8 @@
 //   dirhold   and for at least dirhold cycles after a falling one (0: it may change on the
 //             falling edge itself).
 // A core step waits in a one-step buffer (pend_q, with its direction) until the timings
-// let it out. hold_o stops the core in a cycle only when the step its iteration would
-// make could not enter the buffer: a step waits after this edge and will not leave on
+// let it out. hold_o stops the core in a cycle only when a step its iteration could make
+// (whether or not it makes one) could not enter the buffer: a step waits after this edge and will not leave on
 // the next one (the next edge's rise, computed from this edge's next state), so no step
 // is dropped, merged or reordered and the core is not held when the timings allow its
 // pace. rise_o marks the edge on which a pulse starts (the block counts the position

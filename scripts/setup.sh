@@ -9,6 +9,7 @@ PACKAGES=(
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
   z3 librsvg2-bin clang-format parallel tao-pegtl-dev
+  clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
 )
 
 missing=()

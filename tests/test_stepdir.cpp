@@ -12,11 +12,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <vector>
 
 #include "dda/golden.hpp"
 #include "dda/stepdir_monitor.hpp"
+#include "dda_random.hpp"
 #include "motion_harness.hpp"
 
 using namespace dda;
@@ -276,4 +278,32 @@ TEST_CASE("stepdir: STATUS.busy stays high from a piece's last iteration until i
     CHECK(d.position().y == -1);
     CHECK(m.read(reg_offset("DONE_COUNT")) == 1);
   }
+}
+
+TEST_CASE("stepdir: timings rewritten while the axes run: every step out, every edge within the timings in force",
+          "[stepdir]") {
+  // A timing written on an edge acts from the next one; the block holds the core on that
+  // edge (the stages' look-ahead used the old timings), so no step can find the buffer
+  // full. The monitor checks each edge against the timings in force on it.
+  const Plan p = circle(30);
+  const std::uint64_t seed = test_seed(17);
+  INFO("seed " << seed);
+  std::mt19937_64 rng(seed);
+  Rig r(seed, true, 0);
+  auto& [h, mon, m, d] = r;
+  r.start(p);
+  int rewrites = 0;
+  for (int guard = 0; guard < 200000; ++guard) {
+    const auto t = [&] { return std::uint32_t(rng() % 13); };
+    d.set_timings(rng() % 2 ? 'x' : 'y', StageTimings{t(), t(), t(), t()});
+    ++rewrites;
+    m.idle(int(rng() % 40));
+    const std::uint32_t st = m.read(reg_offset("STATUS"));
+    if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st)) break;
+  }
+  CHECK(rewrites > 20);
+  CHECK(d.position().x == p.to.x);
+  CHECK(d.position().y == p.to.y);
+  CHECK(mon.pulses(0) == steps(p, 0));
+  CHECK(mon.pulses(1) == steps(p, 1));
 }

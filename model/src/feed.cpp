@@ -29,8 +29,8 @@ PieceMotion piece_motion(const Command& c) {
     const Iteration it = d.iterate();
     m.steps_x += it.step_x;
     m.steps_y += it.step_y;
-    m.path += it.step_x && it.step_y ? std::sqrt(2.0) : (it.step_x || it.step_y) ? 1.0 : 0.0;
   }
+  m.path = sum;
   m.iterations = d.iterations();
   if (m.iterations == 0) m.speed_min = 0;
   m.speed_mean = m.iterations ? sum / double(m.iterations) : 0;
@@ -42,7 +42,8 @@ std::uint32_t feed_increment(const PieceMotion& m, double feed_steps_per_s, doub
   if (m.path <= 0) return 0;  // a piece that does not move: any pace
   const double one = double(std::uint64_t{1} << motion::kFeedWidth);
   const double inc = std::round(one * double(m.iterations) * feed_steps_per_s / (m.path * clock_hz));
-  if (inc >= one) {
+  if (inc == one) return 0;  // one iteration per clock: the full rate
+  if (inc > one) {
     throw InputError(
         fmt::format("feed: {} steps/s needs {:.3f} iterations per clock on this piece; the core does at "
                     "most 1 (at {} Hz: at most {:.0f} steps/s here)",

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "program_detail.hpp"
 
@@ -55,6 +56,9 @@ std::int64_t scale_round(std::int64_t a, std::int64_t num, std::int64_t den) {
 
 double length_mm(Length l) { return double(l) / double(kNmPerMm); }
 
+// Every length and position stays within 1000000 mm (1e12 nm), far inside 64 bits.
+constexpr Length kMaxLength = 1000000 * kNmPerMm;
+
 struct Modal {
   int motion = -1;  // G-code in tenths: 0, 10, 20, 30, 62, 63; -1: none yet
   int plane = 170;
@@ -93,9 +97,11 @@ class Reader {
   std::string name(const Word& w) const { return std::string(1, w.letter) + w.text; }
 
   Length length(const Word& w) const {
-    if (m_.inch) return scale_round(w.mantissa, 25400000, pow10(w.decimals));
-    if (w.decimals <= 6) return w.mantissa * pow10(6 - w.decimals);
-    return scale_round(w.mantissa, 1, pow10(w.decimals - 6));
+    const __int128 nm = m_.inch           ? static_cast<__int128>(scale_round(w.mantissa, 25400000, pow10(w.decimals)))
+                        : w.decimals <= 6 ? static_cast<__int128>(w.mantissa) * pow10(6 - w.decimals)
+                                          : static_cast<__int128>(scale_round(w.mantissa, 1, pow10(w.decimals - 6)));
+    if (nm > kMaxLength || nm < -kMaxLength) fail(w.pos, name(w) + ": a length beyond 1000000 mm");
+    return static_cast<Length>(nm);
   }
   // A code's number in tenths (G6.2: 62, G01: 10), or an integer word's value.
   int tenths(const Word& w) const {
@@ -264,6 +270,9 @@ void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& wh
     if (iu != axes.end()) to.u = at_.u + length(*iu->second);
     if (iv != axes.end()) to.v = at_.v + v_len(*iv->second);
   }
+  for (const Length c : {to.u, to.v}) {
+    if (c > kMaxLength || c < -kMaxLength) fail(where, "the move leaves the 1000000 mm the reader holds");
+  }
   Move mv;
   mv.pos = where;
   mv.block_number = n;
@@ -283,18 +292,19 @@ void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& wh
   at_ = to;
 }
 
-// The centre of a circle of radius r through p and q, on the side that makes the turn
-// from p to q in direction cw sweep at most half a turn (short) or at least (long).
-Point2 centre_through(Point2 p, Point2 q, double r, bool cw, bool short_arc) {
-  const double mx = (double(p.u) + double(q.u)) / 2, my = (double(p.v) + double(q.v)) / 2;
-  const double dx = double(q.u) - double(p.u), dy = double(q.v) - double(p.v);
+// The centre of a circle of radius r through p and q (distinct), on the side that makes
+// the turn from p to q in direction cw sweep at most half a turn (short) or at least (long).
+std::pair<double, double> centre_through(double px, double py, double qx, double qy, double r, bool cw,
+                                         bool short_arc) {
+  const double mx = (px + qx) / 2, my = (py + qy) / 2;
+  const double dx = qx - px, dy = qy - py;
   const double d = std::hypot(dx, dy);
   const double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
   // Left of the chord (counter-clockwise side): a ccw short arc has its centre there.
   const double lx = -dy / d, ly = dx / d;
   const bool left = (!cw) == short_arc;
   const double s = left ? h : -h;
-  return Point2{Length(std::llround(mx + s * lx)), Length(std::llround(my + s * ly))};
+  return {mx + s * lx, my + s * ly};
 }
 
 void Reader::arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where) {
@@ -332,7 +342,9 @@ void Reader::arc(Move& mv, const std::map<char, const Word*>& axes, const Source
     fail(r->second->pos, fmt::format("the end is out of reach: {:.4f} mm from the start, more than twice R {:.4f} mm",
                                      d / double(kNmPerMm), ar / double(kNmPerMm)));
   }
-  mv.center = centre_through(mv.from, mv.to, ar, cw, rr > 0);
+  const auto [cx, cy] =
+      centre_through(double(mv.from.u), double(mv.from.v), double(mv.to.u), double(mv.to.v), ar, cw, rr > 0);
+  mv.center = Point2{Length(std::llround(cx)), Length(std::llround(cy))};
   mv.radius = Length(std::llround(ar));
 }
 
@@ -368,9 +380,11 @@ void Reader::ellipse(Move& mv, const std::map<char, const Word*>& axes, const So
     const double d = std::hypot(qx - px, qy - py);
     if (d > 2 * A + double(kEndTolerance)) fail(where, "the end is out of reach of an ellipse with these A, B and Q");
     // The circle's centre for the shorter arc; the frame keeps the turning sense.
-    const Point2 cf = centre_through(Point2{Length(std::llround(px)), Length(std::llround(py))},
-                                     Point2{Length(std::llround(qx)), Length(std::llround(qy))}, A, cw, true);
-    const auto [cx, cy] = from_frame(double(cf.u), double(cf.v));
+    const auto [fx, fy] = centre_through(px, py, qx, qy, A, cw, true);
+    const auto [cx, cy] = from_frame(fx, fy);
+    if (!(std::fabs(cx) <= double(4 * kMaxLength) && std::fabs(cy) <= double(4 * kMaxLength))) {
+      fail(where, "the ellipse's centre leaves the range the reader holds");
+    }
     mv.center = Point2{Length(std::llround(cx)), Length(std::llround(cy))};
   }
   // Both ends on the ellipse, within the tolerance along the radius.

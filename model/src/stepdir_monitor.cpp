@@ -8,13 +8,19 @@
 
 namespace dda::motion {
 
+void StepDirChecker::load_timings(Axis& x, const BlockRegs& r, int a) {
+  const std::string n = a == 0 ? "x" : "y";
+  const auto reg = [&](const std::string& f) { return r[breg(f + "_" + n + "_q")]; };
+  x.len = std::max<std::uint64_t>(reg("steplen"), 1);
+  x.space = std::max<std::uint64_t>(reg("stepspace"), 1);
+  x.setup = reg("dirsetup");
+  x.hold = reg("dirhold");
+}
+
 void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos) {
   Axis& x = ax_[std::size_t(a)];
   const std::string n = a == 0 ? "x" : "y";
-  const auto reg = [&](const std::string& f) { return r[breg(f + "_" + n + "_q")]; };
-  const std::uint64_t len = std::max<std::uint64_t>(reg("steplen"), 1);
-  const std::uint64_t space = std::max<std::uint64_t>(reg("stepspace"), 1);
-  const std::uint64_t setup = reg("dirsetup"), hold = reg("dirhold");
+  const std::uint64_t len = x.len, space = x.space, setup = x.setup, hold = x.hold;
   const auto fail = [&](const std::string& what) {
     throw GuardError("step/dir monitor, axis " + n + ", cycle " + std::to_string(cycle_) + ": " + what);
   };
@@ -58,6 +64,7 @@ void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, 
   x.seen_dir = x.seen_dir || turn;
   x.step = step;
   x.dir = dir;
+  load_timings(x, r, a);
   // The position counter moved by exactly the pulses that went out.
   if (preset) {
     x.pos0 = pos - std::uint32_t(rise ? (dir ? -1 : 1) : 0);
@@ -85,6 +92,8 @@ void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, c
     ax_[1].step = step_y;
     ax_[1].dir = dir_y;
     ax_[1].pos0 = pos_y;
+    load_timings(ax_[0], r, 0);
+    load_timings(ax_[1], r, 1);
     return;
   }
   // A write the block took on this edge: it acknowledges it after the edge.

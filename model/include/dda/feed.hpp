@@ -19,7 +19,10 @@ namespace dda::feed {
 struct PieceMotion {
   std::uint64_t iterations = 0;
   std::uint64_t steps_x = 0, steps_y = 0;
-  double path = 0;  // path length in steps: 1 per single-axis iteration, sqrt 2 per diagonal
+  // The length of the curve the piece follows, in steps: the sum over its iterations of
+  // the DDA's velocity |(jv_x, jv_y)| / cap (a staircase count of the steps, 1 per axial
+  // and sqrt 2 per diagonal step, would overstate it by up to a quarter on a circle).
+  double path = 0;
   // The DDA's smooth speed along the path, |(jv_x, jv_y)| / cap steps per iteration, over
   // the piece's iterations: smallest, largest and mean (the integrands as the iteration
   // used them; an axis whose counter is done or whose integrand is not positive adds 0).
@@ -28,10 +31,11 @@ struct PieceMotion {
 PieceMotion piece_motion(const Command& c);
 
 // The increment that runs a piece at feed_steps_per_s along its path on a block clocked
-// at clock_hz: round(2^kFeedWidth * iterations * feed / (path * clock)). Throws
-// InputError if that needs more than one iteration per clock (the core's full rate,
-// increment 0) or less than one per 2^kFeedWidth clocks, or for a non-positive feed or
-// clock. The step/dir stages can hold the core below this pace when the drive's
+// at clock_hz: round(2^kFeedWidth * iterations * feed / (path * clock)), the piece's mean
+// speed along its curve then being the feed; 2^kFeedWidth (one iteration per clock) is
+// increment 0, the core's full rate. Throws InputError if that needs more than one
+// iteration per clock or less than one per 2^kFeedWidth clocks, or for a non-positive
+// feed or clock. The step/dir stages can hold the core below this pace when the drive's
 // timings are slower than the feed (the figures in docs/results.md).
 std::uint32_t feed_increment(const PieceMotion& m, double feed_steps_per_s, double clock_hz);
 

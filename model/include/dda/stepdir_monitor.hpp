@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // The timing monitor of the motion block's axes (docs/design.md, "Step and direction
 // timing"): a BusTarget between the bus master and the block that reads the step and
-// direction outputs after every edge, as a drive would see them (through POLARITY), and
-// checks every edge against the axis' four timings (STEP_*/DIR_*, read from the block's
-// registers): a pulse high for at least max(steplen, 1) cycles, low for at least
-// max(stepspace, 1) cycles between pulses, the direction stable at least dirsetup
-// cycles before a rising edge and dirhold cycles after a falling one, and never changed
-// while a pulse is high. It counts the pulses in their direction and checks after every
-// edge that the position counters moved by exactly what went out (a preset written on
+// direction outputs after every edge with POLARITY undone (an edge that a POLARITY write
+// itself makes at the pins is not seen: set it while the axes are idle), and checks
+// every edge against the axis' four timings (STEP_*/DIR_*, the block's registers before
+// that edge: a timing written on an edge acts from the next one): a pulse high for at least max(steplen, 1) cycles, low
+// for at least max(stepspace, 1) cycles between pulses, the direction stable at least dirsetup cycles before a rising
+// edge and dirhold cycles after a falling one, and never changed while a pulse is high. It counts the pulses in their
+// direction and checks after every edge that the position counters moved by exactly what went out (a preset written on
 // the bus starts the count again), so no step is lost, added or counted twice. Throws
 // GuardError naming the axis, the rule, the cycle and the figures. StepDirChecker is the
 // check itself (the RTL harness and the co-simulation run it on every edge);
@@ -47,7 +47,10 @@ class StepDirChecker {
     std::uint64_t since_fall = 0;              // cycles since the last falling edge
     std::int64_t moved = 0;                    // pulses in their direction since the last preset or reset
     std::uint32_t pos0 = 0;                    // the position counter at that point
+    // The timings the stage decides the next edge with: the registers before that edge.
+    std::uint64_t len = 1, space = 1, setup = 0, hold = 0;
   };
+  static void load_timings(Axis& x, const BlockRegs& r, int a);
   void check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos);
 
   std::array<Axis, 2> ax_{};

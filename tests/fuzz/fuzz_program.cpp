@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: Apache-2.0
+// libFuzzer target of the part-program reader (model/include/dda/program.hpp): any bytes,
+// read on a mill and on a lathe. Bad input must end in ProgramError (an InputError);
+// any other exception, a crash or a sanitizer report is a bug. Built and run by
+// scripts/fuzz-program.sh (clang, -fsanitize=fuzzer,address,undefined).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "dda/program.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  for (const auto m : {dda::program::Machine::Mill, dda::program::Machine::Lathe}) {
+    try {
+      dda::program::read(text, "fuzz.nc", dda::program::ReadOptions{m, {}});
+    } catch (const dda::program::ProgramError&) {
+    }
+  }
+  return 0;
+}
