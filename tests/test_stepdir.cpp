@@ -284,8 +284,9 @@ TEST_CASE("stepdir: timings rewritten while the axes run: every step out, every 
           "[stepdir]") {
   // A timing written on an edge acts from the next one; the block holds the core on that
   // edge (the stages' look-ahead used the old timings), so no step can find the buffer
-  // full. The monitor checks each edge against the timings in force on it.
-  const Plan p = circle(30);
+  // full. The monitor checks each edge against the timings in force on it. A line: X
+  // steps on every iteration, so the core's step after a hold comes at once.
+  const Plan p = plan_line(Point{0, 0}, Point{400, -150}, Preload::Half);
   const std::uint64_t seed = test_seed(17);
   INFO("seed " << seed);
   std::mt19937_64 rng(seed);
@@ -294,10 +295,13 @@ TEST_CASE("stepdir: timings rewritten while the axes run: every step out, every 
   r.start(p);
   int rewrites = 0;
   for (int guard = 0; guard < 200000; ++guard) {
-    const auto t = [&] { return std::uint32_t(rng() % 13); };
-    d.set_timings(rng() % 2 ? 'x' : 'y', StageTimings{t(), t(), t(), t()});
-    ++rewrites;
-    m.idle(int(rng() % 40));
+    // Back-to-back writes, short and long timings in turn, so that many land while a
+    // step waits for a look-ahead made with the timings just replaced.
+    const auto t = [&] { return rng() % 2 ? std::uint32_t(rng() % 3) : std::uint32_t(8 + rng() % 8); };
+    m.write(reg_offset(rng() % 2 ? "STEP_X" : "STEP_Y"), t() | t() << field_of("STEP_X", "stepspace").lsb);
+    m.write(reg_offset(rng() % 2 ? "DIR_X" : "DIR_Y"), t() | t() << field_of("DIR_X", "dirhold").lsb);
+    rewrites += 2;
+    if (rng() % 4 == 0) m.idle(int(rng() % 10));
     const std::uint32_t st = m.read(reg_offset("STATUS"));
     if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st)) break;
   }
