@@ -95,12 +95,7 @@ TEST_CASE("motion: identification, configuration and register access on classic 
 }
 
 TEST_CASE("motion: the paper's example through the queue ends on its end point", "[motion]") {
-  ArcSpec s;
-  s.a = 10;
-  s.b = 6;
-  s.bits = 4;
-  s.preload = Preload::Zero;
-  const Plan p = plan_arc(s);
+  const Plan p = plan_arc(paper_example());
   MotionHarness h;
   WishboneMaster m(h, 1, false, 0);
   MotionDriver d(m, 1);

@@ -198,12 +198,7 @@ TEST_CASE("stepdir: an abort lets the pulse in progress finish its steplen and c
 }
 
 TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations per clock, without bursts", "[stepdir]") {
-  ArcSpec s;
-  s.a = 10;
-  s.b = 6;
-  s.bits = 4;
-  s.preload = Preload::Zero;
-  const Plan p = plan_arc(s);
+  const Plan p = plan_arc(paper_example());
   struct Case {
     std::uint32_t feed;
     StageTimings t;

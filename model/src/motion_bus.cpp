@@ -11,11 +11,7 @@
 namespace dda::motion {
 
 void ModelTarget::tick(const BusIn& bus) {
-  BlockInputs in;
-  in.rst_n = rst_n_;
-  in.ce = ce_;
-  in.bus = bus;
-  in.bus.adr &= (1u << kAddrWidth) - 1;
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
   model_.edge(in);
   out_ = model_.outputs();
   if (on_edge) on_edge(in, model_);

@@ -78,19 +78,15 @@ BlockRegs MotionCosim::sc_block() const {
 }
 
 void MotionCosim::tick(const BusIn& bus) {
+  const BlockInputs in = block_inputs(rst_n_v_, ce_v_, bus);
   rst_n_.write(rst_n_v_);
   ce_.write(ce_v_);
   cyc_.write(bus.cyc);
   stb_.write(bus.stb);
   we_.write(bus.we);
-  adr_.write(bus.adr & ((1u << kAddrWidth) - 1));
+  adr_.write(in.bus.adr);
   dat_.write(bus.dat);
   sel_.write(bus.sel);
-  BlockInputs in;
-  in.rst_n = rst_n_v_;
-  in.ce = ce_v_;
-  in.bus = bus;
-  in.bus.adr &= (1u << kAddrWidth) - 1;
   sc_core::sc_start(10, sc_core::SC_NS);
   model_.edge(in);
   ++cycle_;

@@ -112,12 +112,13 @@ MotionHarness::~MotionHarness() {
 }
 
 void MotionHarness::tick(const BusIn& bus) {
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
   top_->rst_ni = rst_n_;
   top_->ce_i = ce_;
   top_->wb_cyc_i = bus.cyc;
   top_->wb_stb_i = bus.stb;
   top_->wb_we_i = bus.we;
-  top_->wb_adr_i = bus.adr & ((1u << kAddrWidth) - 1);
+  top_->wb_adr_i = in.bus.adr;
   top_->wb_dat_i = bus.dat;
   top_->wb_sel_i = bus.sel;
   top_->clk_i = 0;
@@ -128,11 +129,6 @@ void MotionHarness::tick(const BusIn& bus) {
   top_->eval();
   ctx_->timeInc(5);
   if (vcd_) vcd_->dump(ctx_->time());
-  BlockInputs in;
-  in.rst_n = rst_n_;
-  in.ce = ce_;
-  in.bus = bus;
-  in.bus.adr &= (1u << kAddrWidth) - 1;
   model_.edge(in);
   ++cycle_;
 

@@ -11,6 +11,15 @@
 
 namespace dda {
 
+ArcSpec paper_example() {
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.preload = Preload::Zero;
+  return s;
+}
+
 std::uint64_t test_seed(std::uint64_t default_seed) {
   if (const char* s = std::getenv("DDA_SEED"); s && *s) return std::strtoull(s, nullptr, 0);
   return default_seed;

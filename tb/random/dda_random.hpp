@@ -19,6 +19,9 @@ namespace dda {
 // The seed for a test: DDA_SEED from the environment if set, else the default.
 std::uint64_t test_seed(std::uint64_t default_seed);
 
+// The paper's worked example (Table 1): a = 10, b = 6, capacity 2^4, zero preload.
+ArcSpec paper_example();
+
 enum class ArcKind {
   Quarter,  // quadrant I, counter-clockwise, sub-arcs of the quarter (the paper's case)
   Whole,    // any arc: random centre, start and end anywhere on the ellipse, both

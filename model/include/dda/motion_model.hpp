@@ -28,6 +28,12 @@ struct BlockInputs {
   bool ce = true;
   BusIn bus;
 };
+// The inputs of one edge as the block sees them: the address cut to the bits it decodes.
+inline BlockInputs block_inputs(bool rst_n, bool ce, const BusIn& bus) {
+  BlockInputs in{rst_n, ce, bus};
+  in.bus.adr &= (1u << kAddrWidth) - 1;
+  return in;
+}
 // The output ports (after an edge; all registered except wb_stall_o = wb_ack_o).
 struct BlockOutputs {
   bool ack = false, stall = false;
