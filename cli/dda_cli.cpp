@@ -18,6 +18,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -29,6 +30,8 @@
 #include "dda/report.hpp"
 #include "engines.hpp"
 #include "feed_report.hpp"
+#include "output.hpp"
+#include "program_cmd.hpp"
 #include "vectors.hpp"
 
 namespace dda::cli {
@@ -61,6 +64,7 @@ struct ArcOptions {
   bool line = false;
   std::string a, b, bits, preload = "half", from, to, from_theta, to_theta, center, dir = "ccw", angle,
                           engine = "golden", out, format, vcd;
+  ProgramCli prog;  // --program FILE and its options
 };
 
 void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, const std::string& default_format) {
@@ -98,6 +102,7 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, c
   sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
   sub->add_option("--out", o.out, "write to FILE (atomically) instead of stdout");
   sub->add_option("--vcd", o.vcd, "write a waveform of the run to FILE (systemc, rtl engines)");
+  add_program_options(sub, o.prog);
 }
 
 Preload parse_preload(const std::string& v) {
@@ -118,7 +123,30 @@ Plan make_line(const ArcOptions& o) {
   return plan_line(parse_point("from", o.from), parse_point("to", o.to), parse_preload(o.preload));
 }
 
+// --program excludes the arc's options; its own options need it.
+void check_program_options(const ArcOptions& o) {
+  if (!o.prog.given()) {
+    if (o.prog.machine != "mill" || !o.prog.start.empty() || o.prog.step != "0.001") {
+      throw InputError("--machine, --start and --step go with --program FILE");
+    }
+    return;
+  }
+  if (o.line) throw InputError("--line is invalid with --program: the program gives the geometry");
+  for (const auto& [name, v] :
+       {std::pair{"a", &o.a}, std::pair{"b", &o.b}, std::pair{"bits", &o.bits}, std::pair{"center", &o.center},
+        std::pair{"angle", &o.angle}, std::pair{"from", &o.from}, std::pair{"to", &o.to},
+        std::pair{"from-theta", &o.from_theta}, std::pair{"to-theta", &o.to_theta}}) {
+    if (!v->empty()) {
+      throw InputError(std::string("--") + name + " is invalid with --program: the program gives the geometry");
+    }
+  }
+  if (o.dir != "ccw") throw InputError("--dir is invalid with --program: the program gives the geometry");
+}
+
 Plan make_plan(const ArcOptions& o) {
+  check_program_options(o);
+  // (Only `vectors` plans a program here: the hardware runs its commands.)
+  if (o.prog.given()) return load_program(o.prog, parse_preload(o.preload), true).plan;
   if (o.line) return make_line(o);
   if (o.a.empty() || o.b.empty()) {
     throw InputError(std::string("--") + (o.a.empty() ? "a" : "b") +
@@ -165,79 +193,6 @@ E parse_enum(const std::string& name, const std::string& v, const std::map<std::
   throw InputError(name + " = '" + v + "' is invalid: use one of " + allowed);
 }
 
-// A file written atomically: a temporary file beside it, renamed over it only once all
-// went well, and removed on any failure. A path naming an existing non-regular file (a
-// device such as /dev/null or /dev/stdout, a FIFO) is written directly instead, and a
-// symbolic link is followed, so neither is ever replaced by a regular file.
-class AtomicFile {
- public:
-  AtomicFile() = default;
-  explicit AtomicFile(const std::string& path) : path_(path) {
-    if (path_.empty()) return;
-    std::error_code ec;
-    const auto st = std::filesystem::status(path_, ec);
-    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
-      if (std::filesystem::is_directory(st)) throw GuardError("cannot write '" + path_ + "': it is a directory");
-      direct_ = true;
-      write_path_ = path_;
-      return;
-    }
-    if (std::filesystem::is_symlink(std::filesystem::symlink_status(path_, ec))) {
-      target_ = std::filesystem::weakly_canonical(path_, ec).string();
-      if (ec) throw GuardError("cannot resolve '" + path_ + "': " + ec.message());
-    } else {
-      target_ = path_;
-    }
-    write_path_ = target_ + ".tmp." + std::to_string(::getpid());
-    std::ofstream probe(write_path_, std::ios::out | std::ios::trunc | std::ios::binary);
-    if (!probe) throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
-  }
-  ~AtomicFile() {
-    if (!committed_ && !direct_ && !write_path_.empty()) std::remove(write_path_.c_str());
-  }
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-  const std::string& write_path() const { return write_path_; }  // where to write now
-  const std::string& path() const { return path_; }
-  void commit() {
-    if (write_path_.empty() || direct_) return;
-    if (std::rename(write_path_.c_str(), target_.c_str()) != 0) {
-      throw GuardError("cannot rename to '" + path_ + "': " + std::strerror(errno));
-    }
-    committed_ = true;
-  }
-
- private:
-  std::string path_, target_, write_path_;
-  bool direct_ = false, committed_ = false;
-};
-
-// The command's text output: stdout, or an AtomicFile.
-class Output {
- public:
-  explicit Output(const std::string& path) : file_(path) {
-    if (path.empty()) return;
-    stream_.open(file_.write_path(), std::ios::out | std::ios::trunc | std::ios::binary);
-    if (!stream_) throw GuardError("cannot write '" + path + "': " + std::strerror(errno));
-  }
-  std::ostream& stream() { return file_.path().empty() ? std::cout : stream_; }
-  void commit() {
-    if (file_.path().empty()) {
-      std::cout.flush();
-      if (!std::cout) throw GuardError("error writing to standard output");
-      return;
-    }
-    stream_.flush();
-    stream_.close();
-    if (stream_.fail()) throw GuardError("error writing '" + file_.path() + "'");
-    file_.commit();
-  }
-
- private:
-  AtomicFile file_;
-  std::ofstream stream_;
-};
-
 // Plans the arc, runs it on the chosen engine and writes the output (and the waveform)
 // only once everything succeeded.
 template <typename Writer>
@@ -260,13 +215,16 @@ void run_arc_command(const ArcOptions& o, Writer write) {
       throw InputError("vcd = '" + o.vcd + "' is invalid: a waveform is written to a regular file");
     }
   }
-  const Plan plan = make_plan(o);
+  check_program_options(o);
+  std::optional<program::ProgramPlan> pp;
+  if (o.prog.given()) pp = load_program(o.prog, parse_preload(o.preload), o.engine != "golden");
+  const Plan plan = pp ? pp->plan : make_plan(o);
   Output out(o.out);  // both files are opened before the run: a bad path fails fast
   AtomicFile wave(o.vcd);
   EngineOptions eo;
   eo.vcd = wave.write_path();
   const EngineRun run = fn(plan, eo);
-  write(out.stream(), plan, run);
+  write(out.stream(), plan, run, pp ? &*pp : nullptr);
   out.commit();
   wave.commit();
 }
@@ -358,20 +316,24 @@ int main(int argc, char** argv) {
     if (trace->parsed()) {
       const auto fmt = parse_enum<TraceFormat>(
           "format", tr.format, {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
-      run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+      run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const auto*) {
         write_trace(os, plan, r.initial, r.records, fmt);
       });
     } else if (path->parsed()) {
       const auto fmt =
           parse_enum<PathFormat>("format", pa.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
-      run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
+      run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const auto*) {
         write_path(os, path_points(plan, r.records), fmt);
       });
     } else if (stats->parsed()) {
-      const auto fmt =
-          parse_enum<StatsFormat>("format", st.format, {{"text", StatsFormat::Text}, {"json", StatsFormat::Json}});
-      run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r) {
-        write_stats(os, plan, compute_stats(plan, r.records), fmt);
+      const auto fmt = parse_enum<BlockStatsFormat>(
+          "format", st.format,
+          {{"text", BlockStatsFormat::Text}, {"csv", BlockStatsFormat::Csv}, {"json", BlockStatsFormat::Json}});
+      if (fmt == BlockStatsFormat::Csv && !st.prog.given()) throw InputError("--format csv goes with --program");
+      run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const program::ProgramPlan* pp) {
+        if (pp) return write_program_stats(os, *pp, r.records, fmt);
+        write_stats(os, plan, compute_stats(plan, r.records),
+                    fmt == BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);
       });
     } else if (vectors->parsed()) {
       parse_enum<int>("format", ve.format, {{"hex", 0}});
@@ -391,6 +353,8 @@ int main(int argc, char** argv) {
         vo.command_line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
       }
       std::vector<Plan> plans{make_plan(ve)};
+      if (ve.prog.given() && !ve_then.empty())
+        throw InputError("--then is invalid with --program: one program is one run");
       for (const std::string& then : ve_then) {
         CLI::App sub{"arc"};
         ArcOptions o;
@@ -414,6 +378,7 @@ int main(int argc, char** argv) {
       }
     } else if (feedc->parsed()) {
       parse_enum<int>("format", fd.format, {{"markdown", 0}});
+      if (fd.prog.given()) throw InputError("--program is invalid with feed: the feed table is one arc's");
       write_feed_report(std::cout, make_plan(fd), fd_summary, fd_label);
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
@@ -429,8 +394,10 @@ int main(int argc, char** argv) {
       std::string esc;  // the title is XML text
       for (const char ch : title)
         esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
-      run_arc_command(
-          pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r) { write_svg(os, plan, r.records, esc); });
+      run_arc_command(pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const program::ProgramPlan* pp) {
+        if (pp) return write_program_svg(os, *pp, r.records, esc);
+        write_svg(os, plan, r.records, esc);
+      });
     } else if (gen->parsed()) {
       const int kind = parse_enum<int>("kind", gp_kind,
                                        {{"verilog", 0},
@@ -480,6 +447,9 @@ int main(int argc, char** argv) {
       }
       out.commit();
     }
+  } catch (const program::ProgramError& e) {
+    std::cerr << e.what() << '\n';  // FILE:LINE:COLUMN: message, as compilers print
+    return 2;
   } catch (const InputError& e) {
     std::cerr << "dda: error: " << e.what() << '\n';
     return 2;

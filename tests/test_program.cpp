@@ -146,6 +146,71 @@ TEST_CASE("program: every class of bad input names its file, line and column", "
   CHECK(error_of("G01 X1 Z5\n") == "p.nc:1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)");
   CHECK(error_of("G01 G02 X1\n") == "p.nc:1:5: G01 and G02 in one block: one motion per block");
   CHECK(error_of("G01 X1 X2\n") == "p.nc:1:8: X twice in one block");
-  CHECK(error_of("M98 P10\n") == "p.nc:1:1: subprogram calls (M98/M99) are not supported yet");
   CHECK(error_of("G01 X1 F0\n") == "p.nc:1:8: the feed F must be positive");
+}
+
+TEST_CASE("program macros: variables, expressions and words given by expressions", "[program]") {
+  const Program p = mill(
+      "#1=2\n#2=[#1+1]*4-6/3 (10)\n#[#1+1]=-#2 (#3 = -10)\nG01 X#2 Y[#3/4]\nX[SQRT[16]+ABS[-1]+INT[2.9]]\n"
+      "Y[2*SIN[PI/6]] (1)\nX[ATAN[1]*4/PI] Y[TAN[0]+COS[0]]\n");
+  REQUIRE(p.moves.size() == 4);
+  CHECK(p.moves[0].to == Point2{mm(10), mm(-2.5)});
+  CHECK(p.moves[1].to == Point2{mm(7), mm(-2.5)});
+  CHECK(p.moves[2].to == Point2{mm(7), mm(1)});
+  CHECK(p.moves[3].to == Point2{mm(1), mm(1)});
+}
+
+TEST_CASE("program macros: IF/ELSE, nested WHILE, subprograms with L and the position at a call", "[program]") {
+  // A 3 x 2 grid: nested loops; IF picks a line or a rapid; %5 called twice per row.
+  const Program p = mill(
+      "%1\n#1=0\nWHILE #1 LT 2\n #2=0\n WHILE #2 LT 3\n  IF [#2 EQ 1]\n   G00 X#2 Y#1\n  ELSE\n   G01 X#2 Y#1\n"
+      "  ENDIF\n  #2=#2+1\n ENDW\n M98 P5 L2\n #1=#1+1\nENDW\nM30\n%5\nG01 X[#30+1] Y#31\nM99\n");
+  REQUIRE(p.moves.size() == 10);
+  CHECK(p.moves[0].kind == MoveKind::Line);
+  CHECK(p.moves[1].kind == MoveKind::Rapid);
+  CHECK(p.moves[1].to == Point2{mm(1), 0});
+  CHECK(p.moves[3].to == Point2{mm(3), 0});  // %5 from X2: X3, then X4
+  CHECK(p.moves[4].to == Point2{mm(4), 0});
+  CHECK(p.moves[4].pos.line == 18);
+  CHECK(p.moves[9].to == Point2{mm(4), mm(1)});
+  // On a lathe #30 is X as programmed (a diameter) and #32 is Z.
+  const Program q = lathe("%1\nG00 X20 Z-3\nM98 P2\nM30\n%2\nG01 X[#30+2] Z[#32-1]\nM99\n");
+  REQUIRE(q.moves.size() == 2);
+  CHECK(q.moves[1].to == Point2{mm(-4), mm(11)});
+}
+
+TEST_CASE("program macros: the paper's loop runs 304 times, deterministically", "[program]") {
+  // ../shared/spec/lathe-macro-program.md: the loop tests before it increments; in IEEE
+  // double the 305th test sees theta = 136.0000000000002 degrees > 136 and stops.
+  const Program p = lathe(
+      "%1\nG00 X20 Z-12.679492\nM98 P2\nM30\n%2\n#11=#30\n#12=#32\n#1=PI/3\nWHILE #1 LE [PI*136/180]\n"
+      "#1=#1+PI/720\n#11=25*COS[#1]*SIN[-PI/6]+15*SIN[#1]*COS[-PI/6]+5\n"
+      "#12=25*COS[#1]*COS[-PI/6]-15*SIN[#1]*SIN[-PI/6]-30\nG01 X[2*#11] Z[#12]\nENDW\nM99\n");
+  REQUIRE(p.moves.size() == 1 + 304);
+  // The last chord ends at the 136-degree point (to the nanometre).
+  CHECK(std::llabs(p.moves.back().to.u - mm(-40.364226)) <= 1);
+  CHECK(std::llabs(p.moves.back().to.v - mm(23.015624)) <= 1);
+}
+
+TEST_CASE("program macros: every class of bad macro is one FILE:LINE:COLUMN message", "[program]") {
+  CHECK(error_of("G01 X#7\n") == "p.nc:1:6: #7 is undefined: no value was assigned to it");
+  CHECK(error_of("#1=0\n#2=5/#1\n") == "p.nc:2:5: division by zero");
+  CHECK(error_of("#1=SQRT[-4]\n") == "p.nc:1:4: SQRT of a negative number (-4)");
+  CHECK(error_of("#1=1\nWHILE #1 LT 3\nG01 X#1\n") == "p.nc:2:1: WHILE without ENDW in its program");
+  CHECK(error_of("G01 X1\nELSE\n") == "p.nc:2:1: ELSE without IF");
+  CHECK(error_of("ENDW\n") == "p.nc:1:1: ENDW without WHILE");
+  CHECK(error_of("IF [1]\nG01 X1\n") == "p.nc:1:1: IF without ENDIF in its program");
+  CHECK(error_of("IF [1]\nWHILE [1]\nENDIF\n") == "p.nc:3:1: ENDIF inside an open WHILE");
+  CHECK(error_of("%1\nM98 P7\nM30\n%2\nM99\n") == "p.nc:2:5: M98 calls program %7: there is none");
+  CHECK(error_of("%1\nM98 P2\n%2\nM98 P2\nM99\n") == "p.nc:4:5: subprogram calls nested deeper than 8");
+  CHECK(error_of("#1=0\nWHILE [1]\n#1=#1+1\nENDW\n") ==
+        "p.nc:2:1: more than 10000000 lines executed: a loop that does not end?");
+  CHECK(error_of("G01 X1\nM99\n") == "p.nc:2:1: M99 in the main program: no caller to return to");
+  CHECK(error_of("#1=[2\n") == "p.nc:1:6: ']' expected: an expression's bracket must close");
+  CHECK(error_of("#1 5\n") ==
+        "p.nc:1:4: '=' expected: a macro variable at the start of a line is assigned (#n = expression)");
+  CHECK(error_of("#1=*3\n") == "p.nc:1:4: an expression expected (a number, #n, [..], PI or a function)");
+  CHECK(error_of("#1.5=3\n") == "p.nc:1:1: #1.5: a variable number is a whole number from 0 to 999");
+  CHECK(error_of("M98 X1 P2\n") == "p.nc:1:5: X in an M98 block: a call moves nothing");
+  CHECK(error_of("G01 X1 L2\n") == "p.nc:1:8: L is read only with M98");
 }

@@ -166,7 +166,7 @@ TEST_CASE("parametric ends: the span is judged from the ideal start, not the rou
   CHECK(plan_distance(p, double(p.to.x), double(p.to.y)) < 1.0);
 }
 
-TEST_CASE("reached: lattice ends the counted path cannot reach; still refused: a start at the centre",
+TEST_CASE("reached: lattice ends the counted path cannot reach, and still refused: a start at the centre",
           "[golden][rotated][default-widths]") {
   // Issue 11: far inside the curve the counted path stalls short of the vertex; the
   // planner ends the arc on the ray through the end's curve point and goes on to the end

@@ -68,16 +68,16 @@ constexpr int kReanchorOffsets16[] = {24, 36, 54, 81};
 constexpr std::int64_t kZoneChord = 8;  // steps between the way points of the lines across a zone
 
 bool sharp_tips(const ArcSpec& spec) {
-  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
-  return i128(mn) * mn < i128(kTipRadius) * mx;
+  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);  // sub-step units
+  return i128(mn) * mn < (i128(kTipRadius) * mx << spec.sub);
 }
 
 // The parametric angle from a tip of the major axis to where the curve is w16 / 16 step
 // from that axis (minor * sin(angle) = w16 / 16), to the micro-degree on the fixed-point
 // sines; 90 degrees if the minor semi-axis is no longer than that.
 std::int64_t offset_angle(const ArcSpec& spec, int w16) {
-  const i128 mn = std::min(spec.a, spec.b);
-  const i128 width = (i128(w16) << kTrigFrac) / 16;
+  const i128 mn = std::min(spec.a, spec.b);  // sub-step units
+  const i128 width = (i128(w16) << (kTrigFrac + spec.sub)) / 16;
   if (mn << kTrigFrac <= width) return kQuarterTurn;
   std::int64_t lo = 0, hi = kQuarterTurn;  // minor * sin(hi) >= width > minor * sin(lo)
   while (hi - lo > 1) {
@@ -142,8 +142,6 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
   const int D = spec.dir == Direction::Ccw ? 1 : -1;
   const Point c = spec.center;
   const auto rel = [&](Point q) { return Point{q.x - c.x, q.y - c.y}; };
-  const auto tx = [&](Point r) { return D * (i128(k.p) * r.x - i128(k.qx) * r.y); };
-  const auto ty = [&](Point r) { return D * (i128(k.qy) * r.x - i128(k.p) * r.y); };
   const auto at = [&](std::int64_t dist) { return normalize_udeg(theta_from + D * dist); };
   // Travel in parametric angle; the turns, tips and tip zones' ends inside it.
   std::int64_t span = normalize_udeg(D * (theta_to - theta_from));
@@ -223,7 +221,8 @@ void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::
     cm.cap = sc.cap;
     cm.dir_x_neg = sx < 0;
     cm.dir_y_neg = sy < 0;
-    const i128 jvx = sx * tx(rel(a.lattice)), jvy = sy * ty(rel(a.lattice));
+    const auto [tx, ty] = fixed_tangent(spec, k, D, a.lattice);
+    const i128 jvx = sx * tx, jvy = sy * ty;
     if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
       throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
                        pt(a.lattice) + " exceeds the capacity (use more bits)");

@@ -60,8 +60,30 @@ inline int quadrant_of_steps(int sx, int sy, Direction dir) {
 // integrand is at least about half the tangent's length, which is at least
 // a b min(a, b) times the scale).
 inline std::uint64_t rotated_piece_guard(const ArcSpec& spec) {
-  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
-  return std::uint64_t(4 * mx + 8) * (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2), mn)) + 4);
+  const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);  // sub-step units
+  return std::uint64_t(4 * steps_ceil(spec, mx) + 8) *
+         (std::uint64_t(ceil_div(std::int64_t{1} << (spec.bits + 2 + spec.sub), mn)) + 4);
+}
+
+// The centre's fraction in Q(kPosFrac) (sub-step geometry; (0, 0) otherwise).
+inline FixedPoint center_offset(const ArcSpec& s) {
+  return FixedPoint{s.center_frac.x << (kPosFrac - s.sub), s.center_frac.y << (kPosFrac - s.sub)};
+}
+
+// Lattice point q relative to the ellipse's centre in sub-step units (Q(sub)).
+inline std::pair<i128, i128> sub_rel(const ArcSpec& s, Point q) {
+  return {(i128(q.x - s.center.x) << s.sub) - s.center_frac.x, (i128(q.y - s.center.y) << s.sub) - s.center_frac.y};
+}
+
+// The fixed-point datapath's tangent at lattice point q, times D (1 counter-clockwise, -1
+// clockwise): (p x - qx y, qy x - p y) with (x, y) = q relative to the centre; for
+// sub-step geometry computed in Q(sub) and rounded once to an integer (the integrands a
+// command starts from; its corrections are the coefficients themselves).
+inline std::pair<i128, i128> fixed_tangent(const ArcSpec& s, const Coefficients& k, int D, Point q) {
+  const auto [x, y] = sub_rel(s, q);
+  i128 tx = D * (i128(k.p) * x - i128(k.qx) * y), ty = D * (i128(k.qy) * x - i128(k.p) * y);
+  if (s.sub != 0) tx = round_shift(tx, s.sub), ty = round_shift(ty, s.sub);
+  return {tx, ty};
 }
 
 // A resolved start or end point: lattice point and the fraction of the ideal point.
@@ -90,21 +112,37 @@ struct RayEnd {
   bool far_seen = true;
   bool armed = false;
   Point last;  // the position last looked at (relative); starts at the lattice start
-  RayEnd(FixedPoint end, Direction dir, bool full, FixedPoint start, Point lattice_start)
-      : e(end), D(dir == Direction::Ccw ? 1 : -1), last(lattice_start) {
+  // Points are relative to the lattice centre; `off` is the true centre's offset from it
+  // (sub-step geometry), so the ray is drawn from the true centre.
+  FixedPoint off;
+  RayEnd(FixedPoint end, Direction dir, bool full, FixedPoint start, Point lattice_start, FixedPoint centre_off = {})
+      : e(FixedPoint{end.x - centre_off.x, end.y - centre_off.y}),
+        D(dir == Direction::Ccw ? 1 : -1),
+        last(lattice_start),
+        off(centre_off) {
     // side < 0: the end lies less than half a turn ahead, so the path may end as soon as
     // it crosses the ray; otherwise (and for a full turn) it must pass the far side first.
-    armed = far_seen = !full && side(start.x, start.y) < 0;
+    armed = far_seen = !full && side(start.x - off.x, start.y - off.y) < 0;
   }
   __int128 side(__int128 x, __int128 y) const { return D * (e.x * y - e.y * x); }
-  bool ahead(Point q) const { return __int128(e.x) * q.x + __int128(e.y) * q.y > 0; }
+  // A lattice point relative to the true centre: exact integers, or Q(kPosFrac) when the
+  // centre lies between lattice points.
+  std::pair<__int128, __int128> from_centre(Point q) const {
+    if (off.x == 0 && off.y == 0) return {q.x, q.y};
+    return {(__int128(q.x) << kPosFrac) - off.x, (__int128(q.y) << kPosFrac) - off.y};
+  }
+  bool ahead(Point q) const {
+    const auto [x, y] = from_centre(q);
+    return e.x * x + e.y * y > 0;
+  }
   // Only a step can cross the ray: an iteration without one leaves the verdict as it was.
   bool crossed(Point q) {
     if (q == last) return false;
     last = q;
-    if (armed && side(q.x, q.y) >= 0 && ahead(q)) return true;
+    const auto [x, y] = from_centre(q);
+    if (armed && side(x, y) >= 0 && ahead(q)) return true;
     far_seen = far_seen || !ahead(q);
-    armed = far_seen && side(q.x, q.y) < 0;
+    armed = far_seen && side(x, y) < 0;
     return false;
   }
 };

@@ -31,6 +31,7 @@ constexpr int kMaxRotatedTurns = 64;
 
 void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray) {
   const ArcSpec& spec = p.spec;
+  if (spec.sub != 0) throw GuardError("planner fault: sub-step geometry goes to the anchored planner");
   const Coefficients k = sc.k;
   const int D = spec.dir == Direction::Ccw ? 1 : -1;
   const Point c = spec.center;

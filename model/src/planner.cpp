@@ -30,6 +30,14 @@ constexpr std::int64_t kCapLimit = std::int64_t{1} << 61;
 }  // namespace
 
 const char* to_string(Preload p) { return p == Preload::Zero ? "zero" : "half"; }
+
+double a_steps(const ArcSpec& s) { return std::ldexp(double(s.a), -s.sub); }
+double b_steps(const ArcSpec& s) { return std::ldexp(double(s.b), -s.sub); }
+double center_x(const ArcSpec& s) { return double(s.center.x) + std::ldexp(double(s.center_frac.x), -s.sub); }
+double center_y(const ArcSpec& s) { return double(s.center.y) + std::ldexp(double(s.center_frac.y), -s.sub); }
+std::int64_t steps_ceil(const ArcSpec& s, std::int64_t v) {
+  return s.sub == 0 ? v : (v + (std::int64_t{1} << s.sub) - 1) >> s.sub;
+}
 const char* to_string(Direction d) { return d == Direction::Ccw ? "ccw" : "cw"; }
 
 int smallest_valid_bits(std::int64_t a, std::int64_t b) {
@@ -50,6 +58,7 @@ int default_bits(std::int64_t a, std::int64_t b) {
 }
 
 int quarter_turns(const ArcSpec& spec) {
+  if (spec.sub != 0) return -1;  // sub-step geometry: the fixed-point datapath
   const std::int64_t t = normalize_udeg(spec.angle);
   return t % kQuarterTurn == 0 ? static_cast<int>(t / kQuarterTurn) : -1;
 }
@@ -57,9 +66,22 @@ int quarter_turns(const ArcSpec& spec) {
 namespace {
 
 void check_axes_and_center(const ArcSpec& spec) {
-  const std::int64_t a = spec.a, b = spec.b;
-  if (a < 1) throw InputError("a = " + std::to_string(a) + " is invalid: a semi-axis must be a positive integer");
-  if (b < 1) throw InputError("b = " + std::to_string(b) + " is invalid: a semi-axis must be a positive integer");
+  if (spec.sub < 0 || spec.sub > kMaxSubBits) {
+    throw InputError("sub = " + std::to_string(spec.sub) + " is invalid: sub-step units are 2^-sub step, sub in [0, " +
+                     std::to_string(kMaxSubBits) + "]");
+  }
+  const std::int64_t one = std::int64_t{1} << spec.sub;
+  const auto frac_ok = [&](std::int64_t f) { return f >= 0 && f < one; };
+  if (!frac_ok(spec.center_frac.x) || !frac_ok(spec.center_frac.y)) {
+    throw InputError("center fraction " + pt(spec.center_frac) + " is invalid: each part must be in [0, 2^sub)");
+  }
+  const std::int64_t a = steps_ceil(spec, spec.a), b = steps_ceil(spec, spec.b);
+  if (spec.a < 1) {
+    throw InputError("a = " + std::to_string(spec.a) + " is invalid: a semi-axis must be a positive integer");
+  }
+  if (spec.b < 1) {
+    throw InputError("b = " + std::to_string(spec.b) + " is invalid: a semi-axis must be a positive integer");
+  }
   const bool rotated = quarter_turns(spec) < 0;
   const std::int64_t lim = std::int64_t{1} << (rotated ? 20 : 30);
   if (a > lim || b > lim) {
@@ -75,16 +97,14 @@ void check_axes_and_center(const ArcSpec& spec) {
 
 // The ellipse's quadratic form on lattice points relative to the centre, and its value
 // on the nominal curve: Q(x, y) = qy x^2 - 2 p x y + qx y^2, Q = level on the curve.
-i128 quad_form(const Coefficients& k, std::int64_t x, std::int64_t y) {
-  return i128(k.qy) * x * x - 2 * i128(k.p) * x * y + i128(k.qx) * y * y;
-}
+i128 quad_form(const Coefficients& k, i128 x, i128 y) { return k.qy * x * x - 2 * k.p * x * y + k.qx * y * y; }
 
 }  // namespace
 
 FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
   check_axes_and_center(spec);
   const SinCos t = sincos_udeg(theta);
-  // Frame point (a cos, b sin) in Q(kTrigFrac).
+  // Frame point (a cos, b sin) in Q(kTrigFrac) (sub-step geometry: Q(kTrigFrac + sub)).
   const i128 u = i128(spec.a) * t.c, v = i128(spec.b) * t.s;
   const int qt = quarter_turns(spec);
   if (qt >= 0) {  // exact quarter turns
@@ -94,9 +114,11 @@ FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
                       std::int64_t(round_shift(y, kTrigFrac - kPosFrac))};
   }
   const SinCos f = sincos_udeg(spec.angle);
-  const i128 x = u * f.c - v * f.s, y = u * f.s + v * f.c;  // Q(2 kTrigFrac)
-  return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac - kPosFrac)),
-                    std::int64_t(round_shift(y, 2 * kTrigFrac - kPosFrac))};
+  const i128 x = u * f.c - v * f.s, y = u * f.s + v * f.c;  // Q(2 kTrigFrac + sub)
+  // Relative to the lattice centre: the centre's fraction added.
+  const FixedPoint off = center_offset(spec);
+  return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac + spec.sub - kPosFrac)) + off.x,
+                    std::int64_t(round_shift(y, 2 * kTrigFrac + spec.sub - kPosFrac)) + off.y};
 }
 
 namespace {
@@ -105,6 +127,24 @@ Scaled scaled_coefficients(const ArcSpec& spec, int n) {
   Scaled r;
   const std::int64_t a = spec.a, b = spec.b;
   const int qt = quarter_turns(spec);
+  if (spec.sub != 0) {
+    // Sub-step geometry: the same coefficients from a and b in sub-step units (only their
+    // ratio enters), with the squares of the sines and cosines rounded to Q(kTrigFrac)
+    // so that the products stay within 128 bits; the level is in sub-step units squared.
+    const SinCos f = sincos_udeg(spec.angle);
+    const i128 a2 = i128(a) * a, b2 = i128(b) * b;
+    const i128 cc = round_shift(i128(f.c) * f.c, kTrigFrac), ss = round_shift(i128(f.s) * f.s, kTrigFrac),
+               cs = round_shift(i128(f.c) * f.s, kTrigFrac);
+    const int sh = kTrigFrac - (kRotCapBits - n);  // n >= 1: sh >= kTrigFrac - kRotCapBits + 1
+    const i128 num_scale = sh < 0 ? i128(1) << -sh : 1;
+    const i128 den = sh < 0 ? i128(a) * b : (i128(a) * b) << sh;
+    r.k.p = std::int64_t(round_div(cs * (a2 - b2) * num_scale, den));
+    r.k.qx = std::int64_t(round_div((a2 * cc + b2 * ss) * num_scale, den));
+    r.k.qy = std::int64_t(round_div((a2 * ss + b2 * cc) * num_scale, den));
+    r.cap = std::int64_t{1} << kRotCapBits;
+    r.level = (i128(a) * b) << (kRotCapBits - n);
+    return r;
+  }
   if (qt >= 0) {
     const std::int64_t ax = qt % 2 ? b : a, by = qt % 2 ? a : b;
     r.k = Coefficients{0, ax * ax, by * by};
@@ -138,7 +178,7 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
     const auto nearest = [](std::int64_t v) { return std::int64_t(round_shift(v, kPosFrac)); };
     return Point{c.x + nearest(f.x), c.y + nearest(f.y)};
   }
-  const int n = spec.bits != 0 ? spec.bits : default_bits(spec.a, spec.b);
+  const int n = spec.bits != 0 ? spec.bits : default_bits(steps_ceil(spec, spec.a), steps_ceil(spec, spec.b));
   const Scaled sc = scaled_coefficients(spec, std::clamp(n, 1, kRotCapBits));
   const std::int64_t fx = f.x >> kPosFrac, fy = f.y >> kPosFrac;  // floors
   const std::int64_t mask = (std::int64_t{1} << kPosFrac) - 1;
@@ -147,7 +187,8 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
   i128 best_q = -1, out_q = -1;
   for (const std::int64_t x : {fx, cx}) {
     for (const std::int64_t y : {fy, cy}) {
-      const i128 q = quad_form(sc.k, x, y);
+      const auto [rx, ry] = sub_rel(spec, Point{c.x + x, c.y + y});
+      const i128 q = quad_form(sc.k, rx, ry);
       if (q > out_q) {
         out_q = q;
         outermost = Point{x, y};
@@ -165,8 +206,9 @@ Point theta_point(const ArcSpec& spec, std::int64_t theta) {
   // Beside a thin ellipse the lattice point just outside can be more than a step from the
   // curve (a start the planner would refuse): then the lattice point nearest to the
   // ideal point (within half a step per axis of it).
-  const auto [u, v] = to_frame(spec.angle, double(best.x), double(best.y));
-  if (ellipse_distance(double(spec.a), double(spec.b), u, v) > kPointTolerance) {
+  const auto [u, v] =
+      to_frame(spec.angle, double(c.x + best.x) - center_x(spec), double(c.y + best.y) - center_y(spec));
+  if (ellipse_distance(a_steps(spec), b_steps(spec), u, v) > kPointTolerance) {
     best = Point{std::int64_t(round_shift(f.x, kPosFrac)), std::int64_t(round_shift(f.y, kPosFrac))};
   }
   return Point{c.x + best.x, c.y + best.y};
@@ -234,7 +276,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
   ArcSpec& spec = p.spec;
   spec.angle = normalize_udeg(spec.angle);
   check_axes_and_center(spec);
-  const std::int64_t a = spec.a, b = spec.b;
+  const std::int64_t a = steps_ceil(spec, spec.a), b = steps_ceil(spec, spec.b);  // whole steps
   const int qt = quarter_turns(spec);
   p.rotated = qt < 0;
   const int nmin = smallest_valid_bits(a, b);
@@ -249,7 +291,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
                      " bits above the smallest valid width (" + std::to_string(nmin) +
                      ") are accepted; each bit doubles the run");
   }
-  const std::int64_t ab = a * b;
+  const std::int64_t ab = spec.a * spec.b;
   if (!p.rotated) {
     const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
     if (!cap || *cap >= kCapLimit) {
@@ -266,8 +308,8 @@ Plan plan_arc(const ArcSpec& spec_in) {
   p.scale = ab;
   const Scaled sc = scaled_coefficients(spec, spec.bits);
   p.coef = sc.k;
-  p.ax = qt >= 0 && qt % 2 ? b : a;
-  p.by = qt >= 0 && qt % 2 ? a : b;
+  p.ax = qt >= 0 && qt % 2 ? spec.b : spec.a;
+  p.by = qt >= 0 && qt % 2 ? spec.a : spec.b;
   if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
   if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
   const Point c = spec.center;
@@ -280,10 +322,11 @@ Plan plan_arc(const ArcSpec& spec_in) {
   p.frac_x = from.fx;
   p.frac_y = from.fy;
 
-  const double tol = kPointTolerance + 1e-9 * static_cast<double>(std::max(a, b));
+  const double tol =
+      (spec.tolerance > 0 ? spec.tolerance : kPointTolerance) + 1e-9 * static_cast<double>(std::max(a, b));
   for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
     if (spec.to_theta && std::string(name) == "to") continue;  // found by the walk
-    const std::int64_t reach = 2 * std::max(a, b) + 2;
+    const std::int64_t reach = 2 * std::max(a, b) + 2 + std::int64_t(spec.tolerance);
     const std::int64_t far = std::int64_t{1} << 42;  // beyond any centre plus reach: no overflow below
     if (q.x < -far || q.x > far || q.y < -far || q.y > far) {
       throw InputError(std::string(name) + " point " + pt(q) +
@@ -299,7 +342,8 @@ Plan plan_arc(const ArcSpec& spec_in) {
       std::ostringstream m;
       m.precision(4);
       m << std::fixed << name << " point " << pt(q) << " is " << d
-        << " steps from the ellipse: start and end must lie within " << kPointTolerance << " step of it";
+        << " steps from the ellipse: start and end must lie within "
+        << (spec.tolerance > 0 ? spec.tolerance : kPointTolerance) << " step of it";
       throw InputError(m.str());
     }
   }
@@ -327,7 +371,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
     const Point s0 = arc_from.lattice;
     const FixedPoint rep{((s0.x - c.x) << kPosFrac) + arc_from.fx, ((s0.y - c.y) << kPosFrac) + arc_from.fy};
     return RayEnd(e, spec.dir, p.full, spec.from_theta ? theta_ideal(spec, *spec.from_theta) : rep,
-                  Point{s0.x - c.x, s0.y - c.y});
+                  Point{s0.x - c.x, s0.y - c.y}, center_offset(spec));
   };
   const auto plan_pieces = [&](std::optional<RayEnd> ray) {
     p.pieces.clear();
@@ -343,7 +387,8 @@ Plan plan_arc(const ArcSpec& spec_in) {
   // Rotated ellipses with half preload, and with zero preload where the DDA's own turns
   // lose the curve (always at tips sharper than a quarter step: radius of curvature
   // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
-  const bool quarter_step_tips = 4 * i128(std::min(a, b)) * std::min(a, b) <= std::max(a, b);
+  const bool quarter_step_tips =
+      4 * i128(std::min(spec.a, spec.b)) * std::min(spec.a, spec.b) <= i128(std::max(spec.a, spec.b)) << spec.sub;
   const auto plan_anchored = [&] {
     p.pieces.clear();
     p.from = arc_from.lattice;
@@ -362,7 +407,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
       nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
     // Both ends map to the same point of the curve: the arc between them is the line.
     p.pieces = line_pieces(start, target, spec.preload);
-  } else if (p.rotated && (half || quarter_step_tips)) {
+  } else if (p.rotated && (half || quarter_step_tips || spec.sub != 0)) {
     plan_anchored();
   } else if (p.rotated) {
     try {  // zero preload: the DDA's own turns, as in issue 5, unless they lose the curve
@@ -424,15 +469,16 @@ double plan_distance(const Plan& plan, double x, double y) {
     const double t = std::clamp(((x - x0) * ux + (y - y0) * uy) / (ux * ux + uy * uy), 0.0, 1.0);
     return std::hypot(x - (x0 + t * ux), y - (y0 + t * uy));
   }
-  const double rx = x - double(plan.spec.center.x), ry = y - double(plan.spec.center.y);
+  const double rx = x - center_x(plan.spec), ry = y - center_y(plan.spec);
   if (!plan.rotated) return ellipse_distance(double(plan.ax), double(plan.by), rx, ry);
   const auto [u, v] = to_frame(plan.spec.angle, rx, ry);
-  return ellipse_distance(double(plan.spec.a), double(plan.spec.b), u, v);
+  return ellipse_distance(a_steps(plan.spec), b_steps(plan.spec), u, v);
 }
 
 double coefficient_drift_bound(const Plan& plan) {
   if (quarter_turns(plan.spec) >= 0) return 0.0;
-  const double mx = double(std::max(plan.spec.a, plan.spec.b)), mn = double(std::min(plan.spec.a, plan.spec.b));
+  const double mx = std::max(a_steps(plan.spec), b_steps(plan.spec)),
+               mn = std::min(a_steps(plan.spec), b_steps(plan.spec));
   return std::ldexp(mx * mx / mn, plan.spec.bits - kRotCapBits);
 }
 

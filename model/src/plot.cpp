@@ -40,11 +40,36 @@ double tick_step(double span, int target) {
 }  // namespace
 
 void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, const std::string& title) {
-  const std::vector<Point> pts = path_points(plan, iters);
-  std::vector<double> dist(pts.size());
+  SvgPicture pic;
+  pic.pts = path_points(plan, iters);
+  for (const Point& q : pic.pts) pic.dist.push_back(plan_distance(plan, double(q.x), double(q.y)));
+  pic.title = title;
+  pic.curve = "the ellipse";
+  // The ideal curve: the whole ellipse, sampled finely (a line: the line between its ends).
+  if (plan.line) {
+    pic.ideal.push_back({{double(plan.from.x), double(plan.from.y)}, {double(plan.to.x), double(plan.to.y)}});
+  } else {
+    const SinCos f = sincos_udeg(plan.spec.angle);
+    const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
+    const double a = a_steps(plan.spec), b = b_steps(plan.spec);
+    const double cx = center_x(plan.spec), cy = center_y(plan.spec);
+    const int n = 4096;
+    std::vector<std::pair<double, double>> line;
+    for (int k = 0; k <= n; ++k) {
+      const double t = 2 * M_PI * k / n, u = a * std::cos(t), v = b * std::sin(t);
+      line.emplace_back(cx + u * c - v * s, cy + u * s + v * c);
+    }
+    pic.ideal.push_back(std::move(line));
+  }
+  write_svg(os, pic);
+}
+
+void write_svg(std::ostream& os, const SvgPicture& pic) {
+  const std::vector<Point>& pts = pic.pts;
+  const std::vector<double>& dist = pic.dist;
+  const std::string& title = pic.title;
   std::size_t imax = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    dist[i] = plan_distance(plan, double(pts[i].x), double(pts[i].y));
     if (dist[i] > dist[imax]) imax = i;
   }
   // View: the path's bounding box with a margin of a tenth (at least one step).
@@ -58,6 +83,10 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
   const double span = std::max({x1 - x0, y1 - y0, 2.0});
   const double pad = std::max(1.0, span / 10);
   x0 -= pad, x1 += pad, y0 -= pad, y1 += pad;
+  if (pic.view.size() == 4) x0 = pic.view[0], y0 = pic.view[1], x1 = pic.view[2], y1 = pic.view[3];
+  const auto inside = [&](const Point& p) {
+    return double(p.x) >= x0 && double(p.x) <= x1 && double(p.y) >= y0 && double(p.y) <= y1;
+  };
   const double scale = 600.0 / std::max(x1 - x0, y1 - y0);  // same scale on both axes
   const double W = (x1 - x0) * scale, H = (y1 - y0) * scale;
   const double L = 90, T = 60, R = 180, B = 70;  // margins: axis labels left/bottom, legend right
@@ -97,60 +126,73 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
              "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
              "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n",
              T + H / 2, T + H / 2);
-  // The ideal curve: the whole ellipse, sampled finely, clipped to the view (a line:
-  // the line between its ends).
-  if (plan.line) {
-    fmt::print(os,
-               "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
-               "stroke-width=\"1.5\" points=\"{:.2f},{:.2f} {:.2f},{:.2f}\"/>\n",
-               sx(double(plan.from.x)), sy(double(plan.from.y)), sx(double(plan.to.x)), sy(double(plan.to.y)));
-  } else {
-    const SinCos f = sincos_udeg(plan.spec.angle);
-    const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
-    const double a = double(plan.spec.a), b = double(plan.spec.b);
-    const double cx = double(plan.spec.center.x), cy = double(plan.spec.center.y);
-    const int n = 4096;
+  // The ideal geometry, clipped to the view.
+  for (const auto& line : pic.ideal) {
     fmt::print(os,
                "<polyline class=\"ideal\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#888888\" "
                "stroke-width=\"1.5\" points=\"");
-    for (int k = 0; k <= n; ++k) {
-      const double t = 2 * M_PI * k / n, u = a * std::cos(t), v = b * std::sin(t);
-      fmt::print(os, "{:.2f},{:.2f} ", sx(cx + u * c - v * s), sy(cy + u * s + v * c));
-    }
+    for (const auto& [x, y] : line) fmt::print(os, "{:.2f},{:.2f} ", sx(x), sy(y));
     fmt::print(os, "\"/>\n");
   }
   // The path and its point markers (at most 4000 markers: every k-th point beyond that,
   // always the worst one).
-  fmt::print(os, "<polyline class=\"path\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" points=\"");
+  fmt::print(os,
+             "<polyline class=\"path\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#333333\" "
+             "stroke-width=\"1\" points=\"");
   for (const Point& p : pts) fmt::print(os, "{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
   fmt::print(os, "\"/>\n");
-  const std::size_t every = (pts.size() + 3999) / 4000;
+  std::size_t shown = 0;
+  for (const Point& p : pts) shown += inside(p);
+  const std::size_t every = std::max<std::size_t>(1, (shown + 3999) / 4000);
   const double r = std::clamp(0.3 * scale, 1.5, 7.0);
+  if (!pic.other.empty()) {
+    fmt::print(os,
+               "<polyline class=\"other\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#e66101\" "
+               "stroke-width=\"1.5\" points=\"");
+    for (const Point& p : pic.other) fmt::print(os, "{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
+    fmt::print(os, "\"/>\n");
+    std::size_t other_shown = 0;
+    for (const Point& p : pic.other) other_shown += inside(p);
+    const std::size_t oe = std::max<std::size_t>(1, (other_shown + 3999) / 4000);
+    std::size_t k = 0;
+    for (const Point& p : pic.other) {
+      if (!inside(p) || k++ % oe != 0) continue;
+      fmt::print(os,
+                 "<rect class=\"other-pt\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.1f}\" height=\"{:.1f}\" "
+                 "fill=\"#e66101\"/>\n",
+                 sx(double(p.x)) - r * 0.7, sy(double(p.y)) - r * 0.7, r * 1.4, r * 1.4);
+    }
+  }
+  std::size_t k_shown = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (i % every != 0 && i != imax) continue;
+    if (!inside(pts[i])) continue;
+    if (k_shown++ % every != 0 && i != imax) continue;
     fmt::print(os,
                "<circle class=\"pt\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"{}\"><title>({},{}) "
                "{:.3f}</title></circle>\n",
                sx(double(pts[i].x)), sy(double(pts[i].y)), r, ramp(dist[i] / dscale), pts[i].x, pts[i].y, dist[i]);
   }
-  // The largest deviation.
+  // The largest deviation (when it is in the view).
   const Point& m = pts[imax];
-  fmt::print(os,
-             "<circle class=\"max\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"black\" "
-             "stroke-width=\"2\"/>\n",
-             sx(double(m.x)), sy(double(m.y)), r + 5);
-  const bool left = sx(double(m.x)) > L + W * 0.6;
-  fmt::print(os,
-             "<text class=\"max-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"{}\" font-weight=\"bold\">max {:.2f} @ "
-             "({},{})</text>\n",
-             sx(double(m.x)) + (left ? -(r + 9) : r + 9), sy(double(m.y)) - (r + 6), left ? "end" : "start", dist[imax],
-             m.x, m.y);
+  if (inside(m)) {
+    fmt::print(os,
+               "<circle class=\"max\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.1f}\" fill=\"none\" stroke=\"black\" "
+               "stroke-width=\"2\"/>\n",
+               sx(double(m.x)), sy(double(m.y)), r + 5);
+    const bool left = sx(double(m.x)) > L + W * 0.6;
+    fmt::print(
+        os,
+        "<text class=\"max-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"{}\" font-weight=\"bold\">max {:.2f} @ "
+        "({},{})</text>\n",
+        sx(double(m.x)) + (left ? -(r + 9) : r + 9), sy(double(m.y)) - (r + 6), left ? "end" : "start", dist[imax], m.x,
+        m.y);
+  }
   // Legend: the colour ramp with its scale.
   const double lx = L + W + 40, ly = T + 20, lh = 200;
   fmt::print(os,
              "<g class=\"legend\">\n<text x=\"{:.1f}\" y=\"{:.1f}\">distance from</text>\n"
-             "<text x=\"{:.1f}\" y=\"{:.1f}\">the ellipse (steps)</text>\n",
-             lx - 10, ly - 4, lx - 10, ly + 12);
+             "<text x=\"{:.1f}\" y=\"{:.1f}\">{} (steps)</text>\n",
+             lx - 10, ly - 4, lx - 10, ly + 12, pic.curve);
   fmt::print(os, "<linearGradient id=\"ramp\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">");
   for (int k = 0; k <= 4; ++k) fmt::print(os, "<stop offset=\"{}\" stop-color=\"{}\"/>", k / 4.0, ramp(k / 4.0));
   fmt::print(os,
@@ -162,11 +204,15 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
                dscale * k / 4.0);
   }
   fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#888888\">grey: ideal curve</text>\n", lx - 10, ly + lh + 50);
+  if (!pic.other.empty()) {
+    fmt::print(os, "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#e66101\">orange: {}</text>\n", lx - 10, ly + lh + 104,
+               pic.other_label);
+  }
   if (every > 1) {
     fmt::print(os,
                "<text x=\"{:.1f}\" y=\"{:.1f}\">markers: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} "
                "points</text>\n",
-               lx - 10, ly + lh + 70, every, lx - 10, ly + lh + 86, pts.size());
+               lx - 10, ly + lh + 70, every, lx - 10, ly + lh + 86, shown);
   }
   fmt::print(os, "</g>\n</svg>\n");
 }

@@ -8,9 +8,13 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
+#include <vector>
 
+#include "dda/fixed_trig.hpp"
 #include "program_detail.hpp"
+#include "program_macro.hpp"
 
 namespace dda::program {
 
@@ -38,8 +42,6 @@ std::string_view kind_name(MoveKind k) {
 namespace {
 
 using detail::Word;
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::int64_t pow10(int n) {
   std::int64_t p = 1;
@@ -70,22 +72,21 @@ struct Modal {
 
 class Reader {
  public:
-  Reader(const std::string& file, const ReadOptions& opt) : file_(file), opt_(opt) {
+  Reader(const std::string& file, const ReadOptions& opt) : file_(file), opt_(opt), macro_(file) {
     if (opt.machine == Machine::Lathe) m_.plane = 180;
     if (opt.start) prog_.start = *opt.start;
     at_ = prog_.start;
   }
 
   Program run(const std::vector<detail::Line>& lines) {
-    bool in_program = false;
-    for (const auto& l : lines) {
-      if (l.header) {
-        if (in_program && !prog_.moves.empty()) break;  // the next program: the first is the main one
-        in_program = true;
-        continue;
+    lines_ = &lines;
+    st_ = detail::structure(lines, file_);
+    // The main program: the first with a word or a statement; the others are called.
+    for (std::size_t i = 0; i < st_.programs.size(); ++i) {
+      if (st_.programs[i].content) {
+        exec(i, 0);
+        break;
       }
-      block(l);
-      if (prog_.ended) break;
     }
     return prog_;
   }
@@ -115,6 +116,7 @@ class Reader {
     return w.mantissa / pow10(w.decimals);
   }
 
+  void exec(std::size_t program, int depth);
   void block(const detail::Line& l);
   void motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n);
   void arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
@@ -136,11 +138,89 @@ class Reader {
   Modal m_;
   Program prog_;
   Point2 at_;
+  // Macros (program_macro.hpp): variables, the programs and the control flow.
+  detail::Macro macro_;
+  const std::vector<detail::Line>* lines_ = nullptr;
+  detail::Structure st_;
+  std::uint64_t executed_ = 0;
+  struct Call {
+    std::int64_t program = 0, repeats = 1;
+    SourcePos pos;
+  };
+  std::optional<Call> call_;  // M98 in the block just run
+  bool return_ = false;       // M99 in the block just run
 };
+
+// Runs a program's lines: statements steer, blocks move (and call).
+void Reader::exec(std::size_t program, int depth) {
+  const detail::ProgramText& p = st_.programs[program];
+  const auto& lines = *lines_;
+  for (std::size_t pc = p.begin; pc < p.end;) {
+    const detail::Line& l = lines[pc];
+    if (++executed_ > detail::kMaxExecutedLines) {
+      fail(SourcePos{l.number, 1},
+           fmt::format("more than {} lines executed: a loop that does not end?", detail::kMaxExecutedLines));
+    }
+    switch (l.stmt) {
+      case detail::Stmt::Assign:
+        macro_.assign(l);
+        ++pc;
+        continue;
+      case detail::Stmt::While:
+      case detail::Stmt::If:
+        pc = macro_.truth(l) ? pc + 1 : st_.jump[pc] + 1;
+        continue;
+      case detail::Stmt::EndW:
+        pc = st_.jump[pc];
+        continue;
+      case detail::Stmt::Else:
+        pc = st_.jump[pc] + 1;
+        continue;
+      case detail::Stmt::EndIf:
+        ++pc;
+        continue;
+      case detail::Stmt::None:
+        break;
+    }
+    block(l);
+    ++pc;
+    if (prog_.ended) return;
+    if (return_) {
+      return_ = false;
+      if (depth == 0) fail(SourcePos{l.number, 1}, "M99 in the main program: no caller to return to");
+      return;
+    }
+    if (call_) {
+      const Call c = *call_;
+      call_.reset();
+      std::size_t target = st_.programs.size();
+      for (std::size_t i = 0; i < st_.programs.size(); ++i) {
+        if (st_.programs[i].number == c.program) target = i;
+      }
+      if (target == st_.programs.size()) fail(c.pos, fmt::format("M98 calls program %{}: there is none", c.program));
+      if (depth + 1 > detail::kMaxCallDepth) {
+        fail(c.pos, fmt::format("subprogram calls nested deeper than {}", detail::kMaxCallDepth));
+      }
+      for (std::int64_t k = 0; k < c.repeats && !prog_.ended; ++k) {
+        // #30 and #32 (lathe: X as programmed and Z) or #30 and #31 (mill: the plane's
+        // first and second axes) hold the current position at each call, in mm.
+        const bool lathe = opt_.machine == Machine::Lathe;
+        const double u = double(at_.u) / double(kNmPerMm), v = double(at_.v) / double(kNmPerMm);
+        macro_.set(30, lathe ? (m_.diameter ? 2 * v : v) : u);
+        macro_.set(lathe ? 32 : 31, lathe ? u : v);
+        exec(target, depth + 1);
+      }
+      if (prog_.ended) return;
+    }
+  }
+}
 
 void Reader::block(const detail::Line& l) {
   if (l.words.empty()) return;
-  const SourcePos first = l.words.front().pos;
+  std::vector<Word> words;  // expressions evaluated now, in the variables' present state
+  words.reserve(l.words.size());
+  for (const Word& w : l.words) words.push_back(macro_.value_word(l, w));
+  const SourcePos first = words.front().pos;
   std::optional<std::int64_t> n;
   std::array<const Word*, 8> group{};  // modal groups: motion, plane, units, distance, diameter, comp, dwell, work
   std::map<char, const Word*> axes;
@@ -149,7 +229,8 @@ void Reader::block(const detail::Line& l) {
     if (group[g]) fail(w.pos, "G" + group[g]->text + " and G" + w.text + " in one block: one " + what + " per block");
     group[g] = &w;
   };
-  for (const Word& w : l.words) {
+  std::optional<SourcePos> m98;
+  for (const Word& w : words) {
     switch (w.letter) {
       case 'N':
         n = integer(w);
@@ -189,8 +270,10 @@ void Reader::block(const detail::Line& l) {
           end = true;
         } else if (m == 0 || m == 1 || m == 3 || m == 4 || m == 5 || m == 8 || m == 9) {
           prog_.ignored.push_back({w.pos, name(w)});
-        } else if (m == 98 || m == 99) {
-          fail(w.pos, "subprogram calls (M98/M99) are not supported yet");
+        } else if (m == 98) {
+          m98 = w.pos;
+        } else if (m == 99) {
+          return_ = true;
         } else {
           fail(w.pos, "unknown or unsupported code " + name(w));
         }
@@ -207,7 +290,7 @@ void Reader::block(const detail::Line& l) {
         break;
       }
       default:
-        if (std::string_view("XYZUVWIJKRABQP").find(w.letter) == std::string_view::npos) {
+        if (std::string_view("XYZUVWIJKRABQPL").find(w.letter) == std::string_view::npos) {
           fail(w.pos, std::string("unknown word ") + w.letter);
         }
         if (axes.count(w.letter)) fail(w.pos, std::string(1, w.letter) + " twice in one block");
@@ -225,8 +308,23 @@ void Reader::block(const detail::Line& l) {
       if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
       prog_.ignored.push_back({w->pos, name(*w)});
     }
+  } else if (m98) {  // M98 P (program number) L (repeats, default 1): nothing else moves
+    const auto p = axes.find('P');
+    if (p == axes.end()) fail(*m98, "M98 needs P, the number of the program to call");
+    Call c;
+    c.program = integer(*p->second);
+    c.pos = p->second->pos;
+    if (const auto rl = axes.find('L'); rl != axes.end()) {
+      c.repeats = integer(*rl->second);
+      if (c.repeats < 1 || c.repeats > 9999) fail(rl->second->pos, "L (the repeat count) must be from 1 to 9999");
+    }
+    for (const auto& [ch, w] : axes) {
+      if (ch != 'P' && ch != 'L') fail(w->pos, std::string(1, ch) + " in an M98 block: a call moves nothing");
+    }
+    call_ = c;
   } else {
-    if (const auto p = axes.find('P'); p != axes.end()) fail(p->second->pos, "P is read only with G04");
+    if (const auto p = axes.find('P'); p != axes.end()) fail(p->second->pos, "P is read only with G04 and M98");
+    if (const auto rl = axes.find('L'); rl != axes.end()) fail(rl->second->pos, "L is read only with M98");
     const bool moves = !axes.empty() || (group[0] && (m_.motion == 20 || m_.motion == 30));
     if (moves) motion(axes, group[0] ? group[0]->pos : first, n);
   }
@@ -358,7 +456,10 @@ void Reader::ellipse(Move& mv, const std::map<char, const Word*>& axes, const So
   if (mv.b <= 0) fail(b->second->pos, "the semi-axis B must be positive");
   mv.q_millideg = q == axes.end() ? 0 : integer(*q->second);
   const bool cw = mv.kind == MoveKind::EllipseCw;
-  const double th = double(mv.q_millideg) / 1000.0 * kPi / 180.0, c = std::cos(th), s = std::sin(th);
+  // The deterministic fixed-point sines (fixed_trig.hpp), so that every machine computes
+  // the same centre to the nanometre.
+  const SinCos qt = sincos_udeg(mv.q_millideg * 1000);
+  const double c = std::ldexp(double(qt.c), -kTrigFrac), s = std::ldexp(double(qt.s), -kTrigFrac);
   const double A = double(mv.a), B = double(mv.b);
   // To the ellipse's frame, with the minor axis stretched to A: the ellipse is a circle.
   const auto to_frame = [&](double x, double y) {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lexical grammar of a part program, in PEGTL: a line is blanks, words (a letter and
-// a number, blanks allowed between them), comments in parentheses that close on the
-// line, and an optional ';' comment to the end of the line. A line starting with '%'
-// marks a program's start.
+// The grammar of a part program, in PEGTL: a line is blanks, words (a letter and a
+// number or a macro expression, blanks allowed between them), comments in parentheses
+// that close on the line, and an optional ';' comment to the end of the line; or a macro
+// statement (#n = expression, WHILE, ENDW, IF, ELSE, ENDIF: HNC-21T's). A line starting
+// with '%' marks a program's start and may give its number (%2).
 #include <tao/pegtl.hpp>
 
 #include <cctype>
@@ -17,25 +18,103 @@ namespace {
 namespace pg = tao::pegtl;
 
 struct blank : pg::one<' ', '\t'> {};
+struct ws : pg::star<blank> {};
 struct paren_open : pg::one<'('> {};
-struct paren_comment : pg::if_must<paren_open, pg::until<pg::one<')'>, pg::not_one<'\r', '\n'>>> {};
+struct comment_body : pg::until<pg::one<')'>, pg::not_one<'\r', '\n'>> {};
+struct paren_comment : pg::if_must<paren_open, comment_body> {};
 struct semi_comment : pg::seq<pg::one<';'>, pg::star<pg::not_one<'\r', '\n'>>> {};
 struct digits : pg::plus<pg::digit> {};
-struct number
-    : pg::seq<pg::opt<pg::one<'+', '-'>>,
-              pg::sor<pg::seq<digits, pg::opt<pg::one<'.'>, pg::opt<digits>>>, pg::seq<pg::one<'.'>, digits>>> {};
+struct unsigned_number
+    : pg::sor<pg::seq<digits, pg::opt<pg::one<'.'>, pg::opt<digits>>>, pg::seq<pg::one<'.'>, digits>> {};
+struct number : pg::seq<pg::opt<pg::one<'+', '-'>>, unsigned_number> {};
+
+// Macro expressions. Keywords are whole words in any case.
+template <typename Kw>
+struct keyword : pg::seq<Kw, pg::not_at<pg::alnum>> {};
+struct kw_pi : keyword<TAO_PEGTL_ISTRING("PI")> {};
+struct kw_not : keyword<TAO_PEGTL_ISTRING("NOT")> {};
+struct kw_and : keyword<TAO_PEGTL_ISTRING("AND")> {};
+struct kw_or : keyword<TAO_PEGTL_ISTRING("OR")> {};
+struct func_name
+    : pg::sor<TAO_PEGTL_ISTRING("SIN"), TAO_PEGTL_ISTRING("COS"), TAO_PEGTL_ISTRING("TAN"), TAO_PEGTL_ISTRING("ATAN"),
+              TAO_PEGTL_ISTRING("SQRT"), TAO_PEGTL_ISTRING("ABS"), TAO_PEGTL_ISTRING("INT")> {};
+struct cmp_op : pg::seq<pg::sor<TAO_PEGTL_ISTRING("EQ"), TAO_PEGTL_ISTRING("NE"), TAO_PEGTL_ISTRING("GT"),
+                                TAO_PEGTL_ISTRING("GE"), TAO_PEGTL_ISTRING("LT"), TAO_PEGTL_ISTRING("LE")>,
+                        pg::not_at<pg::alnum>> {};
+struct add_op : pg::one<'+', '-'> {};
+struct mul_op : pg::one<'*', '/'> {};
+
+struct expr;
+struct expr_number : unsigned_number {};
+struct bracket_close : pg::one<']'> {};
+struct bracket : pg::if_must<pg::one<'['>, ws, expr, ws, bracket_close> {};
+struct var;
+struct var_index : pg::sor<expr_number, bracket, var> {};
+struct var : pg::if_must<pg::one<'#'>, var_index> {};
+struct func : pg::if_must<func_name, ws, bracket> {};
+struct primary : pg::sor<expr_number, var, bracket, kw_pi, func> {};
+struct unary;
+struct negate : pg::if_must<pg::one<'-'>, ws, unary> {};
+struct unary : pg::sor<negate, pg::seq<pg::one<'+'>, ws, unary>, primary> {};
+struct mul_tail : pg::if_must<mul_op, ws, unary> {};
+struct product : pg::seq<unary, pg::star<ws, mul_tail>> {};
+struct add_tail : pg::if_must<add_op, ws, product> {};
+struct sum : pg::seq<product, pg::star<ws, add_tail>> {};
+struct cmp_tail : pg::if_must<cmp_op, ws, sum> {};
+struct comparison : pg::seq<sum, pg::opt<ws, cmp_tail>> {};
+struct negation;
+struct not_expr : pg::sor<negation, comparison> {};
+struct negation : pg::if_must<kw_not, ws, not_expr> {};
+struct and_tail : pg::if_must<kw_and, ws, not_expr> {};
+struct conjunction : pg::seq<not_expr, pg::star<ws, and_tail>> {};
+struct or_tail : pg::if_must<kw_or, ws, conjunction> {};
+struct expr : pg::seq<conjunction, pg::star<ws, or_tail>> {};
+
+// Words: a letter, then a number or an expression (#n, [..], -#n, -[..], a function).
 struct letter : pg::alpha {};
-struct word : pg::if_must<letter, pg::star<blank>, number> {};
+struct word_expr : pg::sor<var, bracket, negate, func> {};
+struct word_value : pg::sor<number, word_expr> {};
+struct word : pg::if_must<letter, ws, word_value> {};
 struct end_of_line : pg::eolf {};
-struct line : pg::seq<pg::star<pg::sor<blank, paren_comment, word>>, pg::opt<semi_comment>, pg::must<end_of_line>> {};
+struct tail : pg::seq<pg::star<pg::sor<blank, paren_comment>>, pg::opt<semi_comment>, pg::must<end_of_line>> {};
+
+// Statements.
+struct assign_eq : pg::one<'='> {};
+struct assignment : pg::if_must<pg::one<'#'>, var_index, ws, assign_eq, ws, expr> {};
+struct kw_while : keyword<TAO_PEGTL_ISTRING("WHILE")> {};
+struct kw_endw : keyword<TAO_PEGTL_ISTRING("ENDW")> {};
+struct kw_if : keyword<TAO_PEGTL_ISTRING("IF")> {};
+struct kw_else : keyword<TAO_PEGTL_ISTRING("ELSE")> {};
+struct kw_endif : keyword<TAO_PEGTL_ISTRING("ENDIF")> {};
+struct while_stmt : pg::if_must<kw_while, ws, expr> {};
+struct if_stmt : pg::if_must<kw_if, ws, expr> {};
+struct statement : pg::sor<assignment, while_stmt, kw_endw, if_stmt, kw_else, kw_endif> {};
+struct n_word : pg::seq<pg::at<pg::one<'N', 'n'>>, word> {};
+// A statement line is recognised by looking ahead (actions are off inside at<>), so that
+// no action of a line read as words has run when it turns out to be a statement.
+struct statement_start : pg::sor<pg::one<'#'>, kw_while, kw_endw, kw_if, kw_else, kw_endif> {};
+struct n_raw : pg::seq<pg::one<'N', 'n'>, ws, number> {};
+struct statement_line
+    : pg::seq<pg::at<ws, pg::opt<n_raw, ws>, statement_start>, ws, pg::opt<n_word, ws>, statement, tail> {};
+struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, word>>, tail> {};
+struct line : pg::sor<statement_line, words_line> {};
 
 // The message of each rule that must match.
 template <typename Rule>
 std::string message(char c) {
-  if constexpr (std::is_same_v<Rule, number>) {
+  if constexpr (std::is_same_v<Rule, word_value>) {
     return "a number must follow the letter";
-  } else if constexpr (std::is_same_v<Rule, pg::until<pg::one<')'>, pg::not_one<'\r', '\n'>>>) {
+  } else if constexpr (std::is_same_v<Rule, comment_body>) {
     return "a comment opened with '(' must close on its line";
+  } else if constexpr (std::is_same_v<Rule, bracket_close>) {
+    return "']' expected: an expression's bracket must close";
+  } else if constexpr (std::is_same_v<Rule, assign_eq>) {
+    return "'=' expected: a macro variable at the start of a line is assigned (#n = expression)";
+  } else if constexpr (std::is_same_v<Rule, expr> || std::is_same_v<Rule, unary> || std::is_same_v<Rule, product> ||
+                       std::is_same_v<Rule, sum> || std::is_same_v<Rule, not_expr> ||
+                       std::is_same_v<Rule, conjunction> || std::is_same_v<Rule, var_index> ||
+                       std::is_same_v<Rule, bracket>) {
+    return "an expression expected (a number, #n, [..], PI or a function)";
   } else {
     if (c == ')') return "')' closes no comment";
     const bool print = std::isprint(static_cast<unsigned char>(c)) != 0;
@@ -56,6 +135,35 @@ struct State {
   std::vector<Word> words;
   Word cur;
   std::size_t line = 0;
+  std::vector<Node> nodes;
+  std::vector<int> values;  // the expression stack (node indices)
+  std::vector<Node> ops;    // pending operators (op and position)
+  Stmt stmt = Stmt::None;
+  int target = -1, value = -1;
+  SourcePos stmt_pos;
+
+  template <typename Input>
+  SourcePos at(const Input& in) const {
+    return SourcePos{line, in.position().column};
+  }
+  int push(Node n) {
+    nodes.push_back(n);
+    values.push_back(int(nodes.size()) - 1);
+    return values.back();
+  }
+  int pop() {
+    const int v = values.back();
+    values.pop_back();
+    return v;
+  }
+  // Pops the pending operator and its operands (one or two) into a node.
+  void reduce(int arity) {
+    Node n = ops.back();
+    ops.pop_back();
+    if (arity == 2) n.b = pop();
+    n.a = pop();
+    push(n);
+  }
 };
 
 template <typename Rule>
@@ -67,31 +175,212 @@ struct action<letter> {
   static void apply(const Input& in, State& s) {
     s.cur = Word{};
     s.cur.letter = char(std::toupper(static_cast<unsigned char>(in.peek_char())));
-    s.cur.pos = SourcePos{s.line, in.position().column};
+    s.cur.pos = s.at(in);
   }
 };
+
+// Digits of a number read exactly: at most 15, as a decimal mantissa and exponent.
+template <typename Input>
+void read_decimal(const Input& in, const std::string& text, std::int64_t& mantissa, int& decimals) {
+  bool neg = false, point = false;
+  std::int64_t m = 0;
+  int digits_seen = 0;
+  decimals = 0;
+  for (const char c : text) {
+    if (c == '-') neg = true;
+    if (c == '.') point = true;
+    if (std::isdigit(static_cast<unsigned char>(c))) {
+      if (++digits_seen > 15) throw pg::parse_error("a number of more than 15 digits", in);
+      m = 10 * m + (c - '0');
+      if (point) ++decimals;
+    }
+  }
+  mantissa = neg ? -m : m;
+}
 
 template <>
 struct action<number> {
   template <typename Input>
   static void apply(const Input& in, State& s) {
     s.cur.text = in.string();
-    bool neg = false, point = false;
-    std::int64_t m = 0;
-    int digits_seen = 0;
-    for (const char c : s.cur.text) {
-      if (c == '-') neg = true;
-      if (c == '.') point = true;
-      if (std::isdigit(static_cast<unsigned char>(c))) {
-        if (++digits_seen > 15) throw pg::parse_error("a number of more than 15 digits", in);
-        m = 10 * m + (c - '0');
-        if (point) ++s.cur.decimals;
-      }
-    }
-    s.cur.mantissa = neg ? -m : m;
+    read_decimal(in, s.cur.text, s.cur.mantissa, s.cur.decimals);
     s.words.push_back(s.cur);
   }
 };
+
+template <>
+struct action<word_expr> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    s.cur.text = in.string();
+    s.cur.expr = s.pop();
+    s.words.push_back(s.cur);
+  }
+};
+
+template <>
+struct action<expr_number> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    std::int64_t m = 0;
+    int d = 0;
+    read_decimal(in, in.string(), m, d);
+    Node n;
+    n.op = Op::Num;
+    n.value = double(m);
+    for (int i = 0; i < d; ++i) n.value /= 10.0;  // exact for the values a program writes
+    n.pos = s.at(in);
+    s.push(n);
+  }
+};
+
+// An operator's position and kind, pushed when it is read and reduced with its operands.
+template <typename Input>
+void pending(State& s, const Input& in, Op op) {
+  Node n;
+  n.op = op;
+  n.pos = s.at(in);
+  s.ops.push_back(n);
+}
+Op binary_op(const std::string& t) {
+  std::string u;
+  for (const char c : t) u += char(std::toupper(static_cast<unsigned char>(c)));
+  if (u == "+") return Op::Add;
+  if (u == "-") return Op::Sub;
+  if (u == "*") return Op::Mul;
+  if (u == "/") return Op::Div;
+  if (u == "EQ") return Op::Eq;
+  if (u == "NE") return Op::Ne;
+  if (u == "GT") return Op::Gt;
+  if (u == "GE") return Op::Ge;
+  if (u == "LT") return Op::Lt;
+  if (u == "LE") return Op::Le;
+  if (u == "AND") return Op::And;
+  if (u == "OR") return Op::Or;
+  if (u == "SIN") return Op::Sin;
+  if (u == "COS") return Op::Cos;
+  if (u == "TAN") return Op::Tan;
+  if (u == "ATAN") return Op::Atan;
+  if (u == "SQRT") return Op::Sqrt;
+  if (u == "ABS") return Op::Abs;
+  return Op::Int;
+}
+
+template <typename Rule>
+struct op_action {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    pending(s, in, binary_op(in.string()));
+  }
+};
+template <>
+struct action<add_op> : op_action<add_op> {};
+template <>
+struct action<mul_op> : op_action<mul_op> {};
+template <>
+struct action<cmp_op> : op_action<cmp_op> {};
+template <>
+struct action<kw_and> : op_action<kw_and> {};
+template <>
+struct action<kw_or> : op_action<kw_or> {};
+template <>
+struct action<func_name> : op_action<func_name> {};
+
+template <int Arity>
+struct reduce_action {
+  template <typename Input>
+  static void apply(const Input& /*in*/, State& s) {
+    s.reduce(Arity);
+  }
+};
+template <>
+struct action<add_tail> : reduce_action<2> {};
+template <>
+struct action<mul_tail> : reduce_action<2> {};
+template <>
+struct action<cmp_tail> : reduce_action<2> {};
+template <>
+struct action<and_tail> : reduce_action<2> {};
+template <>
+struct action<or_tail> : reduce_action<2> {};
+template <>
+struct action<func> : reduce_action<1> {};
+
+template <>
+struct action<kw_pi> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    Node n;
+    n.op = Op::Pi;
+    n.pos = s.at(in);
+    s.push(n);
+  }
+};
+
+// Unary operators and variables, reduced once their operand is read.
+template <>
+struct action<negate> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    Node n;
+    n.op = Op::Neg;
+    n.pos = s.at(in);
+    n.a = s.pop();
+    s.push(n);
+  }
+};
+template <>
+struct action<negation> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    Node n;
+    n.op = Op::Not;
+    n.pos = s.at(in);
+    n.a = s.pop();
+    s.push(n);
+  }
+};
+template <>
+struct action<var> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    Node n;
+    n.op = Op::Var;
+    n.pos = s.at(in);
+    n.a = s.pop();
+    s.push(n);
+  }
+};
+
+template <>
+struct action<assignment> {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    s.stmt = Stmt::Assign;
+    s.value = s.pop();
+    s.target = s.pop();
+    s.stmt_pos = s.at(in);
+  }
+};
+template <Stmt K>
+struct stmt_action {
+  template <typename Input>
+  static void apply(const Input& in, State& s) {
+    s.stmt = K;
+    if (K == Stmt::While || K == Stmt::If) s.value = s.pop();
+    s.stmt_pos = s.at(in);
+  }
+};
+template <>
+struct action<while_stmt> : stmt_action<Stmt::While> {};
+template <>
+struct action<if_stmt> : stmt_action<Stmt::If> {};
+template <>
+struct action<kw_endw> : stmt_action<Stmt::EndW> {};
+template <>
+struct action<kw_else> : stmt_action<Stmt::Else> {};
+template <>
+struct action<kw_endif> : stmt_action<Stmt::EndIf> {};
 
 }  // namespace
 
@@ -109,7 +398,15 @@ std::vector<Line> parse_lines(std::string_view text, const std::string& file) {
     l.number = number;
     const std::size_t first = raw.find_first_not_of(" \t");
     if (first != std::string_view::npos && raw[first] == '%') {
-      l.header = true;  // the rest of a '%' line names the program
+      l.header = true;  // the rest of a '%' line names the program: its number, if digits follow
+      std::size_t i = first + 1;
+      std::int64_t n = 0;
+      bool any = false;
+      while (i < raw.size() && std::isdigit(static_cast<unsigned char>(raw[i])) && n < 100000000) {
+        n = 10 * n + (raw[i++] - '0');
+        any = true;
+      }
+      if (any) l.program = n;
     } else {
       State s;
       s.line = number;
@@ -121,6 +418,11 @@ std::vector<Line> parse_lines(std::string_view text, const std::string& file) {
         throw ProgramError(file, number, p.column, std::string(e.message()));
       }
       l.words = std::move(s.words);
+      l.nodes = std::move(s.nodes);
+      l.stmt = s.stmt;
+      l.target = s.target;
+      l.value = s.value;
+      l.stmt_pos = s.stmt_pos;
     }
     out.push_back(std::move(l));
     if (last) break;

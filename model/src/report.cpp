@@ -41,7 +41,7 @@ struct Row {
 // in steps.
 std::int64_t row_scale(const Plan& plan, std::uint32_t piece) {
   const Piece& pc = plan.pieces[std::min<std::size_t>(piece, plan.pieces.size() - 1)];
-  return pc.kind == PieceKind::Line ? pc.cmd.cap : plan.scale;
+  return pc.kind == PieceKind::Line || plan.program ? pc.cmd.cap : plan.scale;
 }
 
 std::vector<Row> rows(const Plan& plan, const RegState& init, const std::vector<Iteration>& iters) {
@@ -66,8 +66,8 @@ const char* sign(bool neg) { return neg ? "-" : "+"; }
 }  // namespace
 
 bool paper_columns(const Plan& plan) {
-  return !plan.line && plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
-         !plan.cmd().dir_y_neg;
+  return !plan.line && !plan.program && plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} &&
+         plan.cmd().dir_x_neg && !plan.cmd().dir_y_neg;
 }
 
 void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, TraceFormat fmt) {
@@ -96,7 +96,11 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
   }
   if (fmt == TraceFormat::Table) {
     // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
-    if (plan.line) {
+    if (plan.program) {
+      fmt::print(os,
+                 "program: {} commands from ({},{}) to ({},{}), units: steps (scaled values / each piece's capacity)\n",
+                 plan.pieces.size(), plan.from.x, plan.from.y, plan.to.x, plan.to.y);
+    } else if (plan.line) {
       fmt::print(os, "line preload={} from ({},{}) to ({},{}), units: steps (scaled values / the capacity {})\n",
                  to_string(plan.spec.preload), plan.from.x, plan.from.y, plan.to.x, plan.to.y, s);
     } else {
@@ -130,6 +134,7 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
   // JSON: the full records, exact scaled integers.
   nlohmann::ordered_json j;
   if (plan.line) j["line"] = true;
+  if (plan.program) j["program"] = true;
   j["a"] = plan.spec.a;
   j["b"] = plan.spec.b;
   j["bits"] = plan.spec.bits;
@@ -274,6 +279,11 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
 
 std::string describe(const Plan& plan) {
   std::ostringstream s;
+  if (plan.program) {  // a part program's blocks: the program file rebuilds them
+    s << "--program (" << plan.pieces.size() << " commands from (" << plan.from.x << ',' << plan.from.y << ") to ("
+      << plan.to.x << ',' << plan.to.y << "))";
+    return s.str();
+  }
   if (plan.line) {
     s << "--line --from " << plan.from.x << ',' << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y
       << " --preload " << to_string(plan.spec.preload);

@@ -35,7 +35,24 @@ struct ArcSpec {
   // semi-axis to the end of the b semi-axis (parametric angles 0 and 90).
   std::optional<Point> from, to;
   std::optional<std::int64_t> from_theta, to_theta;
+  // Geometry between lattice points (part programs, issue 15): with sub > 0, a and b are
+  // in units of 2^-sub step and the centre is center + center_frac / 2^sub (each
+  // component of center_frac in [0, 2^sub)). Such arcs run on the fixed-point datapath
+  // of rotated ellipses (whatever the angle) and the anchored planner.
+  int sub = 0;
+  Point center_frac;
+  // Largest distance (steps) the start and end points may lie from the curve; 0 means
+  // kPointTolerance (planner.hpp).
+  double tolerance = 0;
 };
+
+// The semi-axes and the centre in steps (floating point: measurement and drawing only).
+double a_steps(const ArcSpec& s);
+double b_steps(const ArcSpec& s);
+double center_x(const ArcSpec& s);
+double center_y(const ArcSpec& s);
+// A semi-axis in whole steps, rounded up (limits, widths and guards).
+std::int64_t steps_ceil(const ArcSpec& s, std::int64_t v);
 
 // What a piece draws: part of the ellipse, or a straight line (constant integrands, no
 // corrections; the capacity is the line's longer extent, so with half preload it is
@@ -77,8 +94,11 @@ struct Plan {
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
   bool line = false;            // a straight line (plan_line), not an ellipse arc
+  bool program = false;         // a part program's blocks back to back (program_plan.hpp):
+                                // spec, scale and coef are unused
   bool full = false;            // one full turn: equal lattice ends or equal angles
-  bool rotated = false;         // angle not a multiple of 90 degrees
+  bool rotated = false;         // the fixed-point datapath: angle not a multiple of 90
+                                // degrees, or sub-step geometry (spec.sub > 0)
   std::int64_t ax = 0, by = 0;  // quarter turns: semi-axes along X and Y (a, b swapped by
                                 // odd turns); rotated: a and b
   std::int64_t scale = 1;       // a*b (a line: its capacity): divide register values by it

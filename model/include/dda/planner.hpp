@@ -24,6 +24,11 @@ inline constexpr int kMaxExtraBits = 16;
 // 2^n a b would not fit the hardware's AccWidth-bit capacity field.
 int default_bits(std::int64_t a, std::int64_t b);
 
+// Sub-step geometry (ArcSpec::sub): at most kMaxSubBits fraction bits; part programs use
+// kSubBits (1/1024 step).
+inline constexpr int kMaxSubBits = 16;
+inline constexpr int kSubBits = 10;
+
 // Largest distance (in steps) a start or end point may lie from the ellipse.
 inline constexpr double kPointTolerance = 1.0;
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/golden.hpp"
@@ -52,5 +53,19 @@ std::string describe(const Plan& plan);
 // distance from the curve, a colour legend, axes in steps, and the largest deviation
 // ringed and labelled "max D @ (x,y)" (dda plot).
 void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, const std::string& title);
+// The same picture of any path: its points with their distances (steps) from the ideal
+// geometry, drawn as polylines of (x, y) in steps; `curve` names it in the legend.
+struct SvgPicture {
+  std::vector<Point> pts;
+  std::vector<double> dist;
+  std::vector<std::vector<std::pair<double, double>>> ideal;
+  std::string title, curve;
+  // Optionally a second path drawn over it in orange (a comparison), with its legend
+  // label, and a view window (x0, y0, x1, y1 in steps) instead of the path's extent.
+  std::vector<Point> other;
+  std::string other_label;
+  std::vector<double> view;
+};
+void write_svg(std::ostream& os, const SvgPicture& pic);
 
 }  // namespace dda

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: Apache-2.0
+// Deterministic double-precision functions for the macro language (issue 16): sine,
+// cosine, tangent and arc tangent in radians computed with IEEE 754 additions,
+// multiplications and divisions only (no libm, no fused multiply-add: the library is
+// built with -ffp-contract=off), so that a macro program computes the same bits, and a
+// loop runs the same number of times, on every machine. Accuracy: within a few units in
+// the last place for |x| up to 1e6 (tests/test_det_math.cpp compares with long double).
+#pragma once
+
+namespace dda::det {
+
+double sin(double x);
+double cos(double x);
+double tan(double x);   // sin / cos
+double atan(double x);  // in (-pi/2, pi/2)
+
+inline constexpr double kPi = 3.141592653589793115997963468544185161590576171875;  // the double nearest pi
+
+}  // namespace dda::det

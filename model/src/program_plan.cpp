@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: Apache-2.0
+// The planner for part programs (docs/programs.md, "From blocks to commands").
+#include "dda/program_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "dda/fixed_trig.hpp"
+#include "dda/geometry.hpp"
+#include "dda/hw_command.hpp"
+#include "dda/planner.hpp"
+
+namespace dda::program {
+
+namespace {
+
+// v / d rounded to the nearest integer, halves away from zero (d > 0), in 128 bits.
+std::int64_t round_div(__int128 v, __int128 d) { return std::int64_t(v >= 0 ? (v + d / 2) / d : -((-v + d / 2) / d)); }
+
+std::int64_t floor_div(std::int64_t v, std::int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); }
+
+std::string block_name(const Move& mv) {
+  return mv.block_number ? fmt::format("block N{} ({})", *mv.block_number, kind_name(mv.kind))
+                         : fmt::format("block at line {} ({})", mv.pos.line, kind_name(mv.kind));
+}
+
+[[noreturn]] void fail(const std::string& file, const Move& mv, const std::string& why) {
+  throw ProgramError(file, mv.pos.line, mv.pos.column, block_name(mv) + ": " + why);
+}
+
+bool is_arc(MoveKind k) { return k == MoveKind::ArcCw || k == MoveKind::ArcCcw; }
+
+// The arc or ellipse block as the planner's sub-step ArcSpec, from `from` to `to`.
+ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point to) {
+  ArcSpec s;
+  s.sub = kSubBits;
+  const std::int64_t one = std::int64_t{1} << kSubBits;
+  const std::int64_t cu = to_sub_steps(mv.center.u, step), cv = to_sub_steps(mv.center.v, step);
+  s.center = Point{floor_div(cu, one), floor_div(cv, one)};
+  s.center_frac = Point{cu - s.center.x * one, cv - s.center.y * one};
+  if (is_arc(mv.kind)) {
+    s.a = s.b = to_sub_steps(mv.radius, step);
+  } else {
+    s.a = to_sub_steps(mv.a, step);
+    s.b = to_sub_steps(mv.b, step);
+    s.angle = normalize_udeg(mv.q_millideg * 1000);
+  }
+  s.dir = mv.kind == MoveKind::ArcCw || mv.kind == MoveKind::EllipseCw ? Direction::Cw : Direction::Ccw;
+  s.preload = preload;
+  s.from = from;
+  s.to = to;
+  // The ends may lie off the curve by the reader's tolerance plus the rounding to the
+  // lattice (at most half a step on each axis) and one step of margin.
+  s.tolerance = 1.0 + double(kEndTolerance) / double(step);
+  // The width: the default (4 bits above the smallest valid), fewer if the fixed-point
+  // coefficients' rounding could move a thin ellipse's curve by more than
+  // kMaxCoefficientDrift (planner.hpp); a program cannot choose it.
+  const double mx = std::max(a_steps(s), b_steps(s)), mn = std::min(a_steps(s), b_steps(s));
+  const int nmin = smallest_valid_bits(steps_ceil(s, s.a), steps_ceil(s, s.b));
+  s.bits = default_bits(steps_ceil(s, s.a), steps_ceil(s, s.b));
+  const auto drift = [&](int n) { return std::ldexp(mx * mx / mn, n - kRotCapBits); };
+  while (s.bits > nmin && drift(s.bits) > kMaxCoefficientDrift) --s.bits;
+  if (drift(s.bits) > kMaxCoefficientDrift) {
+    throw InputError(
+        fmt::format("the ellipse is too thin for the datapath: semi-axes {:.6g} and {:.6g} steps; the "
+                    "rounding of its fixed-point coefficients could move the curve by {:.3g} steps (at "
+                    "most {})",
+                    mx, mn, drift(s.bits), kMaxCoefficientDrift));
+  }
+  return s;
+}
+
+// The parametric sweep (radians, in [0, 2 pi)) of a block from its start to its end in
+// its direction, on its programmed geometry.
+double sweep(const Move& mv) {
+  const double a0 = std::atan2(double(mv.from.v - mv.center.v), double(mv.from.u - mv.center.u));
+  const double a1 = std::atan2(double(mv.to.v - mv.center.v), double(mv.to.u - mv.center.u));
+  const bool cw = mv.kind == MoveKind::ArcCw || mv.kind == MoveKind::EllipseCw;
+  double d = cw ? a0 - a1 : a1 - a0;
+  constexpr double kTurn = 6.283185307179586;
+  while (d < 0) d += kTurn;
+  while (d >= kTurn) d -= kTurn;
+  return d;
+}
+
+}  // namespace
+
+Length parse_step(const std::string& mm) {
+  // Decimal millimetres with at most 6 decimals, exactly.
+  std::size_t i = 0;
+  std::int64_t whole = 0, frac = 0;
+  int decimals = 0;
+  bool digits = false;
+  while (i < mm.size() && mm[i] >= '0' && mm[i] <= '9' && whole < kNmPerMm)
+    whole = whole * 10 + (mm[i++] - '0'), digits = true;
+  if (i < mm.size() && mm[i] == '.') {
+    ++i;
+    while (i < mm.size() && mm[i] >= '0' && mm[i] <= '9') {
+      if (decimals == 6 && mm[i] != '0') decimals = 7;  // finer than a nanometre
+      if (decimals < 6) frac = frac * 10 + (mm[i] - '0'), ++decimals;
+      ++i;
+      digits = true;
+    }
+  }
+  std::int64_t nm = whole * kNmPerMm;
+  if (decimals <= 6) {
+    for (int d = decimals; d < 6; ++d) frac *= 10;
+    nm += frac;
+  }
+  if (!digits || i != mm.size() || decimals > 6 || nm < 1 || nm > kNmPerMm) {
+    throw InputError("step = " + mm + " is invalid: the lattice unit is in millimetres, from 0.000001 (1 nm) to 1");
+  }
+  return nm;
+}
+
+std::int64_t to_steps(Length v, Length step) { return round_div(v, step); }
+std::int64_t to_sub_steps(Length v, Length step) { return round_div(__int128(v) << kSubBits, step); }
+
+ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const std::string& file) {
+  ProgramPlan pp;
+  pp.lattice = opt;
+  const Length step = opt.step;
+  pp.start = Point{to_steps(prog.start.u, step), to_steps(prog.start.v, step)};
+  Point at = pp.start;
+  for (const Move& mv : prog.moves) {
+    BlockPlan b;
+    b.move = mv;
+    b.from = at;
+    b.to = Point{to_steps(mv.to.u, step), to_steps(mv.to.v, step)};
+    b.rounding =
+        std::hypot(double(b.to.x) - double(mv.to.u) / double(step), double(b.to.y) - double(mv.to.v) / double(step));
+    b.plan.from = b.plan.to = b.plan.arc_from = at;
+    try {
+      if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
+        if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt.preload);
+      } else if (b.from != b.to || mv.full || sweep(mv) >= 3.141592653589793) {
+        // (A block whose rounded ends coincide and that sweeps less than half a turn is
+        // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
+        b.plan = plan_arc(arc_spec(mv, step, opt.preload, b.from, b.to));
+      }
+    } catch (const ProgramError&) {
+      throw;
+    } catch (const InputError& e) {
+      fail(file, mv, e.what());
+    }
+    b.first_piece = pp.plan.pieces.size();
+    for (const Piece& pc : b.plan.pieces) pp.plan.pieces.push_back(pc);
+    pp.plan.iteration_bound += b.plan.iteration_bound;
+    at = b.to;
+    pp.blocks.push_back(std::move(b));
+  }
+  if (pp.plan.pieces.empty()) {
+    const SourcePos where = prog.moves.empty() ? SourcePos{1, 1} : prog.moves.back().pos;
+    throw ProgramError(file, where.line, where.column,
+                       prog.moves.empty() ? "the program has no motion block: nothing to run"
+                                          : "the program's moves are all shorter than a step: nothing to run");
+  }
+  pp.plan.from = pp.plan.arc_from = pp.start;
+  pp.plan.to = at;
+  pp.plan.program = true;
+  return pp;
+}
+
+void check_hardware(const ProgramPlan& pp, const std::string& file) {
+  for (const BlockPlan& b : pp.blocks) {
+    for (const Piece& pc : b.plan.pieces) {
+      try {
+        hw::pack_command(pc.cmd);
+      } catch (const InputError& e) {
+        fail(file, b.move, std::string("beyond the hardware's widths: ") + e.what());
+      }
+    }
+  }
+}
+
+double block_distance(const BlockPlan& b, Length step, double x, double y) {
+  const Move& mv = b.move;
+  const double s = double(step);
+  const double px = x, py = y;
+  if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
+    const double x0 = double(mv.from.u) / s, y0 = double(mv.from.v) / s;
+    const double ux = double(mv.to.u) / s - x0, uy = double(mv.to.v) / s - y0;
+    const double len2 = ux * ux + uy * uy;
+    const double t = len2 > 0 ? std::clamp(((px - x0) * ux + (py - y0) * uy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(px - (x0 + t * ux), py - (y0 + t * uy));
+  }
+  const double rx = px - double(mv.center.u) / s, ry = py - double(mv.center.v) / s;
+  if (is_arc(mv.kind)) return std::fabs(std::hypot(rx, ry) - double(mv.radius) / s);
+  const auto [u, v] = to_frame(normalize_udeg(mv.q_millideg * 1000), rx, ry);
+  return ellipse_distance(double(mv.a) / s, double(mv.b) / s, u, v);
+}
+
+std::size_t block_of_piece(const ProgramPlan& pp, std::size_t piece) {
+  const auto it = std::upper_bound(pp.blocks.begin(), pp.blocks.end(), piece,
+                                   [](std::size_t k, const BlockPlan& b) { return k < b.first_piece; });
+  return std::size_t(it - pp.blocks.begin()) - 1;
+}
+
+}  // namespace dda::program

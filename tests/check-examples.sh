@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The part programs of examples/ on the three engines (issue 15, acceptance 1): for each
+# program, `dda stats` and `dda path` print the same bytes with --engine golden, systemc
+# and rtl (the SystemC and RTL engines also check every iteration's registers against
+# the golden model as they run), and `dda trace` does too for the programs below
+# TRACE_MAX_ITERATIONS iterations. The machine and start of each program come from its
+# "; Run:" comment line. The accuracy and end-point checks of the same programs are in
+# tests/test_program_plan.cpp.
+#   usage: tests/check-examples.sh DDA EXAMPLES_DIR
+set -euo pipefail
+dda=$1 dir=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+TRACE_MAX_ITERATIONS=1200000
+n=0
+for prog in "$dir"/*.ngc; do
+  name=$(basename "$prog" .ngc)
+  run=$(grep -m1 '^; Run:' "$prog" || true)
+  [ -n "$run" ] || { echo "examples: $prog has no '; Run:' line" >&2; exit 1; }
+  opts=(--program "$prog")
+  [[ $run == *"--machine lathe"* ]] && opts+=(--machine lathe)
+  if [[ $run =~ --start\ ([-0-9.,]+) ]]; then opts+=(--start "${BASH_REMATCH[1]}"); fi
+  iters=$("$dda" stats "${opts[@]}" --format json | sed -n 's/^  "iterations": \([0-9]*\),$/\1/p' | tail -1)
+  [ -n "$iters" ] || { echo "examples: no iteration count for $name" >&2; exit 1; }
+  cmds=(stats path)
+  [ "$iters" -le "$TRACE_MAX_ITERATIONS" ] && cmds+=(trace)
+  for cmd in "${cmds[@]}"; do
+    for engine in golden systemc rtl; do
+      "$dda" "$cmd" "${opts[@]}" --engine "$engine" --out "$tmp/$name.$cmd.$engine"
+    done
+    for engine in systemc rtl; do
+      if ! cmp -s "$tmp/$name.$cmd.golden" "$tmp/$name.$cmd.$engine"; then
+        echo "examples: dda $cmd ${opts[*]} differs between golden and $engine:" >&2
+        diff "$tmp/$name.$cmd.golden" "$tmp/$name.$cmd.$engine" | head -5 >&2
+        exit 1
+      fi
+    done
+  done
+  echo "examples: $name: ${cmds[*]} identical on golden, systemc and rtl ($iters iterations)"
+  n=$((n + 1))
+done
+[ "$n" -ge 7 ] || { echo "examples: only $n programs in $dir (expected the 7 of issue 15)" >&2; exit 1; }
+echo "examples: $n programs identical on the three engines"

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: Apache-2.0
+// `dda --program` as a user runs it (issue 15): every class of bad input is exit status
+// 2 and one line "FILE:LINE:COLUMN: message" at the right place, with no file written;
+// the options' own errors; a program from standard input; the per-block statistics.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli_helpers.hpp"
+
+namespace {
+
+void write_file(const fs::path& p, const std::string& text) {
+  std::ofstream f(p, std::ios::binary);
+  f << text;
+}
+
+}  // namespace
+
+TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, status 2, no file", "[cli]") {
+  // (text, expected message after "FILE:") for each class the issue names.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"G01 X1\nG01 E5\n", "2:5: unknown word E"},                          // unknown word
+      {"G93 X1\n", "1:1: unknown or unsupported code G93"},                 // unknown code
+      {"G01 X1.2.3\n", "1:9: unexpected '.'"},                              // malformed number
+      {"G01 X Y1\n", "1:7: a number must follow the letter"},               // axis word without its value
+      {"G02 X10 Y0\n", "1:1: an arc needs a centre (I, J) or a radius R"},  // missing centre or radius words
+      {"N7 G02 X10 Y0 I5 R5\n", "1:18: an arc takes a centre or a radius R, not both"},
+      {"G02 X10 Y0 R4\n", "1:12: the end is out of reach: 10.0000 mm from the start, more than twice R 4.0000 mm"},
+      {"G02 X10 Y0 I5.0011\n",
+       "1:1: the end is 0.0022 mm off the arc's circle (radius 5.0011 mm; tolerance 0.002 mm)"},  // off-curve end
+      {"G6.2 X10 Y0 A0 B2\n", "1:13: the semi-axis A must be positive"},
+      {"G6.2 X10 Y0 A5 B-2\n", "1:16: the semi-axis B must be positive"},
+      {"G01 X1 Z5\n", "1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)"},
+      {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
+  };
+  for (const auto& [text, want] : cases) {
+    for (const std::string cmd : {"stats", "plot", "trace --engine rtl"}) {
+      Scratch s;
+      const fs::path prog = s.dir / "p.nc", out = s.dir / "out.txt";
+      write_file(prog, text);
+      const Result r = run_dda(s, cmd + " --program " + prog.string() + " --out " + out.string());
+      INFO("dda " << cmd << " on: " << text << "stderr: " << r.err);
+      CHECK(r.status == 2);
+      CHECK(r.out.empty());
+      CHECK(r.err == prog.string() + ":" + want + "\n");
+      CHECK(s.user_files() == 1);  // only the program: no output, no temporary file
+    }
+  }
+  // vectors: no directory left either.
+  Scratch s;
+  const fs::path prog = s.dir / "p.nc";
+  write_file(prog, "G01 X1\nG01 E5\n");
+  const Result r = run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
+  CHECK(r.status == 2);
+  CHECK(r.err == prog.string() + ":2:5: unknown word E\n");
+  CHECK(s.user_files() == 1);
+}
+
+TEST_CASE("cli program: a block the hardware cannot hold is refused for systemc and rtl only", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "big.nc";
+  write_file(prog, "N10 G00 X200 Y0\nN20 G03 X-200 Y0 R200\n");
+  for (const std::string engine : {"systemc", "rtl"}) {
+    const Result r = run_dda(s, "stats --program " + prog.string() + " --engine " + engine);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(prog.string() + ":2:5: block N20 (arc ccw): beyond the hardware's widths: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  const Result g = run_dda(s, "stats --program " + prog.string() + " --format json");
+  CHECK(g.status == 0);
+  const auto j = nlohmann::json::parse(g.out);
+  CHECK(j["totals"]["on_ends"] == true);
+  CHECK(j["blocks"][1]["end"] == nlohmann::json::array({-200000, 0}));
+}
+
+TEST_CASE("cli program: the options' own errors", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "p.nc";
+  write_file(prog, "G01 X1 Y1\n");
+  const std::string p = " --program " + prog.string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"stats" + p + " --a 5", "dda: error: --a is invalid with --program: the program gives the geometry\n"},
+      {"stats" + p + " --line", "dda: error: --line is invalid with --program: the program gives the geometry\n"},
+      {"stats --a 5 --b 3 --machine lathe", "dda: error: --machine, --start and --step go with --program FILE\n"},
+      {"stats" + p + " --machine drill", "dda: error: machine = 'drill' is invalid: use mill or lathe\n"},
+      {"stats" + p + " --step 0.0000001",
+       "dda: error: step = 0.0000001 is invalid: the lattice unit is in millimetres, from 0.000001 (1 nm) to 1\n"},
+      {"stats" + p + " --start 1", "dda: error: start = '1' is invalid: give X,Y in millimetres (e.g. 10,-2.5)\n"},
+      {"stats --program " + (s.dir / "none.nc").string(),
+       "dda: error: program = '" + (s.dir / "none.nc").string() + "' is invalid: cannot read it\n"},
+      {"stats --a 5 --b 3 --format csv", "dda: error: --format csv goes with --program\n"},
+      {"feed" + p, "dda: error: --program is invalid with feed: the feed table is one arc's\n"},
+  };
+  for (const auto& [args, want] : cases) {
+    const Result r = run_dda(s, args);
+    INFO("dda " << args);
+    CHECK(r.status == 2);
+    CHECK(r.err == want);
+  }
+}
+
+TEST_CASE("cli program: standard input, a lathe in diameters, the block table", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "p.nc";
+  write_file(prog, "N1 G00 X20 Z0\nN2 G01 U10 W-5\nN3 G02 X40 Z-15 R8\n");
+  const Result file = run_dda(s, "stats --machine lathe --format csv --program " + prog.string());
+  const Result in = run_dda(s, "stats --machine lathe --format csv --program - < " + prog.string());
+  CHECK(file.status == 0);
+  CHECK(in.status == 0);
+  CHECK(file.out == in.out);
+  // One row per block: line, block, kind, end (u, v) = (Z, X radius) in mm and steps.
+  CHECK(file.out.rfind("line,block,kind,end_u_mm,end_v_mm,end_x,end_y,rounding,commands,steps,iterations,max_dev,"
+                       "mean_dev,on_end\n1,N1,rapid,0,10,0,10000,0.000000,1,10000,10000,",
+                       0) == 0);
+  CHECK(file.out.find("\n2,N2,line,-5,15,-5000,15000,") != std::string::npos);
+  CHECK(file.out.find("\n3,N3,arc cw,-15,20,-15000,20000,") != std::string::npos);
+  // An error in a program from standard input names <stdin>.
+  write_file(prog, "G01 X1\nG01 E5\n");
+  const Result bad = run_dda(s, "path --program - < " + prog.string());
+  CHECK(bad.status == 2);
+  CHECK(bad.err == "<stdin>:2:5: unknown word E\n");
+}
