@@ -55,7 +55,11 @@ dda_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
 dda_vec_set(back_to_back --a 10 --b 6 --bits 4 --preload zero --ce-percent 90 --seed 7
             --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
             --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
-foreach(_set paper paper_half paper_ce second_quadrant lathe back_to_back)
+# A part program (issue 16): the lathe paper's macro program, its 304 chords and the
+# rapids around them as back-to-back commands.
+dda_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper-macro.ngc --machine lathe --start 60,5
+            --ce-percent 90 --seed 13)
+foreach(_set paper paper_half paper_ce second_quadrant lathe back_to_back paper_macro)
   dda_rtl_test(vectors.${_set} NEEDS IVERILOG VVP VERILATOR
                COMMAND ${_dda_scripts}/vector-bench.sh ${_dda_vec}/${_set})
   set_tests_properties(vectors.${_set} PROPERTIES FIXTURES_REQUIRED vec_${_set}
@@ -136,6 +140,10 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
+dda_bus_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper-macro.ngc --machine lathe
+                --start 60,5 --feed 40000 --seed 17)
+set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_paper_macro vectors.bus.paper_macro
+             APPEND PROPERTY LABELS program)
 dda_rtl_test(vectors.bus.detects_corruption NEEDS IVERILOG VVP VERILATOR
              COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 60 pos_x_q ${_dda_bvec}/paper)
 set_tests_properties(vectors.bus.detects_corruption PROPERTIES FIXTURES_REQUIRED bvec_paper LABELS "rtl;motion"

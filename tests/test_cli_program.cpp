@@ -39,6 +39,26 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
       {"G01 X1 Z5\n", "1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)"},
       {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
   };
+  // The macro language's classes (issue 16).
+  const std::vector<std::pair<std::string, std::string>> macro_cases = {
+      {"G01 X#7\n", "1:6: #7 is undefined: no value was assigned to it"},
+      {"#1=0\n#2=5/#1\n", "2:5: division by zero"},
+      {"#1=1\nWHILE #1 LT 3\nG01 X#1\n", "2:1: WHILE without ENDW in its program"},
+      {"G01 X1\nELSE\n", "2:1: ELSE without IF"},
+      {"%1\nM98 P7\nM30\n%2\nM99\n", "2:5: M98 calls program %7: there is none"},
+      {"%1\nM98 P2\n%2\nM98 P2\nM99\n", "4:5: subprogram calls nested deeper than 8"},
+      {"#1=0\nWHILE [1]\n#1=#1+1\nENDW\n", "2:1: more than 10000000 lines executed: a loop that does not end?"},
+  };
+  for (const auto& [text, want] : macro_cases) {
+    Scratch s;
+    const fs::path prog = s.dir / "m.nc", out = s.dir / "out.txt";
+    write_file(prog, text);
+    const Result r = run_dda(s, "stats --engine systemc --program " + prog.string() + " --out " + out.string());
+    INFO(text);
+    CHECK(r.status == 2);
+    CHECK(r.err == prog.string() + ":" + want + "\n");
+    CHECK(s.user_files() == 1);
+  }
   for (const auto& [text, want] : cases) {
     for (const std::string cmd : {"stats", "plot", "trace --engine rtl"}) {
       Scratch s;

@@ -92,6 +92,22 @@ void write_svg(std::ostream& os, const SvgPicture& pic) {
   const double L = 90, T = 60, R = 180, B = 70;  // margins: axis labels left/bottom, legend right
   const auto sx = [&](double x) { return L + (x - x0) * scale; };
   const auto sy = [&](double y) { return T + (y1 - y) * scale; };
+  // A path's polyline: the points in the view and their neighbours, at most about 8000
+  // of them (every k-th beyond that: the picture's scale hides the rest).
+  const auto polyline = [&](const std::vector<Point>& v) {
+    std::vector<std::size_t> keep;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (inside(v[i]) || (i > 0 && inside(v[i - 1])) || (i + 1 < v.size() && inside(v[i + 1]))) keep.push_back(i);
+    }
+    const std::size_t k = std::max<std::size_t>(1, (keep.size() + 7999) / 8000);
+    std::string out;
+    for (std::size_t j = 0; j < keep.size(); ++j) {
+      if (j % k != 0 && j + 1 != keep.size()) continue;
+      const Point& p = v[keep[j]];
+      out += fmt::format("{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
+    }
+    return out;
+  };
   const double dscale = std::max(1.0, dist[imax]);  // colour ramp 0..max(1, worst)
 
   fmt::print(os,
@@ -139,21 +155,21 @@ void write_svg(std::ostream& os, const SvgPicture& pic) {
   fmt::print(os,
              "<polyline class=\"path\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#333333\" "
              "stroke-width=\"1\" points=\"");
-  for (const Point& p : pts) fmt::print(os, "{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
+  os << polyline(pts);
   fmt::print(os, "\"/>\n");
   std::size_t shown = 0;
   for (const Point& p : pts) shown += inside(p);
-  const std::size_t every = std::max<std::size_t>(1, (shown + 3999) / 4000);
+  const std::size_t every = std::max<std::size_t>(1, (shown + pic.max_markers - 1) / pic.max_markers);
   const double r = std::clamp(0.3 * scale, 1.5, 7.0);
   if (!pic.other.empty()) {
     fmt::print(os,
                "<polyline class=\"other\" clip-path=\"url(#plot)\" fill=\"none\" stroke=\"#e66101\" "
                "stroke-width=\"1.5\" points=\"");
-    for (const Point& p : pic.other) fmt::print(os, "{:.2f},{:.2f} ", sx(double(p.x)), sy(double(p.y)));
+    os << polyline(pic.other);
     fmt::print(os, "\"/>\n");
     std::size_t other_shown = 0;
     for (const Point& p : pic.other) other_shown += inside(p);
-    const std::size_t oe = std::max<std::size_t>(1, (other_shown + 3999) / 4000);
+    const std::size_t oe = std::max<std::size_t>(1, (other_shown + pic.max_markers - 1) / pic.max_markers);
     std::size_t k = 0;
     for (const Point& p : pic.other) {
       if (!inside(p) || k++ % oe != 0) continue;

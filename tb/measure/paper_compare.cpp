@@ -121,6 +121,7 @@ void picture(const std::string& path, const Measure& native, const Measure& chor
   pic.other = chords.path;
   pic.other_label = "chords";
   pic.view = view;
+  pic.max_markers = 1500;
   std::ofstream out(path);
   write_svg(out, pic);
   if (!out) throw GuardError("cannot write " + path);

@@ -65,6 +65,7 @@ struct SvgPicture {
   std::vector<Point> other;
   std::string other_label;
   std::vector<double> view;
+  std::size_t max_markers = 4000;  // point markers drawn at most (every k-th beyond)
 };
 void write_svg(std::ostream& os, const SvgPicture& pic);
 
