@@ -167,7 +167,9 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
   }
   if (cmds.size() > kMaxCommands) {
     throw InputError("vectors: " + std::to_string(cmds.size()) + " commands are too many: tb/hdl/dda_vec_tb.v holds " +
-                     std::to_string(kMaxCommands));
+                     std::to_string(kMaxCommands) +
+                     " (split the work into several sets, or give --bus: the motion "
+                     "block's set streams its commands)");
   }
   std::uint64_t bound = 16;
   for (const auto& p : plans) bound += p.iteration_bound;

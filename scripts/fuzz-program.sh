@@ -3,7 +3,7 @@
 # Fuzzing of the part-program reader (not in the default suite): builds the libFuzzer
 # target tests/fuzz/fuzz_program.cpp with clang under AddressSanitizer and
 # UndefinedBehaviorSanitizer, runs it for SECONDS (default 600) from the seed programs
-# of tests/fuzz/corpus, and prints libFuzzer's executions and coverage; then builds the
+# of tests/fuzz/corpus (G-code and macro programs), and prints libFuzzer's executions and coverage; then builds the
 # reader's tests (tests/test_program.cpp) under the same sanitizers and runs them.
 # Exits non-zero on a crash, a sanitizer report or a failed test.
 #   usage: scripts/fuzz-program.sh [SECONDS]
@@ -13,8 +13,9 @@ seconds=${1:-600}
 out=${DDA_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 cp "$root"/tests/fuzz/corpus/* "$out/corpus/"
-srcs=("$root/model/src/program.cpp" "$root/model/src/program_grammar.cpp")
-flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer -I"$root/model/include" -I"$root/model/src")
+srcs=("$root/model/src/program.cpp" "$root/model/src/program_grammar.cpp" "$root/model/src/program_macro.cpp"
+  "$root/model/src/det_math.cpp" "$root/model/src/fixed_trig.cpp")
+flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off -I"$root/model/include" -I"$root/model/src")
 san=-fsanitize=address,undefined
 clang++ "${flags[@]}" "$san",fuzzer -fno-sanitize-recover=undefined "${srcs[@]}" \
   "$root/tests/fuzz/fuzz_program.cpp" -lfmt -o "$out/fuzz_program"

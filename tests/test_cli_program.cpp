@@ -147,3 +147,19 @@ TEST_CASE("cli program: standard input, a lathe in diameters, the block table", 
   CHECK(bad.status == 2);
   CHECK(bad.err == "<stdin>:2:5: unknown word E\n");
 }
+
+TEST_CASE("cli program: a program longer than a core vector set holds is refused with its reason", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "long.nc";
+  // 4100 moves of one step each: 4100 core commands.
+  write_file(prog, "#1=0\nWHILE #1 LT 4100\n#1=#1+1\nG01 X[#1*0.001]\nENDW\n");
+  const Result r = run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
+  CHECK(r.status == 2);
+  CHECK(r.err ==
+        "dda: error: vectors: 4100 commands are too many: tb/hdl/dda_vec_tb.v holds 4096 (split the work into several "
+        "sets, or give --bus: the motion block's set streams its commands)\n");
+  CHECK(s.user_files() == 1);
+  // The motion block's set streams the commands through its queue: it takes them.
+  const Result b = run_dda(s, "vectors --bus --program " + prog.string() + " --out-dir " + (s.dir / "bus").string());
+  CHECK(b.status == 0);
+}

@@ -3,8 +3,8 @@
 // cosine, tangent and arc tangent in radians computed with IEEE 754 additions,
 // multiplications and divisions only (no libm, no fused multiply-add: the library is
 // built with -ffp-contract=off), so that a macro program computes the same bits, and a
-// loop runs the same number of times, on every machine. Accuracy: within a few units in
-// the last place for |x| up to 1e6 (tests/test_det_math.cpp compares with long double).
+// loop runs the same number of times, on every machine. Accuracy: within 5 units in the
+// last place for |x| up to 1e5 (tests/test_program.cpp compares with long double).
 #pragma once
 
 namespace dda::det {
