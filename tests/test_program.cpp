@@ -239,3 +239,27 @@ TEST_CASE("det_math: the macro language's sines are within 5 units in the last p
   CHECK(dda::det::cos(0.0) == 1.0);
   CHECK(dda::det::atan(0.0) == 0.0);
 }
+
+TEST_CASE("program macros: the review's cases", "[program]") {
+  // A call and a return in one block, or a call in a dwell block: refused, not deferred.
+  CHECK(error_of("%1\nM98 P2\nM30\n%2\nM98 P3 M99\n%3\nM99\n") ==
+        "p.nc:5:1: M98 and M99 in one block: call or return, not both");
+  CHECK(error_of("%1\nG04 X1 M98 P2\n%2\nM99\n") ==
+        "p.nc:2:8: M98 in a dwell (G04) block: a call stands in its own block");
+  // Decimal literals are read correctly rounded, as IEEE 754 reads them: 0.07 == 7/100.
+  CHECK(mill("IF [0.07 EQ 7/100]\nG01 X1\nELSE\nG01 X2\nENDIF\n").moves[0].to.u == mm(1));
+  // Comments before a statement; a comparison before a digit; a byte-order mark.
+  CHECK(mill("(set up) #1=5\nN10 (c) #2=#1 LT3\nG01 X#1 Y#2\n").moves[0].to == Point2{mm(5), 0});
+  CHECK(mill("\xEF\xBB\xBFG01 X1\n").moves.size() == 1);
+  // A program number defined twice; a line too long to be G-code; deep nesting stays an error.
+  CHECK(error_of("%2\nG01 X1\n%2\nM99\n") == "p.nc:3:1: program %2 is defined twice (first at line 1)");
+  CHECK(error_of("#1=" + std::string(5000, '[') + "1" + std::string(5000, ']') + "\n") ==
+        "p.nc:1:4097: a line of more than 4096 characters");
+  CHECK(error_of("#1=" + std::string(2000, '[') + "1" + std::string(2000, ']') + "\nG01 X#1\n").empty());
+  // #30 is in the program's unit: inches under G20.
+  const Program q = lathe("%1\nG20 G00 X2 Z-1\nM98 P2\nM30\n%2\nG01 X[#30+1] Z#32\nM99\n");
+  CHECK(q.moves[1].to == Point2{mm(-25.4), mm(38.1)});
+  // An ellipse block that starts at its centre: the reader's message.
+  CHECK(error_of("G00 X20 Z0\nG6.3 X20 Z-10 A10 B5 K0 I0\n", Machine::Lathe) ==
+        "p.nc:2:1: the start is 5.0000 mm off the ellipse (tolerance 0.002 mm)");
+}

@@ -202,3 +202,17 @@ TEST_CASE("program plan: refusals name the block", "[program]") {
   // A thin one (aspect 1000) runs: its width is lowered until the coefficients hold it.
   CHECK(error_of("N5 G01 X30 Y0\nN6 G6.3 X-30 Y0 A30 B0.03 I-30 J0\n").empty());
 }
+
+TEST_CASE("program plan: large arcs keep the width where the targets hold", "[program]") {
+  // A circle of 100 mm and an ellipse of 100 x 60 mm at 0.001 mm: the fixed-point
+  // capacity does not shrink with the size, so the width stays 4 bits above the smallest.
+  for (const std::string text :
+       {"G01 X100 Y0\nG03 X100 Y0 I-100 J0\n", "G01 X100 Y0\nG6.3 X-100 Y0 A100 B60 I-100 J0\n"}) {
+    const ProgramPlan pp = plan_text(text);
+    const Measured m = measure(pp);
+    INFO(text);
+    CHECK(pp.blocks[1].plan.spec.bits == smallest_valid_bits(100000, 100000) + 4);
+    CHECK(m.max_dev[1] <= 0.8);
+    CHECK(m.end[1] == pp.blocks[1].to);
+  }
+}

@@ -40,12 +40,8 @@ double cos_kernel(double r) {
   return s;
 }
 
-}  // namespace
-
-double sin(double x) {
-  if (!std::isfinite(x)) return x - x;  // NaN
-  long long k = 0;
-  const double r = reduce(x, k);
+// sin(k pi/2 + r): the kernel of r in quadrant k (cos(x) = sin(x + pi/2): quadrant k + 1).
+double in_quadrant(double r, long long k) {
   switch (k & 3) {
     case 0:
       return sin_kernel(r);
@@ -58,20 +54,20 @@ double sin(double x) {
   }
 }
 
+}  // namespace
+
+double sin(double x) {
+  if (!std::isfinite(x)) return x - x;  // NaN
+  long long k = 0;
+  const double r = reduce(x, k);
+  return in_quadrant(r, k);
+}
+
 double cos(double x) {
   if (!std::isfinite(x)) return x - x;
   long long k = 0;
   const double r = reduce(x, k);
-  switch (k & 3) {
-    case 0:
-      return cos_kernel(r);
-    case 1:
-      return -sin_kernel(r);
-    case 2:
-      return -cos_kernel(r);
-    default:
-      return sin_kernel(r);
-  }
+  return in_quadrant(r, k + 1);
 }
 
 double tan(double x) { return sin(x) / cos(x); }

@@ -157,9 +157,9 @@ void Reader::exec(std::size_t program, int depth) {
   const auto& lines = *lines_;
   for (std::size_t pc = p.begin; pc < p.end;) {
     const detail::Line& l = lines[pc];
-    if (++executed_ > detail::kMaxExecutedLines) {
+    if (++executed_ > opt_.max_lines) {
       fail(SourcePos{l.number, 1},
-           fmt::format("more than {} lines executed: a loop that does not end?", detail::kMaxExecutedLines));
+           fmt::format("more than {} lines executed: a loop that does not end?", opt_.max_lines));
     }
     switch (l.stmt) {
       case detail::Stmt::Assign:
@@ -205,7 +205,8 @@ void Reader::exec(std::size_t program, int depth) {
         // #30 and #32 (lathe: X as programmed and Z) or #30 and #31 (mill: the plane's
         // first and second axes) hold the current position at each call, in mm.
         const bool lathe = opt_.machine == Machine::Lathe;
-        const double u = double(at_.u) / double(kNmPerMm), v = double(at_.v) / double(kNmPerMm);
+        const double unit = double(kNmPerMm) * (m_.inch ? 25.4 : 1.0);  // the program's unit (G20/G21)
+        const double u = double(at_.u) / unit, v = double(at_.v) / unit;
         macro_.set(30, lathe ? (m_.diameter ? 2 * v : v) : u);
         macro_.set(lathe ? 32 : 31, lathe ? u : v);
         exec(target, depth + 1);
@@ -303,12 +304,14 @@ void Reader::block(const detail::Line& l) {
   if (group[3]) m_.incremental = tenths(*group[3]) == 910;
   if (group[4]) m_.diameter = tenths(*group[4]) == 360;
   if (group[0]) m_.motion = tenths(*group[0]);
+  if (group[6] && m98) fail(*m98, "M98 in a dwell (G04) block: a call stands in its own block");
   if (group[6]) {  // G04: X, U or P is the dwell time, nothing moves
     for (const auto& [c, w] : axes) {
       if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
       prog_.ignored.push_back({w->pos, name(*w)});
     }
   } else if (m98) {  // M98 P (program number) L (repeats, default 1): nothing else moves
+    if (return_) fail(*m98, "M98 and M99 in one block: call or return, not both");
     const auto p = axes.find('P');
     if (p == axes.end()) fail(*m98, "M98 needs P, the number of the program to call");
     Call c;
@@ -494,7 +497,8 @@ void Reader::ellipse(Move& mv, const std::map<char, const Word*>& axes, const So
     const double x = double(ends[i].u - mv.center.u), y = double(ends[i].v - mv.center.v);
     const double xe = c * x + s * y, ye = -s * x + c * y;
     const double rho = std::hypot(xe / A, ye / B);
-    const double off = std::fabs(rho - 1) * std::hypot(x, y) / std::max(rho, 1e-12);
+    // (At the centre itself the distance to the curve is the smaller semi-axis.)
+    const double off = rho < 1e-12 ? std::min(A, B) : std::fabs(rho - 1) * std::hypot(x, y) / rho;
     if (off > double(kEndTolerance)) {
       fail(where, fmt::format("the {} is {:.4f} mm off the ellipse (tolerance {:.3f} mm)", i == 0 ? "start" : "end",
                               off / double(kNmPerMm), length_mm(kEndTolerance)));

@@ -73,6 +73,9 @@ struct Line {
   SourcePos stmt_pos;
 };
 
+// Lines longer than this are refused (RS274 allows 256 characters).
+inline constexpr std::size_t kMaxLineLength = 4096;
+
 // Splits the text into lines and each line into words or a macro statement; throws
 // ProgramError at the first character that does not fit.
 std::vector<Line> parse_lines(std::string_view text, const std::string& file);

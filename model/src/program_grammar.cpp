@@ -40,7 +40,7 @@ struct func_name
               TAO_PEGTL_ISTRING("SQRT"), TAO_PEGTL_ISTRING("ABS"), TAO_PEGTL_ISTRING("INT")> {};
 struct cmp_op : pg::seq<pg::sor<TAO_PEGTL_ISTRING("EQ"), TAO_PEGTL_ISTRING("NE"), TAO_PEGTL_ISTRING("GT"),
                                 TAO_PEGTL_ISTRING("GE"), TAO_PEGTL_ISTRING("LT"), TAO_PEGTL_ISTRING("LE")>,
-                        pg::not_at<pg::alnum>> {};
+                        pg::not_at<pg::alpha>> {};
 struct add_op : pg::one<'+', '-'> {};
 struct mul_op : pg::one<'*', '/'> {};
 
@@ -94,8 +94,9 @@ struct n_word : pg::seq<pg::at<pg::one<'N', 'n'>>, word> {};
 // no action of a line read as words has run when it turns out to be a statement.
 struct statement_start : pg::sor<pg::one<'#'>, kw_while, kw_endw, kw_if, kw_else, kw_endif> {};
 struct n_raw : pg::seq<pg::one<'N', 'n'>, ws, number> {};
+struct lead : pg::star<pg::sor<blank, paren_comment>> {};  // blanks and comments before a statement
 struct statement_line
-    : pg::seq<pg::at<ws, pg::opt<n_raw, ws>, statement_start>, ws, pg::opt<n_word, ws>, statement, tail> {};
+    : pg::seq<pg::at<lead, pg::opt<n_raw, lead>, statement_start>, lead, pg::opt<n_word, lead>, statement, tail> {};
 struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, word>>, tail> {};
 struct line : pg::sor<statement_line, words_line> {};
 
@@ -227,8 +228,11 @@ struct action<expr_number> {
     read_decimal(in, in.string(), m, d);
     Node n;
     n.op = Op::Num;
-    n.value = double(m);
-    for (int i = 0; i < d; ++i) n.value /= 10.0;  // exact for the values a program writes
+    // One division of two exact doubles (m < 10^15 < 2^53, 10^d <= 10^15): the correctly
+    // rounded value of the decimal, as IEEE 754 reads it.
+    double p = 1;
+    for (int i = 0; i < d; ++i) p *= 10;
+    n.value = double(m) / p;
     n.pos = s.at(in);
     s.push(n);
   }
@@ -386,6 +390,7 @@ struct action<kw_endif> : stmt_action<Stmt::EndIf> {};
 
 std::vector<Line> parse_lines(std::string_view text, const std::string& file) {
   std::vector<Line> out;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
   std::size_t start = 0, number = 0;
   while (start <= text.size()) {
     std::size_t end = text.find('\n', start);
@@ -407,6 +412,10 @@ std::vector<Line> parse_lines(std::string_view text, const std::string& file) {
         any = true;
       }
       if (any) l.program = n;
+    } else if (raw.size() > kMaxLineLength) {
+      // (Bounds the grammar's and the evaluator's recursion: brackets and signs nest.)
+      throw ProgramError(file, number, kMaxLineLength + 1,
+                         "a line of more than " + std::to_string(kMaxLineLength) + " characters");
     } else {
       State s;
       s.line = number;

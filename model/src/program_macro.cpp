@@ -84,12 +84,9 @@ double Macro::eval(const Line& l, int node) {
     case Op::Cos:
       r = det::cos(arg(n.a));
       break;
-    case Op::Tan: {
-      const double a = arg(n.a);
-      if (det::cos(a) == 0) fail(n.pos, "TAN of an odd multiple of pi/2");
-      r = det::tan(a);
+    case Op::Tan:  // (near an odd multiple of pi/2 the value overflows: refused below)
+      r = det::tan(arg(n.a));
       break;
-    }
     case Op::Atan:
       r = det::atan(arg(n.a));
       break;
@@ -153,6 +150,14 @@ Structure structure(const std::vector<Line>& lines, const std::string& file) {
     bool content = false;
     for (std::size_t i = begin; i < end; ++i)
       content = content || !lines[i].words.empty() || lines[i].stmt != Stmt::None;
+    if (number >= 0) {
+      for (const ProgramText& p : st.programs) {
+        if (p.number == number) {
+          fail(SourcePos{lines[begin - 1].number, 1},
+               fmt::format("program %{} is defined twice (first at line {})", number, lines[p.begin - 1].number));
+        }
+      }
+    }
     if (content || number >= 0) st.programs.push_back(ProgramText{number, begin, end, content});
   };
   for (std::size_t i = 0; i < lines.size(); ++i) {

@@ -15,9 +15,8 @@ namespace dda::program::detail {
 // Variables #0 to #kMaxVariable; a value beyond kMaxValue is an error (overflow).
 inline constexpr std::int64_t kMaxVariable = 999;
 inline constexpr double kMaxValue = 1e15;
-// Execution limits: lines executed in all (a loop that does not end) and subprogram
-// calls nested (recursion).
-inline constexpr std::uint64_t kMaxExecutedLines = 10000000;
+// Execution limit: subprogram calls nested (recursion); the lines executed in all are
+// ReadOptions::max_lines.
 inline constexpr int kMaxCallDepth = 8;
 
 // A value as the shortest decimal of at most 6 places ("0.25", "-3", "12.5").

@@ -55,12 +55,14 @@ ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point
   // The ends may lie off the curve by the reader's tolerance plus the rounding to the
   // lattice (at most half a step on each axis) and one step of margin.
   s.tolerance = 1.0 + double(kEndTolerance) / double(step);
-  // The width: the default (4 bits above the smallest valid), fewer if the fixed-point
-  // coefficients' rounding could move a thin ellipse's curve by more than
-  // kMaxCoefficientDrift (planner.hpp); a program cannot choose it.
+  // The width: 4 bits above the smallest valid (where the targets were measured; the
+  // fixed-point capacity is 2^kRotCapBits whatever the size, so the exact datapath's
+  // capacity limit of default_bits() does not apply), fewer if the coefficients'
+  // rounding could move a thin ellipse's curve by more than kMaxCoefficientDrift
+  // (planner.hpp); a program cannot choose it.
   const double mx = std::max(a_steps(s), b_steps(s)), mn = std::min(a_steps(s), b_steps(s));
   const int nmin = smallest_valid_bits(steps_ceil(s, s.a), steps_ceil(s, s.b));
-  s.bits = default_bits(steps_ceil(s, s.a), steps_ceil(s, s.b));
+  s.bits = std::min(nmin + 4, kRotCapBits);
   const auto drift = [&](int n) { return std::ldexp(mx * mx / mn, n - kRotCapBits); };
   while (s.bits > nmin && drift(s.bits) > kMaxCoefficientDrift) --s.bits;
   if (drift(s.bits) > kMaxCoefficientDrift) {

@@ -89,6 +89,9 @@ struct Program {
 struct ReadOptions {
   Machine machine = Machine::Mill;
   std::optional<Point2> start;  // default (0, 0)
+  // Macro programs: lines executed in all before the run is refused as a loop that does
+  // not end (docs/programs.md, "Macros").
+  std::uint64_t max_lines = 10000000;
 };
 
 // Reads a program's text; `file` names it in error messages.
