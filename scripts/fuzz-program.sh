@@ -14,6 +14,7 @@ out=${DDA_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 cp "$root"/tests/fuzz/corpus/* "$out/corpus/"
 srcs=("$root/model/src/program.cpp" "$root/model/src/program_grammar.cpp" "$root/model/src/program_macro.cpp"
+  "$root/model/src/program_names.cpp"
   "$root/model/src/det_math.cpp" "$root/model/src/fixed_trig.cpp")
 flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off -I"$root/model/include" -I"$root/model/src")
 san=-fsanitize=address,undefined
