@@ -180,6 +180,21 @@ void write_program_stats(std::ostream& os, const ProgramPlan& pp, const std::vec
   const auto ends_ok = [&](std::size_t k) { return st[k].end == pp.blocks[k].to; };
   bool all_ok = true;
   for (std::size_t k = 0; k < st.size(); ++k) all_ok = all_ok && ends_ok(k);
+  // Each block's target (docs/programs.md, "Accuracy"); none with zero preload.
+  std::vector<double> target(st.size());
+  std::size_t over = 0;
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    target[k] =
+        program::block_target(pp.blocks[k], k ? pp.blocks[k - 1].rounding : pp.start_rounding, pp.lattice.preload);
+    over += st[k].max_dev > target[k];
+  }
+  const bool targeted = pp.lattice.preload == Preload::Half;
+  const auto within = [&](std::size_t k) {
+    return !targeted ? std::string("-") : st[k].max_dev <= target[k] ? std::string("yes") : std::string("NO");
+  };
+  const std::string verdict = !targeted   ? "not targeted (zero preload: reported only)"
+                              : over == 0 ? "every block within its target"
+                                          : fmt::format("{} block{} over the target", over, over == 1 ? "" : "s");
   if (fmt == BlockStatsFormat::Json) {
     nlohmann::ordered_json j;
     j["step_mm"] = mm(pp.lattice.step);
@@ -201,6 +216,10 @@ void write_program_stats(std::ostream& os, const ProgramPlan& pp, const std::vec
       r["max_dev"] = st[k].max_dev;
       r["mean_dev"] = st[k].points ? st[k].sum_dev / double(st[k].points) : 0.0;
       r["on_end"] = ends_ok(k);
+      if (targeted) {
+        r["target"] = target[k];
+        r["within_target"] = st[k].max_dev <= target[k];
+      }
       rows.push_back(std::move(r));
     }
     nlohmann::ordered_json t;
@@ -212,42 +231,51 @@ void write_program_stats(std::ostream& os, const ProgramPlan& pp, const std::vec
     t["mean_dev"] = points ? dev_sum / double(points) : 0.0;
     t["max_rounding"] = round_worst;
     t["on_ends"] = all_ok;
+    if (targeted) t["over_target"] = over;
     j["totals"] = std::move(t);
     os << j.dump(1) << '\n';
     return;
   }
   if (fmt == BlockStatsFormat::Csv) {
-    os << "line,block,kind,end_u_mm,end_v_mm,end_x,end_y,rounding,commands,steps,iterations,max_dev,mean_dev,on_end\n";
+    os << "line,block,kind,end_u_mm,end_v_mm,end_x,end_y,rounding,commands,steps,iterations,max_dev,mean_dev,on_end,"
+          "target,within_target\n";
     for (std::size_t k = 0; k < st.size(); ++k) {
       const BlockPlan& b = pp.blocks[k];
-      fmt::print(os, "{},{},{},{},{},{},{},{:.6f},{},{},{},{:.6f},{:.6f},{}\n", b.move.pos.line, block_no(b),
+      fmt::print(os, "{},{},{},{},{},{},{},{:.6f},{},{},{},{:.6f},{:.6f},{},{},{}\n", b.move.pos.line, block_no(b),
                  program::kind_name(b.move.kind), mm(b.move.to.u), mm(b.move.to.v), b.to.x, b.to.y, b.rounding,
                  b.plan.pieces.size(), st[k].steps, st[k].iterations, st[k].max_dev,
-                 st[k].points ? st[k].sum_dev / double(st[k].points) : 0.0, ends_ok(k) ? "yes" : "no");
+                 st[k].points ? st[k].sum_dev / double(st[k].points) : 0.0, ends_ok(k) ? "yes" : "no",
+                 targeted ? fmt::format("{:.6f}", target[k]) : "-", within(k) == "NO" ? "no" : within(k));
     }
     return;
   }
   fmt::print(os, "step {} mm, preload {}, start ({},{}); deviation: steps from the programmed geometry\n",
              mm(pp.lattice.step), to_string(pp.lattice.preload), pp.start.x, pp.start.y);
-  fmt::print(os, "| {:>5} | {:>6} | {:<11} | {:>21} | {:>17} | {:>8} | {:>4} | {:>7} | {:>9} | {:>7} | {:>3} |\n",
+  fmt::print(os,
+             "| {:>5} | {:>6} | {:<11} | {:>21} | {:>17} | {:>8} | {:>4} | {:>7} | {:>9} | {:>7} | {:>6} | {:>3} | "
+             "{:>3} |\n",
              "line", "block", "kind", "end (mm)", "end (steps)", "rounding", "cmds", "steps", "iters", "max dev",
-             "end");
+             "target", "ok", "end");
   fmt::print(os,
              "|-------|--------|-------------|-----------------------|-------------------|----------|------|---------|"
-             "-----------|---------|-----|\n");
+             "-----------|---------|--------|-----|-----|\n");
   for (std::size_t k = 0; k < st.size(); ++k) {
     const BlockPlan& b = pp.blocks[k];
-    fmt::print(os,
-               "| {:>5} | {:>6} | {:<11} | {:>21} | {:>17} | {:>8.3f} | {:>4} | {:>7} | {:>9} | {:>7.3f} | {:>3} |\n",
-               b.move.pos.line, block_no(b), program::kind_name(b.move.kind),
-               fmt::format("{},{}", mm(b.move.to.u), mm(b.move.to.v)), fmt::format("{},{}", b.to.x, b.to.y), b.rounding,
-               b.plan.pieces.size(), st[k].steps, st[k].iterations, st[k].max_dev, ends_ok(k) ? "yes" : "NO");
+    fmt::print(
+        os,
+        "| {:>5} | {:>6} | {:<11} | {:>21} | {:>17} | {:>8.3f} | {:>4} | {:>7} | {:>9} | {:>7.3f} | {:>6} | {:>3} | "
+        "{:>3} |\n",
+        b.move.pos.line, block_no(b), program::kind_name(b.move.kind),
+        fmt::format("{},{}", mm(b.move.to.u), mm(b.move.to.v)), fmt::format("{},{}", b.to.x, b.to.y), b.rounding,
+        b.plan.pieces.size(), st[k].steps, st[k].iterations, st[k].max_dev,
+        targeted ? fmt::format("{:.3f}", target[k]) : "-", within(k), ends_ok(k) ? "yes" : "NO");
   }
   fmt::print(os, "blocks: {}\ncommands: {}\nsteps: {}\niterations: {}\n", st.size(), pp.plan.pieces.size(), steps,
              it_sum);
   fmt::print(os, "max_dev: {:.6f} (line {})\nmean_dev: {:.6f}\nmax_rounding: {:.6f}\nends: {}\n", worst,
              st.empty() ? 0 : pp.blocks[worst_block].move.pos.line, points ? dev_sum / double(points) : 0.0,
              round_worst, all_ok ? "every block on its rounded end" : "NOT every block on its rounded end");
+  fmt::print(os, "targets: {}\n", verdict);
 }
 
 void write_program_svg(std::ostream& os, const ProgramPlan& pp, const std::vector<Iteration>& iters,

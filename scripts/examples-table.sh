@@ -9,8 +9,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dda=${DDA_BUILD_DIR:-$root/build}/bin/dda
-table="| program | machine | blocks | commands | steps | iterations | worst: lines (target 0.5) | arcs (0.8) | ellipses (0.8 / 1.0) | largest end rounding | every block on its rounded end |
-|---|---|---|---|---|---|---|---|---|---|---|"
+table="| program | machine | blocks | commands | steps | iterations | worst: lines (target 0.5) | arcs (0.8) | ellipses (0.8 / 1.0) | largest end rounding | every block on its rounded end | every block within its target (plus its ends' rounding) |
+|---|---|---|---|---|---|---|---|---|---|---|---|"
 for prog in "$root"/examples/*.ngc; do
   run=$(grep -m1 "^; Run:" "$prog") || { echo "examples-table: $prog has no '; Run:' line" >&2; exit 1; }
   opts=(--program "$prog")
@@ -23,10 +23,11 @@ for prog in "$root"/examples/*.ngc; do
       kind = $3 ~ /^(line|rapid)$/ ? "l" : $3 ~ /^arc/ ? "a" : "e"
       if (!(kind in worst) || $12 > worst[kind]) worst[kind] = $12
       if ($8 > rounding) rounding = $8
-      if ($14 != "yes") off++ }
+      if ($14 != "yes") off++
+      if ($16 != "yes") over++ }
     function w(k) { return (k in worst) ? sprintf("%.3f", worst[k]) : "-" }
-    END { printf "| `%s` | %s | %d | %d | %d | %d | %s | %s | %s | %.3f | %s |\n", name, machine, blocks, cmds, steps,
-          iters, w("l"), w("a"), w("e"), rounding, off ? "no" : "yes" }')
+    END { printf "| `%s` | %s | %d | %d | %d | %d | %s | %s | %s | %.3f | %s | %s |\n", name, machine, blocks, cmds,
+          steps, iters, w("l"), w("a"), w("e"), rounding, off ? "no" : "yes", over ? over " over" : "yes" }')
   table+=$'\n'"$row"
 done
 if [ "${1:-}" = "--write" ]; then

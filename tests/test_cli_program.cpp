@@ -137,10 +137,15 @@ TEST_CASE("cli program: standard input, a lathe in diameters, the block table", 
   CHECK(file.out == in.out);
   // One row per block: line, block, kind, end (u, v) = (Z, X radius) in mm and steps.
   CHECK(file.out.rfind("line,block,kind,end_u_mm,end_v_mm,end_x,end_y,rounding,commands,steps,iterations,max_dev,"
-                       "mean_dev,on_end\n1,N1,rapid,0,10,0,10000,0.000000,1,10000,10000,",
+                       "mean_dev,on_end,target,within_target\n1,N1,rapid,0,10,0,10000,0.000000,1,10000,10000,",
                        0) == 0);
   CHECK(file.out.find("\n2,N2,line,-5,15,-5000,15000,") != std::string::npos);
   CHECK(file.out.find("\n3,N3,arc cw,-15,20,-15000,20000,") != std::string::npos);
+  CHECK(file.out.find(",yes,") != std::string::npos);
+  const Result text = run_dda(s, "stats --machine lathe --program " + prog.string());
+  CHECK(text.out.find("\ntargets: every block within its target\n") != std::string::npos);
+  const Result zero = run_dda(s, "stats --machine lathe --preload zero --program " + prog.string());
+  CHECK(zero.out.find("\ntargets: not targeted (zero preload: reported only)\n") != std::string::npos);
   // An error in a program from standard input names <stdin>.
   write_file(prog, "G01 X1\nG01 E5\n");
   const Result bad = run_dda(s, "path --program - < " + prog.string());

@@ -22,17 +22,6 @@ using namespace dda::program;
 
 namespace {
 
-// The accuracy targets of docs/results.md (half preload): lines 0.5 step, circles and
-// axis-aligned ellipses up to aspect ratio 4 0.8, other ellipses 1.0; a block whose ends
-// were rounded to the lattice may be off by that rounding more (docs/programs.md).
-double target(const BlockPlan& b) {
-  const Move& m = b.move;
-  if (m.kind == MoveKind::Line || m.kind == MoveKind::Rapid) return 0.5;
-  if (m.kind == MoveKind::ArcCw || m.kind == MoveKind::ArcCcw) return 0.8;
-  const bool aligned = m.q_millideg % 90000 == 0;
-  return aligned && std::max(m.a, m.b) <= 4 * std::min(m.a, m.b) ? 0.8 : 1.0;
-}
-
 struct Measured {
   std::vector<double> max_dev;
   std::vector<Point> end;
@@ -151,7 +140,7 @@ TEST_CASE("program plan: the examples run to their rounded ends within the targe
       INFO("block at line " << b.move.pos.line);
       CHECK(b.from == at);      // continuous: each block starts where the last ended
       CHECK(m.end[k] == b.to);  // and ends on its rounded end
-      CHECK(m.max_dev[k] <= target(b) + std::max(prev_rounding, b.rounding) + 1e-9);
+      CHECK(m.max_dev[k] <= block_target(b, prev_rounding, Preload::Half) + 1e-9);
       at = b.to;
       prev_rounding = b.rounding;
     }
@@ -215,4 +204,17 @@ TEST_CASE("program plan: large arcs keep the width where the targets hold", "[pr
     CHECK(m.max_dev[1] <= 0.8);
     CHECK(m.end[1] == pp.blocks[1].to);
   }
+}
+
+TEST_CASE("program plan: the block targets", "[program]") {
+  const ProgramPlan pp = plan_text(
+      "G01 X1 Y0.0005\nG02 X0 Y-1 I-1 J0\nG6.3 X-3 Y0 A3 B1 I0 J1\nG6.3 X3 Y0 A3 B0.5 I3 J0\nG6.2 X-3 Y0 A3 B2 Q1000 "
+      "I-3 J0\n");
+  REQUIRE(pp.blocks.size() == 5);
+  CHECK(block_target(pp.blocks[0], 0, Preload::Half) == Approx(1.0));    // 0.5 + its end's rounding 0.5
+  CHECK(block_target(pp.blocks[1], 0.5, Preload::Half) == Approx(1.3));  // an arc, after that end
+  CHECK(block_target(pp.blocks[2], 0, Preload::Half) == Approx(0.8));    // aspect 3, axis-aligned
+  CHECK(block_target(pp.blocks[3], 0, Preload::Half) == Approx(1.0));    // aspect 6
+  CHECK(block_target(pp.blocks[4], 0, Preload::Half) == Approx(1.0));    // turned by 1 degree
+  CHECK(std::isinf(block_target(pp.blocks[2], 0, Preload::Zero)));
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "dda/fixed_trig.hpp"
@@ -126,6 +127,8 @@ ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const s
   pp.lattice = opt;
   const Length step = opt.step;
   pp.start = Point{to_steps(prog.start.u, step), to_steps(prog.start.v, step)};
+  pp.start_rounding = std::hypot(double(pp.start.x) - double(prog.start.u) / double(step),
+                                 double(pp.start.y) - double(prog.start.v) / double(step));
   Point at = pp.start;
   for (const Move& mv : prog.moves) {
     BlockPlan b;
@@ -193,6 +196,20 @@ double block_distance(const BlockPlan& b, Length step, double x, double y) {
   if (is_arc(mv.kind)) return std::fabs(std::hypot(rx, ry) - double(mv.radius) / s);
   const auto [u, v] = to_frame(normalize_udeg(mv.q_millideg * 1000), rx, ry);
   return ellipse_distance(double(mv.a) / s, double(mv.b) / s, u, v);
+}
+
+double block_target(const BlockPlan& b, double from_rounding, Preload preload) {
+  if (preload != Preload::Half) return std::numeric_limits<double>::infinity();
+  const Move& m = b.move;
+  double t = 1.0;
+  if (m.kind == MoveKind::Line || m.kind == MoveKind::Rapid) {
+    t = 0.5;
+  } else if (is_arc(m.kind)) {
+    t = 0.8;
+  } else if (m.q_millideg % 90000 == 0 && std::max(m.a, m.b) <= 4 * std::min(m.a, m.b)) {
+    t = 0.8;
+  }
+  return t + std::max(from_rounding, b.rounding);
 }
 
 std::size_t block_of_piece(const ProgramPlan& pp, std::size_t piece) {

@@ -40,6 +40,7 @@ struct BlockPlan {
 struct ProgramPlan {
   LatticeOptions lattice;
   Point start;                    // the tool's start on the lattice
+  double start_rounding = 0;      // steps between the programmed start and `start`
   std::vector<BlockPlan> blocks;  // one per motion block, in program order
   Plan plan;                      // every block's pieces, back to back: what the engines run
 };
@@ -57,6 +58,13 @@ void check_hardware(const ProgramPlan& pp, const std::string& file);
 // programmed geometry: the segment between its programmed ends, its circle or its
 // ellipse (as programmed, before any rounding).
 double block_distance(const BlockPlan& b, Length step, double x, double y);
+
+// A block's accuracy target (steps) against its programmed geometry, with half preload:
+// the targets of docs/results.md (lines 0.5, circles and axis-aligned ellipses up to
+// aspect ratio 4 0.8, other ellipses 1.0) plus the larger rounding of its two ends
+// (`from_rounding`: the previous block's); infinity with zero preload (reported, not
+// targeted).
+double block_target(const BlockPlan& b, double from_rounding, Preload preload);
 
 // Which block a piece of ProgramPlan::plan belongs to.
 std::size_t block_of_piece(const ProgramPlan& pp, std::size_t piece);
