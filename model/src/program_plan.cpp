@@ -76,17 +76,16 @@ ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point
   return s;
 }
 
-// The parametric sweep (radians, in [0, 2 pi)) of a block from its start to its end in
-// its direction, on its programmed geometry.
-double sweep(const Move& mv) {
-  const double a0 = std::atan2(double(mv.from.v - mv.center.v), double(mv.from.u - mv.center.u));
-  const double a1 = std::atan2(double(mv.to.v - mv.center.v), double(mv.to.u - mv.center.u));
+// Whether a block turns half a turn or more about its centre from its start to its end,
+// in its direction: exactly, from the sign of the cross product of the two radii (an
+// ellipse's parametric sweep passes half a turn where its polar one does).
+bool half_turn_or_more(const Move& mv) {
+  const __int128 ax = mv.from.u - mv.center.u, ay = mv.from.v - mv.center.v;
+  const __int128 bx = mv.to.u - mv.center.u, by = mv.to.v - mv.center.v;
+  const __int128 cross = ax * by - ay * bx, dot = ax * bx + ay * by;
   const bool cw = mv.kind == MoveKind::ArcCw || mv.kind == MoveKind::EllipseCw;
-  double d = cw ? a0 - a1 : a1 - a0;
-  constexpr double kTurn = 6.283185307179586;
-  while (d < 0) d += kTurn;
-  while (d >= kTurn) d -= kTurn;
-  return d;
+  const __int128 turn = cw ? -cross : cross;  // > 0: less than half a turn ahead
+  return turn < 0 || (turn == 0 && dot < 0);
 }
 
 }  // namespace
@@ -141,7 +140,7 @@ ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const s
     try {
       if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
         if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt.preload);
-      } else if (b.from != b.to || mv.full || sweep(mv) >= 3.141592653589793) {
+      } else if (b.from != b.to || mv.full || half_turn_or_more(mv)) {
         // (A block whose rounded ends coincide and that sweeps less than half a turn is
         // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
         b.plan = plan_arc(arc_spec(mv, step, opt.preload, b.from, b.to));
