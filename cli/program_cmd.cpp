@@ -29,27 +29,13 @@ namespace {
 
 // "X,Y" in millimetres (decimal, up to 6 decimals) to nanometres.
 std::pair<Length, Length> parse_mm_pair(const std::string& name, const std::string& s) {
-  const auto bad = [&] {
-    return InputError(name + " = '" + s + "' is invalid: give X,Y in millimetres (e.g. 10,-2.5)");
-  };
-  const auto one = [&](std::string t) {
-    const bool neg = !t.empty() && t[0] == '-';
-    if (!t.empty() && (t[0] == '-' || t[0] == '+')) t = t.substr(1);
-    const auto dot = t.find('.');
-    const std::string whole = t.substr(0, dot), frac = dot == std::string::npos ? "" : t.substr(dot + 1);
-    const auto digits = [](const std::string& d) { return d.find_first_not_of("0123456789") == std::string::npos; };
-    if ((whole.empty() && frac.empty()) || !digits(whole) || !digits(frac)) throw bad();
-    if (whole.size() > 7 || frac.size() > 6) {
-      throw InputError(name + " = '" + s + "' is invalid: at most 1000000 mm and 6 decimals");
-    }
-    Length f = frac.empty() ? 0 : std::stoll(frac);
-    for (std::size_t d = frac.size(); d < 6; ++d) f *= 10;
-    const Length v = (whole.empty() ? 0 : std::stoll(whole)) * program::kNmPerMm + f;
-    return neg ? -v : v;
-  };
   const auto comma = s.find(',');
-  if (comma == std::string::npos) throw bad();
-  return {one(s.substr(0, comma)), one(s.substr(comma + 1))};
+  const std::optional<Length> p = comma == std::string::npos ? std::nullopt : program::parse_mm(s.substr(0, comma));
+  const std::optional<Length> q = comma == std::string::npos ? std::nullopt : program::parse_mm(s.substr(comma + 1));
+  if (!p || !q) {
+    throw InputError(name + " = '" + s + "' is invalid: give X,Y in millimetres (e.g. 10,-2.5; up to 6 decimals)");
+  }
+  return {*p, *q};
 }
 
 std::string mm(Length v) {
@@ -141,7 +127,7 @@ ProgramPlan load_program(const ProgramCli& o, Preload preload, bool hardware) {
   }
   if (!o.start.empty()) {
     const auto [p, q] = parse_mm_pair("start", o.start);
-    ro.start = ro.machine == program::Machine::Lathe ? program::Point2{q, p / 2} : program::Point2{p, q};
+    ro.start = program::start_point(ro.machine, p, q);
   }
   program::LatticeOptions lo;
   lo.step = program::parse_step(o.step);

@@ -12,11 +12,10 @@ dda=${DDA_BUILD_DIR:-$root/build}/bin/dda
 table="| program | machine | blocks | commands | steps | iterations | worst: lines (target 0.5) | arcs (0.8) | ellipses (0.8 / 1.0) | largest end rounding | every block on its rounded end | every block within its target (plus its ends' rounding) |
 |---|---|---|---|---|---|---|---|---|---|---|---|"
 for prog in "$root"/examples/*.ngc; do
-  run=$(grep -m1 "^; Run:" "$prog") || { echo "examples-table: $prog has no '; Run:' line" >&2; exit 1; }
-  opts=(--program "$prog")
+  mapfile -t opts < <("$root/scripts/example-options.sh" "$prog")
+  [ "${#opts[@]}" -ge 2 ] || { echo "examples-table: no options for $prog" >&2; exit 1; }
   machine=mill
-  if [[ $run == *"--machine lathe"* ]]; then opts+=(--machine lathe); machine=lathe; fi
-  if [[ $run =~ --start\ ([-0-9.,]+) ]]; then opts+=(--start "${BASH_REMATCH[1]}"); fi
+  [[ " ${opts[*]} " == *" --machine lathe "* ]] && machine=lathe
   row=$("$dda" stats "${opts[@]}" --format csv | awk -F, -v name="$(basename "$prog")" -v machine="$machine" '
     NR == 1 { next }
     { blocks++; cmds += $9; steps += $10; iters += $11

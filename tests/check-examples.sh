@@ -16,11 +16,8 @@ TRACE_MAX_ITERATIONS=1200000
 n=0
 for prog in "$dir"/*.ngc; do
   name=$(basename "$prog" .ngc)
-  run=$(grep -m1 '^; Run:' "$prog" || true)
-  [ -n "$run" ] || { echo "examples: $prog has no '; Run:' line" >&2; exit 1; }
-  opts=(--program "$prog")
-  [[ $run == *"--machine lathe"* ]] && opts+=(--machine lathe)
-  if [[ $run =~ --start\ ([-0-9.,]+) ]]; then opts+=(--start "${BASH_REMATCH[1]}"); fi
+  mapfile -t opts < <("$(dirname "$0")/../scripts/example-options.sh" "$prog")
+  [ "${#opts[@]}" -ge 2 ] || { echo "examples: no options for $prog" >&2; exit 1; }
   iters=$("$dda" stats "${opts[@]}" --format json | sed -n 's/^  "iterations": \([0-9]*\),$/\1/p' | tail -1)
   [ -n "$iters" ] || { echo "examples: no iteration count for $name" >&2; exit 1; }
   cmds=(stats path)

@@ -127,8 +127,16 @@ TEST_CASE("program plan: the examples run to their rounded ends within the targe
     text << in.rdbuf();
     const std::string src = text.str();
     ReadOptions ro;
-    if (src.find("--machine lathe") != std::string::npos) ro.machine = Machine::Lathe;
-    if (src.find("--start 60,5") != std::string::npos) ro.start = Point2{5 * kNmPerMm, 30 * kNmPerMm};
+    if (src.find("--machine lathe") != std::string::npos) ro.machine = Machine::Lathe;  // (before the start)
+    // The machine and start of its "; Run:" line, read as the dda command reads them.
+    const std::string run = src.substr(src.find("; Run:"), src.find('\n', src.find("; Run:")) - src.find("; Run:"));
+    if (const auto at = run.find("--start "); at != std::string::npos) {
+      const std::string xy = run.substr(at + 8, run.find(' ', at + 8) - (at + 8));
+      const auto first = parse_mm(xy.substr(0, xy.find(','))), second = parse_mm(xy.substr(xy.find(',') + 1));
+      REQUIRE(first);
+      REQUIRE(second);
+      ro.start = start_point(ro.machine, *first, *second);
+    }
     const ProgramPlan pp = plan_program(read(src, entry.path().string(), ro), LatticeOptions{}, "x");
     check_hardware(pp, "x");  // every example fits the hardware's widths
     const Measured m = measure(pp);
@@ -171,6 +179,13 @@ TEST_CASE("program plan: moves shorter than a step, full turns and the rounding 
   CHECK_THROWS_AS(parse_step("2"), InputError);
   CHECK_THROWS_AS(parse_step("0"), InputError);
   CHECK_THROWS_AS(parse_step("1e-3"), InputError);
+  CHECK(parse_mm("-2.5") == -2500000);
+  CHECK(parse_mm("+10") == 10 * kNmPerMm);
+  CHECK_FALSE(parse_mm("1.2.3"));
+  CHECK_FALSE(parse_mm("-"));
+  CHECK_FALSE(parse_mm("12345678"));
+  CHECK(start_point(Machine::Lathe, 60 * kNmPerMm, 5 * kNmPerMm) == Point2{5 * kNmPerMm, 30 * kNmPerMm});
+  CHECK(start_point(Machine::Mill, 60 * kNmPerMm, 5 * kNmPerMm) == Point2{60 * kNmPerMm, 5 * kNmPerMm});
   const ProgramPlan coarse = plan_text("G01 X1 Y0.5\n", Machine::Mill, 10000);  // 0.01 mm
   CHECK(coarse.blocks[0].to == Point{100, 50});
 }

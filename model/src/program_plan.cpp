@@ -9,6 +9,7 @@
 #include <limits>
 #include <utility>
 
+#include "dda/accuracy.hpp"
 #include "dda/fixed_trig.hpp"
 #include "dda/geometry.hpp"
 #include "dda/hw_command.hpp"
@@ -90,32 +91,32 @@ bool half_turn_or_more(const Move& mv) {
 
 }  // namespace
 
+std::optional<Length> parse_mm(const std::string& text) {
+  std::string t = text;
+  const bool neg = !t.empty() && t[0] == '-';
+  if (!t.empty() && (t[0] == '-' || t[0] == '+')) t = t.substr(1);
+  const auto dot = t.find('.');
+  const std::string whole = t.substr(0, dot), frac = dot == std::string::npos ? "" : t.substr(dot + 1);
+  const auto digits = [](const std::string& d) { return d.find_first_not_of("0123456789") == std::string::npos; };
+  if ((whole.empty() && frac.empty()) || !digits(whole) || !digits(frac) || whole.size() > 7 || frac.size() > 6) {
+    return std::nullopt;
+  }
+  Length f = frac.empty() ? 0 : std::stoll(frac);
+  for (std::size_t d = frac.size(); d < 6; ++d) f *= 10;
+  const Length v = (whole.empty() ? 0 : std::stoll(whole)) * kNmPerMm + f;
+  return neg ? -v : v;
+}
+
 Length parse_step(const std::string& mm) {
-  // Decimal millimetres with at most 6 decimals, exactly.
-  std::size_t i = 0;
-  std::int64_t whole = 0, frac = 0;
-  int decimals = 0;
-  bool digits = false;
-  while (i < mm.size() && mm[i] >= '0' && mm[i] <= '9' && whole < kNmPerMm)
-    whole = whole * 10 + (mm[i++] - '0'), digits = true;
-  if (i < mm.size() && mm[i] == '.') {
-    ++i;
-    while (i < mm.size() && mm[i] >= '0' && mm[i] <= '9') {
-      if (decimals == 6 && mm[i] != '0') decimals = 7;  // finer than a nanometre
-      if (decimals < 6) frac = frac * 10 + (mm[i] - '0'), ++decimals;
-      ++i;
-      digits = true;
-    }
-  }
-  std::int64_t nm = whole * kNmPerMm;
-  if (decimals <= 6) {
-    for (int d = decimals; d < 6; ++d) frac *= 10;
-    nm += frac;
-  }
-  if (!digits || i != mm.size() || decimals > 6 || nm < 1 || nm > kNmPerMm) {
+  const std::optional<Length> nm = parse_mm(mm);
+  if (!nm || *nm < 1 || *nm > kNmPerMm) {
     throw InputError("step = " + mm + " is invalid: the lattice unit is in millimetres, from 0.000001 (1 nm) to 1");
   }
-  return nm;
+  return *nm;
+}
+
+Point2 start_point(Machine m, Length first, Length second) {
+  return m == Machine::Lathe ? Point2{second, first / 2} : Point2{first, second};
 }
 
 std::int64_t to_steps(Length v, Length step) { return round_div(v, step); }
@@ -200,13 +201,12 @@ double block_distance(const BlockPlan& b, Length step, double x, double y) {
 double block_target(const BlockPlan& b, double from_rounding, Preload preload) {
   if (preload != Preload::Half) return std::numeric_limits<double>::infinity();
   const Move& m = b.move;
-  double t = 1.0;
+  double t = kTargetOther;
   if (m.kind == MoveKind::Line || m.kind == MoveKind::Rapid) {
-    t = 0.5;
-  } else if (is_arc(m.kind)) {
-    t = 0.8;
-  } else if (m.q_millideg % 90000 == 0 && std::max(m.a, m.b) <= 4 * std::min(m.a, m.b)) {
-    t = 0.8;
+    t = kTargetLine;
+  } else if (is_arc(m.kind) ||
+             (m.q_millideg % 90000 == 0 && double(std::max(m.a, m.b)) <= kTargetAspect * double(std::min(m.a, m.b)))) {
+    t = kTargetAligned;
   }
   return t + std::max(from_rounding, b.rounding);
 }

@@ -60,7 +60,7 @@ Measure measure(const std::string& file, const std::string& name) {
   text << in.rdbuf();
   ReadOptions ro;
   ro.machine = Machine::Lathe;
-  ro.start = Point2{5 * kNmPerMm, 30 * kNmPerMm};  // X60 Z5, as the examples' Run line
+  ro.start = start_point(Machine::Lathe, 60 * kNmPerMm, 5 * kNmPerMm);  // X60 Z5, as the examples' Run line
   const ProgramPlan pp = plan_program(read(text.str(), file, ro), LatticeOptions{}, file);
   Measure m;
   m.name = name;

@@ -11,6 +11,7 @@
 //          program_sweep --merge FILE...   (sum the shards' JSON, print the Markdown table)
 // scripts/program-sweep.sh runs it in shards with GNU parallel and writes the table into
 // docs/results.md. Every case draws from its own (seed, index) stream.
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "dda/accuracy.hpp"
 #include "dda/golden.hpp"
 #include "dda_random.hpp"
 
@@ -129,9 +131,10 @@ void print_table(const Row (&half)[kNumClasses], const Row (&zero)[kNumClasses])
           "| %s | %s | %ld | %ld | %ld / %ld | %ld of %ld | %.3f | %s | %.3f | %s | `%s` |\n", kClasses[c],
           z ? "zero" : "half", r.cases, r.refused, r.full_point, r.full_angle, r.exact_ends, r.cases, r.worst,
           z ? "(reported)"
-            : (c == 0   ? "0.5"
-               : c == 1 ? "0.8"
-                        : "1.0"),
+            : fmt::format("{:.1f}", c == 0   ? kTargetLine
+                                    : c == 1 ? kTargetAligned
+                                             : kTargetOther)
+                  .c_str(),
           mean,
           c == 0 ? "-" : (std::to_string(r.line_steps) + " (" + std::to_string(share).substr(0, 5) + "%)").c_str(),
           r.worst_case.c_str());

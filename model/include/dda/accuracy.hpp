@@ -22,4 +22,12 @@ double deviation_bound(const Plan& plan);
 // from the nominal one.
 double start_offset(const Plan& plan);
 
+// The accuracy targets (docs/results.md; half preload, default width), in steps: a
+// line's points from the line between its ends; an axis-aligned ellipse's (a circle's)
+// up to aspect ratio kTargetAspect; any other ellipse's.
+inline constexpr double kTargetLine = 0.5;
+inline constexpr double kTargetAligned = 0.8;
+inline constexpr double kTargetOther = 1.0;
+inline constexpr double kTargetAspect = 4.0;
+
 }  // namespace dda

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,16 @@ struct LatticeOptions {
   Preload preload = Preload::Half;
 };
 
+// Decimal millimetres as a user writes them on the command line ("-2.5", ".0005", "10":
+// an optional sign, at most 7 whole digits and 6 decimals) to nanometres, exactly;
+// nullopt for any other text.
+std::optional<Length> parse_mm(const std::string& text);
 // The lattice unit from its text in millimetres ("0.001"): a whole number of nanometres
 // from 1 nm to 1 mm, else InputError naming the rule.
 Length parse_step(const std::string& mm);
+// The tool's start as a user gives it (mill X,Y; lathe X,Z with X a diameter, halved as
+// the reader halves diameters) as a point of the plane.
+Point2 start_point(Machine m, Length first, Length second);
 
 // A length in lattice steps, rounded to the nearest (halves away from zero), and in
 // sub-step units (1/2^kSubBits step).
