@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -27,11 +29,15 @@
 #include "dda/hw_params.hpp"
 #include "dda/motion_map.hpp"
 #include "dda/motion_model.hpp"
+#include "dda/pipeline.hpp"
+#include "dda/program.hpp"
+#include "dda/program_report.hpp"
 #include "dda/report.hpp"
 #include "engines.hpp"
 #include "feed_report.hpp"
 #include "output.hpp"
 #include "program_cmd.hpp"
+#include "temp_files.hpp"
 #include "vectors.hpp"
 
 namespace dda::cli {
@@ -193,12 +199,23 @@ E parse_enum(const std::string& name, const std::string& v, const std::map<std::
   throw InputError(name + " = '" + v + "' is invalid: use one of " + allowed);
 }
 
-// Plans the arc, runs it on the chosen engine and writes the output (and the waveform)
-// only once everything succeeded.
-template <typename Writer>
-void run_arc_command(const ArcOptions& o, Writer write) {
-  const EngineFn fn = find_engine(o.engine);
-  if (!fn) throw InputError("engine = '" + o.engine + "' is invalid: use one of " + engine_names());
+// What a command makes of its run: a report over the stream, for one arc or line
+// (`plan`) or for a part program (`program`: its run's options).
+struct RunTarget {
+  const Plan* plan = nullptr;
+  const ProgramRun* program = nullptr;
+  Point from() const {
+    return plan ? plan->from
+                : program::on_lattice(program->read.start.value_or(program::Point2{}), program->lattice.step);
+  }
+};
+
+// Plans the arc (or opens the program), runs it through the chosen engine into the
+// command's report (make_sink), and commits the output and the waveform only once
+// everything succeeded.
+template <typename MakeSink>
+void run_arc_command(const ArcOptions& o, MakeSink make_sink) {
+  if (!known_engine(o.engine)) throw InputError("engine = '" + o.engine + "' is invalid: use one of " + engine_names());
   if (!o.vcd.empty() && o.engine == "golden") {
     throw InputError("--vcd is invalid with engine golden: the golden model has no waveform");
   }
@@ -216,15 +233,31 @@ void run_arc_command(const ArcOptions& o, Writer write) {
     }
   }
   check_program_options(o);
-  std::optional<program::ProgramPlan> pp;
-  if (o.prog.given()) pp = load_program(o.prog, parse_preload(o.preload), o.engine != "golden");
-  const Plan plan = pp ? pp->plan : make_plan(o);
+  const bool hardware = o.engine != "golden";
+  std::optional<ProgramRun> prun;
+  std::unique_ptr<std::istream> in;
+  std::optional<Plan> plan;
+  if (o.prog.given()) {
+    prun = program_run(o.prog, parse_preload(o.preload), hardware);
+    in = program::open_program(o.prog.file);
+  } else {
+    plan = make_plan(o);
+    // (A command too wide for the hardware is refused before anything runs.)
+    if (hardware)
+      for (const Piece& pc : plan->pieces) hw::pack_command(pc.cmd);
+  }
   Output out(o.out);  // both files are opened before the run: a bad path fails fast
   AtomicFile wave(o.vcd);
   EngineOptions eo;
   eo.vcd = wave.write_path();
-  const EngineRun run = fn(plan, eo);
-  write(out.stream(), plan, run, pp ? &*pp : nullptr);
+  const RunTarget target{plan ? &*plan : nullptr, prun ? &*prun : nullptr};
+  const std::unique_ptr<RunSink> sink = make_sink(out.stream(), target);
+  const std::unique_ptr<Engine> engine = make_engine(o.engine, eo, *sink);
+  if (prun) {
+    run_program(*in, *prun, *engine, *sink);
+  } else {
+    run_plan(*plan, *engine, *sink);
+  }
   out.commit();
   wave.commit();
 }
@@ -232,6 +265,7 @@ void run_arc_command(const ArcOptions& o, Writer write) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_signal_cleanup();  // a run ended by a signal leaves no temporary file
   CLI::App app{"dda: ellipse DDA interpolator (golden model, SystemC model, RTL)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
@@ -316,24 +350,28 @@ int main(int argc, char** argv) {
     if (trace->parsed()) {
       const auto fmt = parse_enum<TraceFormat>(
           "format", tr.format, {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
-      run_arc_command(tr, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const auto*) {
-        write_trace(os, plan, r.initial, r.records, fmt);
+      run_arc_command(tr, [&](std::ostream& os, const RunTarget& t) {
+        return t.plan ? std::make_unique<TraceSink>(os, *t.plan, fmt)
+                      : std::make_unique<TraceSink>(os, t.program->lattice.preload, t.from(), fmt);
       });
     } else if (path->parsed()) {
       const auto fmt =
           parse_enum<PathFormat>("format", pa.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
-      run_arc_command(pa, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const auto*) {
-        write_path(os, path_points(plan, r.records), fmt);
-      });
+      run_arc_command(
+          pa, [&](std::ostream& os, const RunTarget& t) { return std::make_unique<PathSink>(os, t.from(), fmt); });
     } else if (stats->parsed()) {
+      using program::BlockStatsFormat;
       const auto fmt = parse_enum<BlockStatsFormat>(
           "format", st.format,
           {{"text", BlockStatsFormat::Text}, {"csv", BlockStatsFormat::Csv}, {"json", BlockStatsFormat::Json}});
       if (fmt == BlockStatsFormat::Csv && !st.prog.given()) throw InputError("--format csv goes with --program");
-      run_arc_command(st, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const program::ProgramPlan* pp) {
-        if (pp) return write_program_stats(os, *pp, r.records, fmt);
-        write_stats(os, plan, compute_stats(plan, r.records),
-                    fmt == BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);
+      run_arc_command(st, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
+        if (t.program) {
+          return std::make_unique<program::BlockStatsSink>(os, t.program->lattice,
+                                                           t.program->read.start.value_or(program::Point2{}), fmt);
+        }
+        return std::make_unique<StatsSink>(
+            *t.plan, &os, fmt == program::BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);
       });
     } else if (vectors->parsed()) {
       parse_enum<int>("format", ve.format, {{"hex", 0}});
@@ -382,7 +420,12 @@ int main(int argc, char** argv) {
       write_feed_report(std::cout, make_plan(fd), fd_summary, fd_label);
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
-      if (pl.out.empty()) throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+      if (pl.out.empty() || pl.out == "-") throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+      std::string ext = std::filesystem::path(pl.out).extension().string();
+      for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+      if (!ext.empty() && ext != ".svg") {
+        throw InputError("out = '" + pl.out + "' is invalid: plot writes SVG (a file name ending in .svg)");
+      }
       std::string title = "dda";
       for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--out") == 0) {
@@ -394,9 +437,12 @@ int main(int argc, char** argv) {
       std::string esc;  // the title is XML text
       for (const char ch : title)
         esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
-      run_arc_command(pl, [&](std::ostream& os, const Plan& plan, const EngineRun& r, const program::ProgramPlan* pp) {
-        if (pp) return write_program_svg(os, *pp, r.records, esc);
-        write_svg(os, plan, r.records, esc);
+      run_arc_command(pl, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
+        if (t.program) {
+          return std::make_unique<program::ProgramSvgSink>(os, t.program->lattice,
+                                                           t.program->read.start.value_or(program::Point2{}), esc);
+        }
+        return std::make_unique<SvgSink>(os, *t.plan, esc);
       });
     } else if (gen->parsed()) {
       const int kind = parse_enum<int>("kind", gp_kind,

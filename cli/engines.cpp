@@ -12,43 +12,70 @@ namespace dda::cli {
 
 namespace {
 
-EngineRun golden_engine(const Plan& plan, const EngineOptions&) {
-  return EngineRun{initial_regs(plan.cmd()), run_records(plan)};
+// The SystemC model or the RTL under Verilator (--cc), driven over its ports with ce_i
+// high; rows are built from its registers sampled after every edge, and a scoreboard
+// checks every edge against the golden model as it comes (a mismatch is a run-time
+// failure, exit status 1).
+template <typename Harness>
+class HardwareEngine : public Engine {
+ public:
+  HardwareEngine(const EngineOptions& opt, RunSink& sink)
+      : h_(opt.vcd),
+        drive_(
+            reset(h_), no_records(), [&sink](const Iteration& it) { sink.record(it); },
+            [&sink](const RegState& r) { sink.initial(r); }) {}
+  void piece(const Piece& pc) override {
+    hw::pack_command(pc.cmd);  // InputError if too wide for the hardware
+    drive_.piece(pc);
+  }
+  void finish() override {
+    drive_.finish();
+    h_.close_trace();
+  }
+
+ private:
+  static Harness& reset(Harness& h) {
+    reset_core(h);
+    return h;
+  }
+  static DriveOptions no_records() {
+    DriveOptions o;
+    o.keep_records = false;
+    return o;
+  }
+  Harness h_;
+  CoreDrive drive_;
+};
+
+using Factory = std::unique_ptr<Engine> (*)(const EngineOptions&, RunSink&);
+
+template <typename E>
+std::unique_ptr<Engine> make(const EngineOptions& opt, RunSink& sink) {
+  return std::make_unique<E>(opt, sink);
 }
 
-// The SystemC model, driven over its ports with ce_i high; rows are built from its
-// registers sampled after every edge, and a scoreboard checks them against the golden
-// model as they come (a mismatch is a run-time failure, exit status 1).
-EngineRun systemc_engine(const Plan& plan, const EngineOptions& opt) {
-  for (const auto& sg : plan.pieces) hw::pack_command(sg.cmd);  // InputError if too wide for the hardware
-  sc::ScHarness h(opt.vcd);
-  reset_core(h);
-  DriveResult r = drive_arc(h, plan);
-  h.close_trace();
-  return EngineRun{r.initial, std::move(r.records)};
+std::unique_ptr<Engine> make_golden(const EngineOptions&, RunSink& sink) {
+  return std::make_unique<GoldenEngine>(sink);
 }
 
-// The RTL under Verilator (--cc), driven and checked the same way.
-EngineRun rtl_engine(const Plan& plan, const EngineOptions& opt) {
-  for (const auto& sg : plan.pieces) hw::pack_command(sg.cmd);
-  rtl::RtlHarness h(opt.vcd);
-  reset_core(h);
-  DriveResult r = drive_arc(h, plan);
-  h.close_trace();
-  return EngineRun{r.initial, std::move(r.records)};
-}
-
-constexpr std::pair<const char*, EngineFn> kEngines[] = {
-    {"golden", &golden_engine},
-    {"systemc", &systemc_engine},
-    {"rtl", &rtl_engine},
+constexpr std::pair<const char*, Factory> kEngines[] = {
+    {"golden", &make_golden},
+    {"systemc", &make<HardwareEngine<sc::ScHarness>>},
+    {"rtl", &make<HardwareEngine<rtl::RtlHarness>>},
 };
 
 }  // namespace
 
-EngineFn find_engine(const std::string& name) {
+bool known_engine(const std::string& name) {
   for (const auto& [n, fn] : kEngines) {
-    if (name == n) return fn;
+    if (name == n) return true;
+  }
+  return false;
+}
+
+std::unique_ptr<Engine> make_engine(const std::string& name, const EngineOptions& opt, RunSink& sink) {
+  for (const auto& [n, fn] : kEngines) {
+    if (name == n) return fn(opt, sink);
   }
   return nullptr;
 }

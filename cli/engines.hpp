@@ -1,25 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
-// Engines the `dda` command can run: each turns a Plan into Iteration records
-// sampled from its own state (golden model, SystemC model, Verilated RTL).
+// Engines the `dda` command can run (pipeline.hpp's Engine): the golden model, the
+// SystemC model and the Verilated RTL, each turning pieces into Iteration records
+// sampled from its own state.
 #pragma once
 
+#include <memory>
 #include <string>
-#include <vector>
 
-#include "dda/golden.hpp"
+#include "dda/pipeline.hpp"
 
 namespace dda::cli {
 
 struct EngineOptions {
   std::string vcd;  // waveform file, empty for none
 };
-struct EngineRun {
-  RegState initial;                // the registers before the first iteration (trace row 0)
-  std::vector<Iteration> records;  // one per iteration
-};
-using EngineFn = EngineRun (*)(const Plan&, const EngineOptions&);
 
-EngineFn find_engine(const std::string& name);
+bool known_engine(const std::string& name);
 std::string engine_names();
+// The named engine (a known one), reporting to `sink`.
+std::unique_ptr<Engine> make_engine(const std::string& name, const EngineOptions& opt, RunSink& sink);
 
 }  // namespace dda::cli

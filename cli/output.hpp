@@ -14,6 +14,7 @@
 #include <string>
 
 #include "dda/errors.hpp"
+#include "temp_files.hpp"
 
 namespace dda::cli {
 
@@ -40,12 +41,20 @@ class AtomicFile {
     } else {
       target_ = path_;
     }
+    remove_stale_temps(target_);
     write_path_ = target_ + ".tmp." + std::to_string(::getpid());
+    register_temp(write_path_);
     std::ofstream probe(write_path_, std::ios::out | std::ios::trunc | std::ios::binary);
-    if (!probe) throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
+    if (!probe) {
+      release_temp(write_path_);
+      throw GuardError("cannot write '" + path_ + "': " + std::strerror(errno));
+    }
   }
   ~AtomicFile() {
-    if (!committed_ && !direct_ && !write_path_.empty()) std::remove(write_path_.c_str());
+    if (!committed_ && !direct_ && !write_path_.empty()) {
+      std::remove(write_path_.c_str());
+      release_temp(write_path_);
+    }
   }
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -57,6 +66,7 @@ class AtomicFile {
       throw GuardError("cannot rename to '" + path_ + "': " + std::strerror(errno));
     }
     committed_ = true;
+    release_temp(write_path_);
   }
 
  private:
@@ -64,11 +74,11 @@ class AtomicFile {
   bool direct_ = false, committed_ = false;
 };
 
-// The command's text output: stdout, or an AtomicFile.
+// The command's text output: stdout (no path, or "-"), or an AtomicFile.
 class Output {
  public:
-  explicit Output(const std::string& path) : file_(path) {
-    if (path.empty()) return;
+  explicit Output(const std::string& path) : file_(path == "-" ? std::string() : path) {
+    if (file_.path().empty()) return;
     stream_.open(file_.write_path(), std::ios::out | std::ios::trunc | std::ios::binary);
     if (!stream_) throw GuardError("cannot write '" + path + "': " + std::strerror(errno));
   }

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// `--program FILE` on the `dda` subcommands (docs/programs.md): reading, planning and
-// the per-block reports of a part program.
+// `--program FILE` on the `dda` subcommands (docs/programs.md): its options and what
+// they make of the program's run.
 #pragma once
 
-#include <ostream>
 #include <string>
-#include <vector>
 
 #include "dda/golden.hpp"
+#include "dda/pipeline.hpp"
 #include "dda/program_plan.hpp"
 
 namespace CLI {
@@ -26,20 +25,13 @@ void add_program_options(CLI::App* sub, ProgramCli& o);
 // The program's name in messages: the path, or "<stdin>".
 std::string program_name(const ProgramCli& o);
 
-// Reads and plans the program; with `hardware` (engines systemc and rtl) also refuses a
-// block whose commands the hardware's widths cannot hold. Throws ProgramError
-// ("FILE:LINE:COLUMN: message") or InputError for a bad option.
+// The program's run as the options give it (reader, lattice, window); InputError for
+// a bad option.
+ProgramRun program_run(const ProgramCli& o, Preload preload, bool hardware);
+
+// Reads and plans the whole program (vector sets); with `hardware` (engines systemc
+// and rtl) also refuses a block whose commands the hardware's widths cannot hold.
+// Throws ProgramError ("FILE:LINE:COLUMN: message") or InputError for a bad option.
 program::ProgramPlan load_program(const ProgramCli& o, Preload preload, bool hardware);
-
-// One row per motion block (source line, block number, kind, programmed end in mm, its
-// lattice point and rounding, commands, steps, iterations, largest and mean distance
-// from the programmed geometry) and the totals.
-enum class BlockStatsFormat { Text, Csv, Json };
-void write_program_stats(std::ostream& os, const program::ProgramPlan& pp, const std::vector<Iteration>& iters,
-                         BlockStatsFormat fmt);
-
-// The whole path over the programmed geometry (dda plot --program).
-void write_program_svg(std::ostream& os, const program::ProgramPlan& pp, const std::vector<Iteration>& iters,
-                       const std::string& title);
 
 }  // namespace dda::cli

@@ -3,9 +3,12 @@
 // reference model (dda/core_model.hpp) running the planner's commands.
 #include "vectors.hpp"
 
+#include "temp_files.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -313,34 +316,88 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
                           {"manifest.json", m.dump(1) + "\n"}});
 }
 
-void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files) {
-  // Atomic: everything into a temporary directory next to the target, then rename.
-  const fs::path dir(out_dir);
+namespace {
+
+// The files of the vector set in `dir` that a replacement may remove: its manifest and
+// the files the manifest lists. Anything else in the directory, or a manifest this tool
+// did not write, and the directory is not replaced (InputError naming what is there).
+std::vector<fs::path> set_files(const fs::path& dir, const std::string& out_dir) {
+  const std::string what = "out-dir = '" + out_dir + "' is invalid: ";
   std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir) || (!fs::is_empty(dir) && !fs::exists(dir / "manifest.json"))) {
-      throw InputError("out-dir = '" + out_dir + "' is invalid: it exists and is not a vector set (no manifest.json)");
+  if (!fs::is_directory(dir, ec)) throw InputError(what + "it exists and is not a directory");
+  if (fs::is_empty(dir, ec)) return {};
+  nlohmann::json m;
+  {
+    std::ifstream in(dir / "manifest.json", std::ios::binary);
+    if (!in) throw InputError(what + "it is not empty and holds no vector set (no manifest.json): nothing is replaced");
+    m = nlohmann::json::parse(in, nullptr, false);
+  }
+  const bool ours = m.is_object() && m.contains("generator") && m["generator"].is_string() &&
+                    m["generator"].get<std::string>().rfind("dda vectors", 0) == 0 && m.contains("files") &&
+                    m["files"].is_object();
+  if (!ours) throw InputError(what + "its manifest.json is not one `dda vectors` wrote: nothing is replaced");
+  std::vector<fs::path> own{dir / "manifest.json"};
+  for (const auto& [name, _] : m["files"].items()) {
+    if (name.find('/') != std::string::npos || name == ".." || name == ".") {
+      throw InputError(what + "its manifest lists '" + name + "', which is not a file of a set: nothing is replaced");
+    }
+    own.push_back(dir / name);
+  }
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (std::find(own.begin(), own.end(), entry.path()) == own.end() || !entry.is_regular_file()) {
+      throw InputError(what + "it holds '" + entry.path().filename().string() +
+                       "', which is not a file of its vector set: nothing is replaced");
     }
   }
-  const fs::path tmp = dir.parent_path() / (dir.filename().string() + ".tmp." + std::to_string(::getpid()));
-  fs::remove_all(tmp, ec);
+  return own;
+}
+
+}  // namespace
+
+using cli::register_temp;
+using cli::release_temp;
+using cli::remove_stale_temps;
+
+void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files) {
+  // Atomic: everything into a temporary directory next to the target, then renamed into
+  // place; an existing set is replaced only if it holds nothing but its own files, and
+  // only those are removed.
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  std::vector<fs::path> old_files;
+  const bool exists = fs::exists(fs::symlink_status(dir, ec));
+  if (exists) old_files = set_files(dir, out_dir);
+  remove_stale_temps(dir.string());
+  const std::string pid = std::to_string(::getpid());
+  const fs::path tmp = dir.parent_path() / (dir.filename().string() + ".tmp." + pid);
+  register_temp(tmp.string());
   if (!fs::create_directories(tmp, ec) || ec) {
+    release_temp(tmp.string());
     throw GuardError("vectors: cannot create " + tmp.string() + ": " + ec.message());
   }
   try {
-    for (const auto& [name, text] : files) write_text(tmp / name, text);
-    if (fs::exists(dir)) {
-      const fs::path old = dir.parent_path() / (dir.filename().string() + ".old." + std::to_string(::getpid()));
+    for (const auto& [name, text] : files) {
+      register_temp((tmp / name).string());
+      write_text(tmp / name, text);
+    }
+    if (exists) {
+      const fs::path old = dir.parent_path() / (dir.filename().string() + ".old." + pid);
       fs::rename(dir, old);
       fs::rename(tmp, dir);
-      fs::remove_all(old);
+      for (const fs::path& f : old_files) fs::remove(old / f.filename(), ec);
+      fs::remove(old, ec);
     } else {
       fs::rename(tmp, dir);
     }
   } catch (...) {
-    fs::remove_all(tmp, ec);
+    for (const auto& [name, text] : files) fs::remove(tmp / name, ec);
+    fs::remove(tmp, ec);
+    for (const auto& [name, text] : files) release_temp((tmp / name).string());
+    release_temp(tmp.string());
     throw;
   }
+  for (const auto& [name, text] : files) release_temp((tmp / name).string());
+  release_temp(tmp.string());
 }
 
 }  // namespace dda::vec

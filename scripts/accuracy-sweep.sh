@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Accuracy sweep (issue 5): 2,000 arcs with a fixed seed through the golden model, the
+# Accuracy sweep: 2,000 arcs with a fixed seed through the golden model, the
 # worst and mean distance of the path from the ideal ellipse per mode and aspect ratio.
 # Prints the table and writes it into docs/results.md between its markers.
 #   usage: scripts/accuracy-sweep.sh [arcs] [seed]

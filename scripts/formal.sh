@@ -9,8 +9,8 @@
 #   JOB  props  k-induction of the assertions of one implementation (dda_props.sv): a
 #               bounded check of K steps from reset, then the induction step of depth K
 #        equiv  k-induction of a miter of the implementation against the reference core
-#               (formal/ref/, today's core before issue 12): every port and every
-#               architectural register equal on every edge, and the reference's
+#               (formal/ref/, the core before the small and fast implementations):
+#               every port and every architectural register equal on every edge, and the reference's
 #               assertions; the implementation's assertions are assumed there (props
 #               proves them under the same environment: assume-guarantee)
 #        cover  the cover traces of dda_props.sv, each reached within K steps

@@ -21,7 +21,7 @@ san=-fsanitize=address,undefined
 clang++ "${flags[@]}" "$san",fuzzer -fno-sanitize-recover=undefined "${srcs[@]}" \
   "$root/tests/fuzz/fuzz_program.cpp" -lfmt -o "$out/fuzz_program"
 echo "fuzz-program: running $seconds s from $(ls "$out/corpus" | wc -l) inputs"
-"$out/fuzz_program" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 \
+"$out/fuzz_program" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 -artifact_prefix="$out/" \
   "$out/corpus" 2> "$out/fuzz.log" || { tail -40 "$out/fuzz.log"; echo "fuzz-program: FAILED" >&2; exit 1; }
 grep -E "^#[0-9]+.*DONE|^Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb|cov:" "$out/fuzz.log" | tail -4
 clang++ "${flags[@]}" "$san" -fno-sanitize-recover=undefined "${srcs[@]}" "$root/tests/test_program.cpp" \

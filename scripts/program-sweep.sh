@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Accuracy sweep of arcs as part programs give them (issue 11; tb/measure/program_sweep.cpp):
+# Accuracy sweep of arcs as part programs give them (tb/measure/program_sweep.cpp):
 # 20,000 fixed-seed cases by default, cut into shards run with GNU parallel (one per core;
 # PARALLEL_OPTS may add --sshlogin to spread them over hosts with the same build), the
 # shards' JSON merged into one table, which is printed and written into docs/results.md.

@@ -10,6 +10,7 @@ PACKAGES=(
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
   z3 librsvg2-bin clang-format parallel tao-pegtl-dev
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
+  time  # GNU time: peak memory in scripts/scale-table.sh
 )
 
 missing=()

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The whole project built at other widths (issue 12), and the tests that hold at any
+# The whole project built at other widths, and the tests that hold at any
 # width run on it. Outside the default suite (a second build tree: about 5 minutes to
 # build on 2 cores, 2 to 3 minutes to run).
 #   usage: scripts/test-widths.sh [--acc N --cnt N] [--seed S]

@@ -4,7 +4,7 @@
 # BIN_DIR, each name it lists must be (or end) the name of a ctest test. A test case
 # missing from ctest never runs in the suite: a program whose catch_discover_tests was
 # forgotten, or a name CMake's list handling cuts (a ';' in it did, and two tests
-# with stale assertions went unseen for issues).
+# with stale assertions went unseen).
 #   usage: tests/check-discovery.sh BUILD_DIR
 set -euo pipefail
 build=$1

@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # Each line of the baseline file is "a b n sha256": the SHA-256 of
 #   dda trace --a A --b B --bits N --preload zero --from A,0 --to 0,B --format csv
-# as main printed it before the restructuring of issue 10. Fails on the first
-# configuration whose output differs, naming it.
+# as main printed it before the restructuring of the models into libraries. Fails on the
+# first configuration whose output differs, naming it.
 #   usage: tests/check-trace-baseline.sh DDA BASELINE
 set -euo pipefail
 dda=$1 baseline=$2

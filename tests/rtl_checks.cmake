@@ -55,7 +55,7 @@ dda_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
 dda_vec_set(back_to_back --a 10 --b 6 --bits 4 --preload zero --ce-percent 90 --seed 7
             --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
             --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
-# A part program (issue 16): the lathe paper's macro program, its 304 chords and the
+# A part program: the lathe paper's macro program, its 304 chords and the
 # rapids around them as back-to-back commands.
 dda_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper-macro.ngc --machine lathe --start 60,5
             --ce-percent 90 --seed 13)
@@ -97,7 +97,8 @@ set_tests_properties(vectors.detects_corruption PROPERTIES FIXTURES_REQUIRED vec
 add_test(NAME vectors.fields_in_sync
          COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_vec_fields.vh")
 # The paper's and the lathe example's vector sets, written to the same directory names,
-# are byte-identical to the sets main wrote before the restructuring of issue 10.
+# are byte-identical to the sets main wrote before the restructuring of the models into
+# libraries.
 add_test(NAME baseline.vector_sets COMMAND sha256sum --quiet -c ${CMAKE_CURRENT_SOURCE_DIR}/data/vector-sets-sha256.txt
          WORKING_DIRECTORY ${_dda_vec})
 set_tests_properties(baseline.vector_sets PROPERTIES FIXTURES_REQUIRED "vec_paper;vec_lathe" LABELS baseline)
@@ -129,7 +130,7 @@ function(dda_bus_vec_set name)
                        ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_bus)
 endfunction()
 dda_bus_vec_set(paper --a 10 --b 6 --bits 4 --preload zero)
-# Drive timings and a feed (issue 14): the paper's example at a feed in steps per second
+# Drive timings and a feed: the paper's example at a feed in steps per second
 # for a 48 MHz clock with slow-drive timings, the lathe example at a constant increment.
 dda_bus_vec_set(paper_timed --a 10 --b 6 --bits 4 --preload zero --timing-x 5,3,4,2 --timing-y 2,9,0,3
                 --polarity 5 --feed-rate 400000 --clock 48000000 --seed 5)

@@ -30,7 +30,8 @@ std::string fmt_distance(const std::string& prefix, double d) {
 // Bad input: status 2, one line on stderr naming the value and the rule, nothing written.
 void expect_usage_error(const std::string& args, const std::string& needle) {
   Scratch s;
-  const fs::path out = s.dir / "out.txt";
+  // (A plot is written to an SVG file, every other output to any file.)
+  const fs::path out = s.dir / (args.rfind("plot", 0) == 0 ? "out.svg" : "out.txt");
   const Result r = run_dda(s, args + " --out " + out.string());
   INFO("dda " << args << "\nstderr: " << r.err);
   CHECK(r.status == 2);
@@ -143,7 +144,7 @@ TEST_CASE("cli: points off the ellipse, out of order, unreachable, malformed", "
                      fmt_distance("from point (3,0) is ", dda::ellipse_distance(10, 6, 3, 0)) +
                          " steps from the ellipse: start and end must lie within 1.0000 step of it");
   expect_usage_error("path " + kPaper + " --to 0,8", "to point (0,8) is 2.0000 steps from the ellipse");
-  // Ends the counted path cannot reach are reached (issue 11): see "cli: lattice ends".
+  // Ends the counted path cannot reach are reached: see "cli: lattice ends".
   expect_usage_error("trace " + kPaper + " --from 1,2 --from-theta 30", "from and from-theta are both given");
   expect_usage_error("trace " + kPaper + " --to-theta north", "to-theta = 'north' is invalid: an angle in degrees");
   expect_usage_error("trace " + kPaper + " --from 1,2,3", "from = '1,2,3' is invalid: a point is two integers X,Y");
@@ -223,7 +224,7 @@ TEST_CASE("cli: every engine prints the golden engine's rows", "[cli][engines]")
   }
 }
 
-// The lathe paper's oblique ellipse (issue 5): 695,000 iterations in 5 pieces through
+// The lathe paper's oblique ellipse: 695,000 iterations in 5 pieces through
 // all three engines, the same path, ending exactly on the end point the golden plan
 // names.
 TEST_CASE("cli: the lathe example runs through every engine with the same path", "[cli][engines]") {
@@ -378,7 +379,7 @@ TEST_CASE("cli: plot refuses to write to stdout and names bad formats", "[cli][p
   expect_usage_error("plot --a 10 --b 6 --bits 2", "bits = 2 is invalid");
 }
 
-// Issue 11: half preload is every subcommand's default; the paper's mode is named.
+// Half preload is every subcommand's default; the paper's mode is named.
 TEST_CASE("cli: half preload is the default, the paper's mode is --preload zero", "[cli]") {
   Scratch s;
   const Result d = run_dda(s, "stats --a 10 --b 6 --bits 4");
@@ -450,7 +451,7 @@ TEST_CASE("cli: --line with ellipse options, or of length 0, is bad usage", "[cl
   expect_usage_error("path --b 5 --from 0,0", "--a is required");
 }
 
-// Issue 11: lattice start and end points anywhere within a step of the curve, as part
+// Lattice start and end points anywhere within a step of the curve, as part
 // programs give them, are accepted and the path starts and ends exactly there; full
 // turns close, given by points or by angles.
 TEST_CASE("cli: lattice ends that the counted path missed are reached, full turns close", "[cli][ellipse]") {
@@ -468,7 +469,7 @@ TEST_CASE("cli: lattice ends that the counted path missed are reached, full turn
        "-1452,-3118"},
       {"--a 13 --b 442 --center 1004,1488 --dir cw --angle 346.452379 --from 1099,1851 --to 1088,1864", "1099,1851",
        "1088,1864"},
-      // Tips sharper than the lattice, refused before issue 11's anchored pieces.
+      // Tips sharper than the lattice, crossed in short lines by the anchored planner.
       {"--a 2 --b 113 --angle 280.613133 --from-theta 0 --to-theta 0", "0,-2", "0,-2"},
       {"--a 100 --b 4 --angle 30 --from-theta 10 --to-theta 10", "85,50", "85,50"},
   };
@@ -486,7 +487,7 @@ TEST_CASE("cli: lattice ends that the counted path missed are reached, full turn
   }
 }
 
-// Issue 11: the default width fits the hardware's fields whenever some width does.
+// The default width fits the hardware's fields whenever some width does.
 TEST_CASE("cli: the default width runs on the hardware engines", "[cli][engines]") {
   Scratch s;
   const Result g = run_dda(s, "stats --a 50000 --b 50000");

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// `dda --program` as a user runs it (issue 15): every class of bad input is exit status
+// `dda --program` as a user runs it: every class of bad input is exit status
 // 2 and one line "FILE:LINE:COLUMN: message" at the right place, with no file written;
 // the options' own errors; a program from standard input; the per-block statistics.
 #define CATCH_CONFIG_MAIN
@@ -23,7 +23,7 @@ void write_file(const fs::path& p, const std::string& text) {
 }  // namespace
 
 TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, status 2, no file", "[cli]") {
-  // (text, expected message after "FILE:") for each class the issue names.
+  // (text, expected message after "FILE:") for each class of bad input (docs/programs.md).
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"G01 X1\nG01 E5\n", "2:5: unknown word E"},                          // unknown word
       {"G93 X1\n", "1:1: unknown or unsupported code G93"},                 // unknown code
@@ -39,7 +39,7 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
       {"G01 X1 Z5\n", "1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)"},
       {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
   };
-  // The macro language's classes (issue 16).
+  // The macro language's classes.
   const std::vector<std::pair<std::string, std::string>> macro_cases = {
       {"G01 X#7\n", "1:6: #7 is undefined: no value was assigned to it"},
       {"#1=0\n#2=5/#1\n", "2:5: division by zero"},
@@ -62,7 +62,7 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
   for (const auto& [text, want] : cases) {
     for (const std::string cmd : {"stats", "plot", "trace --engine rtl"}) {
       Scratch s;
-      const fs::path prog = s.dir / "p.nc", out = s.dir / "out.txt";
+      const fs::path prog = s.dir / "p.nc", out = s.dir / (cmd == "plot" ? "out.svg" : "out.txt");
       write_file(prog, text);
       const Result r = run_dda(s, cmd + " --program " + prog.string() + " --out " + out.string());
       INFO("dda " << cmd << " on: " << text << "stderr: " << r.err);
@@ -115,7 +115,8 @@ TEST_CASE("cli program: the options' own errors", "[cli]") {
       {"stats" + p + " --start 1",
        "dda: error: start = '1' is invalid: give X,Y in millimetres (e.g. 10,-2.5; up to 6 decimals)\n"},
       {"stats --program " + (s.dir / "none.nc").string(),
-       "dda: error: program = '" + (s.dir / "none.nc").string() + "' is invalid: cannot read it\n"},
+       "dda: error: program = '" + (s.dir / "none.nc").string() +
+           "' is invalid: cannot read it (No such file or directory)\n"},
       {"stats --a 5 --b 3 --format csv", "dda: error: --format csv goes with --program\n"},
       {"feed" + p, "dda: error: --program is invalid with feed: the feed table is one arc's\n"},
   };

@@ -6,7 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "dda/det_math.hpp"
 #include "dda/program.hpp"
@@ -28,6 +31,22 @@ std::string error_of(const std::string& text, Machine m = Machine::Mill) {
     return e.what();
   }
   return "";
+}
+
+// Every field of a move, for comparing two reads.
+std::string describe(const Move& m) {
+  std::ostringstream os;
+  os.precision(17);
+  os << m.pos.line << ':' << m.pos.column << " N" << (m.block_number ? std::to_string(*m.block_number) : "-") << ' '
+     << kind_name(m.kind) << " from " << m.from.u << ',' << m.from.v << " to " << m.to.u << ',' << m.to.v << " centre "
+     << m.center.u << ',' << m.center.v << " r " << m.radius << (m.full ? " full" : "") << " a " << m.a << " b " << m.b
+     << " q " << m.q_millideg << " F " << m.feed;
+  return os.str();
+}
+
+// The examples/ directory, beside this file's tests/.
+std::filesystem::path examples_dir() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path() / "examples";
 }
 
 }  // namespace
@@ -240,7 +259,8 @@ TEST_CASE("det_math: the macro language's sines are within 5 units in the last p
   CHECK(dda::det::atan(0.0) == 0.0);
 }
 
-TEST_CASE("program macros: the review's cases", "[program]") {
+TEST_CASE("program macros: M98 with M99 in one block, exact literals, comments, duplicate programs, long lines",
+          "[program]") {
   // A call and a return in one block, or a call in a dwell block: refused, not deferred.
   CHECK(error_of("%1\nM98 P2\nM30\n%2\nM98 P3 M99\n%3\nM99\n") ==
         "p.nc:5:1: M98 and M99 in one block: call or return, not both");
@@ -262,4 +282,69 @@ TEST_CASE("program macros: the review's cases", "[program]") {
   // An ellipse block that starts at its centre: the reader's message.
   CHECK(error_of("G00 X20 Z0\nG6.3 X20 Z-10 A10 B5 K0 I0\n", Machine::Lathe) ==
         "p.nc:2:1: the start is 5.0000 mm off the ellipse (tolerance 0.002 mm)");
+}
+
+TEST_CASE("program stream: read_stream gives every example's moves as read() does", "[program]") {
+  std::size_t programs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples_dir())) {
+    if (entry.path().extension() != ".ngc") continue;
+    INFO(entry.path().filename().string());
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    ReadOptions ro;
+    if (text.str().find("--machine lathe") != std::string::npos) ro.machine = Machine::Lathe;
+    const Program whole = read(text.str(), "x.ngc", ro);
+    std::vector<Move> streamed;
+    const auto file = open_program(entry.path().string());
+    const ReadSummary s = read_stream(*file, "x.ngc", ro, [&](const Move& m) { streamed.push_back(m); });
+    REQUIRE(!whole.moves.empty());
+    REQUIRE(streamed.size() == whole.moves.size());
+    for (std::size_t k = 0; k < streamed.size(); ++k) CHECK(describe(streamed[k]) == describe(whole.moves[k]));
+    CHECK(s.ignored_count == whole.ignored.size());
+    REQUIRE(s.ignored.size() == whole.ignored.size());
+    for (std::size_t k = 0; k < s.ignored.size(); ++k) CHECK(s.ignored[k].word == whole.ignored[k].word);
+    CHECK(s.ended == whole.ended);
+    CHECK(s.start == whole.start);
+    ++programs;
+  }
+  CHECK(programs >= 10);
+}
+
+TEST_CASE("program stream: open_program refuses a directory and a missing file", "[program]") {
+  const std::string dir = examples_dir().string();
+  CHECK_THROWS_WITH(open_program(dir), "program = '" + dir + "' is invalid: it is a directory");
+  const std::string missing = dir + "/no-such-program.ngc";
+  CHECK_THROWS_WITH(open_program(missing),
+                    "program = '" + missing + "' is invalid: cannot read it (No such file or directory)");
+}
+
+TEST_CASE("program stream: the first kMaxIgnoredKept ignored words are kept and all counted", "[program]") {
+  std::string text = "G01 X1\n";
+  for (int k = 0; k < 1500; ++k) text += "S100\n";
+  std::istringstream in(text);
+  std::size_t moves = 0;
+  const ReadSummary s = read_stream(in, "p.nc", ReadOptions{}, [&](const Move&) { ++moves; });
+  CHECK(moves == 1);
+  CHECK(s.ignored_count == 1500);
+  REQUIRE(s.ignored.size() == kMaxIgnoredKept);
+  CHECK(s.ignored.front().pos.line == 2);
+  CHECK(s.ignored.back().pos.line == 1 + kMaxIgnoredKept);
+  CHECK(s.ignored.back().word == "S100");
+  CHECK(read(text, "p.nc").ignored.size() == 1500);  // read() keeps them all
+}
+
+TEST_CASE("program stream: bad text is refused before any move, a run-time error after the moves before it",
+          "[program]") {
+  std::size_t moves = 0;
+  const auto count = [&](const Move&) { ++moves; };
+  std::istringstream syntax("G01 X1\nX2\nG01 X1.2.3\n");
+  CHECK_THROWS_WITH(read_stream(syntax, "p.nc", ReadOptions{}, count), "p.nc:3:9: unexpected '.'");
+  std::istringstream unmatched("G01 X1\r\nX2\r\nENDW\r\n");
+  CHECK_THROWS_WITH(read_stream(unmatched, "p.nc", ReadOptions{}, count), "p.nc:3:1: ENDW without WHILE");
+  CHECK(moves == 0);
+  std::istringstream undefined("G01 X1\nX2\nX#4\n");
+  CHECK_THROWS_WITH(read_stream(undefined, "p.nc", ReadOptions{}, count),
+                    "p.nc:3:2: #4 is undefined: no value was assigned to it");
+  CHECK(moves == 2);
 }

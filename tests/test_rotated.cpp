@@ -147,7 +147,7 @@ TEST_CASE("rotated: quarter-turn angles keep the exact integer datapath", "[gold
 }
 
 TEST_CASE("parametric ends: the span is judged from the ideal start, not the rounded one", "[golden][rotated]") {
-  // Found in review: (100,1), the start of 0.4 and of 0.6 degrees, lies past the ray of
+  // A start past the end's ray: (100,1), the start of 0.4 and of 0.6 degrees, lies past the ray of
   // 0.5 and before that of 0.59 degrees.
   ArcSpec s;
   s.a = s.b = 100;
@@ -168,7 +168,7 @@ TEST_CASE("parametric ends: the span is judged from the ideal start, not the rou
 
 TEST_CASE("reached: lattice ends the counted path cannot reach, and still refused: a start at the centre",
           "[golden][rotated][default-widths]") {
-  // Issue 11: far inside the curve the counted path stalls short of the vertex; the
+  // Far inside the curve the counted path stalls short of the vertex; the
   // planner ends the arc on the ray through the end's curve point and goes on to the end
   // with a line (zero preload), or starts from the start's nearest curve point after a
   // lead-in line (half preload), so the path starts and ends exactly on the given points.
@@ -201,9 +201,9 @@ TEST_CASE("reached: lattice ends the counted path cannot reach, and still refuse
 
 TEST_CASE("rotated: tips sharper than the lattice are followed, full turns close within a step",
           "[golden][rotated][default-widths]") {
-  // Issue 11: these were refused (tip radius of curvature min(a,b)^2 / max(a,b) at most a
-  // quarter step); the planner now crosses such tips in short lines and re-anchors on the
-  // curve at every turn (docs/golden-model.md, "Rotated ellipses").
+  // Tips of radius of curvature min(a,b)^2 / max(a,b) at most a quarter step: the planner
+  // crosses such tips in short lines and re-anchors on the curve at every turn
+  // (docs/golden-model.md, "Rotated ellipses").
   const struct {
     std::int64_t a, b, angle_udeg;
   } cases[] = {{2, 113, 280'613'133},  {100, 4, 30'000'000}, {1000, 1, 33'000'000},

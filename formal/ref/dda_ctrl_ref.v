@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The reference core for the formal equivalence proofs (scripts/formal.sh): dda_core as
-// it was before the fast and small implementations (commit 7e45f85, issue 12), modules
+// it was before the fast and small implementations (commit 7e45f85), modules
 // renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
 // rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
 // Control of the DDA core (docs/design.md, "Control" and "Behaviour, edge by edge"):

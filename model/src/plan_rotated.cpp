@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The planner for rotated ellipses by the DDA's own turns (zero preload, issue 5): pieces found by running the datapath
+// The planner for rotated ellipses by the DDA's own turns (zero preload): pieces found by running the datapath
 // to each turn.
 #include <algorithm>
 #include <cstdlib>

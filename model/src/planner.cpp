@@ -410,7 +410,7 @@ Plan plan_arc(const ArcSpec& spec_in) {
   } else if (p.rotated && (half || quarter_step_tips || spec.sub != 0)) {
     plan_anchored();
   } else if (p.rotated) {
-    try {  // zero preload: the DDA's own turns, as in issue 5, unless they lose the curve
+    try {  // zero preload: the DDA's own turns (plan_rotated.cpp), unless they lose the curve
       if (spec.to_theta) {
         plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
       } else {

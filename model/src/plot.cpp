@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -39,11 +40,55 @@ double tick_step(double span, int target) {
 
 }  // namespace
 
-void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, const std::string& title) {
+void PathSample::add(Point p, double dist, bool keep) {
+  const std::uint64_t seq = seen_++;
+  const Kept k{seq, p, dist, keep && marked_ < budget_ / 4};
+  if (!have_worst_ || dist > worst_.dist) worst_ = k, have_worst_ = true;
+  if (seq % stride_ != 0 && !k.keep) return;
+  marked_ += k.keep;
+  kept_.push_back(k);
+  if (kept_.size() >= budget_) thin();
+}
+
+// Every other sampled point goes (marked ones stay): the stride doubles.
+void PathSample::thin() {
+  stride_ *= 2;
+  std::size_t n = 0;
+  for (const Kept& k : kept_) {
+    if (k.keep || k.seq % stride_ == 0) kept_[n++] = k;
+  }
+  kept_.resize(n);
+}
+
+void PathSample::take(std::vector<Point>& pts, std::vector<double>& dist) {
+  // The farthest point in its place, if the stride left it out.
+  if (have_worst_) {
+    const auto at = std::lower_bound(kept_.begin(), kept_.end(), worst_.seq,
+                                     [](const Kept& k, std::uint64_t seq) { return k.seq < seq; });
+    if (at == kept_.end() || at->seq != worst_.seq) kept_.insert(at, worst_);
+  }
+  for (const Kept& k : kept_) {
+    pts.push_back(k.p);
+    dist.push_back(k.dist);
+  }
+  kept_.clear();
+}
+
+SvgSink::SvgSink(std::ostream& os, const Plan& plan, std::string title)
+    : os_(os), plan_(plan), title_(std::move(title)) {
+  sample_.add(plan.from, plan_distance(plan, double(plan.from.x), double(plan.from.y)));
+}
+
+void SvgSink::record(const Iteration& it) {
+  if (it.step_x || it.step_y) sample_.add(it.pos, plan_distance(plan_, double(it.pos.x), double(it.pos.y)));
+}
+
+void SvgSink::finish() {
+  const Plan& plan = plan_;
   SvgPicture pic;
-  pic.pts = path_points(plan, iters);
-  for (const Point& q : pic.pts) pic.dist.push_back(plan_distance(plan, double(q.x), double(q.y)));
-  pic.title = title;
+  if (sample_.stride() > 1) pic.sampled_from = sample_.seen(), pic.sample_stride = sample_.stride();
+  sample_.take(pic.pts, pic.dist);
+  pic.title = title_;
   pic.curve = "the ellipse";
   // The ideal curve: the whole ellipse, sampled finely (a line: the line between its ends).
   if (plan.line) {
@@ -61,7 +106,13 @@ void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>&
     }
     pic.ideal.push_back(std::move(line));
   }
-  write_svg(os, pic);
+  write_svg(os_, pic);
+}
+
+void write_svg(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, const std::string& title) {
+  SvgSink sink(os, plan, title);
+  for (const Iteration& it : iters) sink.record(it);
+  sink.finish();
 }
 
 void write_svg(std::ostream& os, const SvgPicture& pic) {
@@ -229,6 +280,12 @@ void write_svg(std::ostream& os, const SvgPicture& pic) {
                "<text x=\"{:.1f}\" y=\"{:.1f}\">markers: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} "
                "points</text>\n",
                lx - 10, ly + lh + 70, every, lx - 10, ly + lh + 86, shown);
+  }
+  if (pic.sampled_from != 0) {
+    fmt::print(os,
+               "<text x=\"{:.1f}\" y=\"{:.1f}\">path: every {}th</text>\n<text x=\"{:.1f}\" y=\"{:.1f}\">of {} "
+               "points</text>\n",
+               lx - 10, ly + lh + 120, pic.sample_stride, lx - 10, ly + lh + 136, pic.sampled_from);
   }
   fmt::print(os, "</g>\n</svg>\n");
 }

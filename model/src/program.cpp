@@ -1,14 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
 // The program reader's interpreter: each line's words (program_grammar.cpp) through the
-// modal state of RS274 into motion blocks (docs/programs.md).
+// modal state of RS274 into motion blocks (docs/programs.md), read from a stream in two
+// passes (the structure first, program_macro.cpp; then the run, a line at a time); and
+// the files it reads, standard input through a temporary file.
 #include "dda/program.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -49,25 +59,32 @@ struct Modal {
   double feed = 0;
 };
 
+// Where the interpreter's results go besides the summary: each move, and how many
+// ignored words to keep.
+struct Output {
+  const std::function<void(const Move&)>& on_move;
+  std::size_t keep_ignored;
+};
+
 class Reader {
  public:
-  Reader(const std::string& file, const ReadOptions& opt) : file_(file), opt_(opt), macro_(file) {
+  Reader(std::istream& in, const std::string& file, const ReadOptions& opt, const Output& out)
+      : file_(file), opt_(opt), out_(out), macro_(file), lines_(in, file) {
     if (opt.machine == Machine::Lathe) m_.plane = 180;
-    if (opt.start) prog_.start = *opt.start;
-    at_ = prog_.start;
+    if (opt.start) sum_.start = *opt.start;
+    at_ = sum_.start;
   }
 
-  Program run(const std::vector<detail::Line>& lines) {
-    lines_ = &lines;
-    st_ = detail::structure(lines, file_);
-    // The main program: the first with a word or a statement; the others are called.
+  ReadSummary run() {
+    st_ = detail::structure(lines_, file_);  // pass 1: every line parsed, the statements matched
+    // Pass 2. The main program: the first with a word or a statement; the others are called.
     for (std::size_t i = 0; i < st_.programs.size(); ++i) {
       if (st_.programs[i].content) {
         exec(i, 0);
         break;
       }
     }
-    return prog_;
+    return std::move(sum_);
   }
 
  private:
@@ -95,7 +112,19 @@ class Reader {
     return w.mantissa / pow10(w.decimals);
   }
 
+  // A word that does not move the tool: counted, and kept while fewer than asked.
+  void ignore(const Word& w) {
+    if (sum_.ignored.size() < out_.keep_ignored) sum_.ignored.push_back({w.pos, name(w)});
+    ++sum_.ignored_count;
+  }
+
+  struct Call {
+    std::int64_t program = 0, repeats = 1;
+    SourcePos pos;
+  };
   void exec(std::size_t program, int depth);
+  detail::LinePos step(const detail::Line& l, const detail::LinePos& at, const detail::LinePos& next);
+  void call(const Call& c, int depth);
   void block(const detail::Line& l);
   void motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n);
   void arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
@@ -114,56 +143,36 @@ class Reader {
 
   std::string file_;
   ReadOptions opt_;
+  Output out_;
   Modal m_;
-  Program prog_;
+  ReadSummary sum_;
   Point2 at_;
   // Macros (program_macro.hpp): variables, the programs and the control flow.
   detail::Macro macro_;
-  const std::vector<detail::Line>* lines_ = nullptr;
+  detail::LineStream lines_;
   detail::Structure st_;
   std::uint64_t executed_ = 0;
-  struct Call {
-    std::int64_t program = 0, repeats = 1;
-    SourcePos pos;
-  };
   std::optional<Call> call_;  // M98 in the block just run
   bool return_ = false;       // M99 in the block just run
 };
 
-// Runs a program's lines: statements steer, blocks move (and call).
+// Runs a program's lines, each read when it runs: statements steer, blocks move (and call).
 void Reader::exec(std::size_t program, int depth) {
-  const detail::ProgramText& p = st_.programs[program];
-  const auto& lines = *lines_;
-  for (std::size_t pc = p.begin; pc < p.end;) {
-    const detail::Line& l = lines[pc];
+  const detail::ProgramText p = st_.programs[program];
+  detail::Line l;
+  for (detail::LinePos pc = p.begin; pc.number < p.end;) {
+    const detail::LinePos next = lines_.read(pc, l);
     if (++executed_ > opt_.max_lines) {
       fail(SourcePos{l.number, 1},
            fmt::format("more than {} lines executed: a loop that does not end?", opt_.max_lines));
     }
-    switch (l.stmt) {
-      case detail::Stmt::Assign:
-        macro_.assign(l);
-        ++pc;
-        continue;
-      case detail::Stmt::While:
-      case detail::Stmt::If:
-        pc = macro_.truth(l) ? pc + 1 : st_.jump[pc] + 1;
-        continue;
-      case detail::Stmt::EndW:
-        pc = st_.jump[pc];
-        continue;
-      case detail::Stmt::Else:
-        pc = st_.jump[pc] + 1;
-        continue;
-      case detail::Stmt::EndIf:
-        ++pc;
-        continue;
-      case detail::Stmt::None:
-        break;
+    if (l.stmt != detail::Stmt::None) {
+      pc = step(l, pc, next);
+      continue;
     }
     block(l);
-    ++pc;
-    if (prog_.ended) return;
+    pc = next;
+    if (sum_.ended) return;
     if (return_) {
       return_ = false;
       if (depth == 0) fail(SourcePos{l.number, 1}, "M99 in the main program: no caller to return to");
@@ -172,26 +181,50 @@ void Reader::exec(std::size_t program, int depth) {
     if (call_) {
       const Call c = *call_;
       call_.reset();
-      std::size_t target = st_.programs.size();
-      for (std::size_t i = 0; i < st_.programs.size(); ++i) {
-        if (st_.programs[i].number == c.program) target = i;
-      }
-      if (target == st_.programs.size()) fail(c.pos, fmt::format("M98 calls program %{}: there is none", c.program));
-      if (depth + 1 > detail::kMaxCallDepth) {
-        fail(c.pos, fmt::format("subprogram calls nested deeper than {}", detail::kMaxCallDepth));
-      }
-      for (std::int64_t k = 0; k < c.repeats && !prog_.ended; ++k) {
-        // #30 and #32 (lathe: X as programmed and Z) or #30 and #31 (mill: the plane's
-        // first and second axes) hold the current position at each call, in mm.
-        const bool lathe = opt_.machine == Machine::Lathe;
-        const double unit = double(kNmPerMm) * (m_.inch ? 25.4 : 1.0);  // the program's unit (G20/G21)
-        const double u = double(at_.u) / unit, v = double(at_.v) / unit;
-        macro_.set(30, lathe ? (m_.diameter ? 2 * v : v) : u);
-        macro_.set(lathe ? 32 : 31, lathe ? u : v);
-        exec(target, depth + 1);
-      }
-      if (prog_.ended) return;
+      call(c, depth);
+      if (sum_.ended) return;
     }
+  }
+}
+
+// A statement line at `at`: where the program goes on.
+detail::LinePos Reader::step(const detail::Line& l, const detail::LinePos& at, const detail::LinePos& next) {
+  const auto match = [&]() -> const detail::StmtMark& { return st_.marks[st_.mark(at.offset).jump]; };
+  switch (l.stmt) {
+    case detail::Stmt::Assign:
+      macro_.assign(l);
+      return next;
+    case detail::Stmt::While:  // a false condition goes past its ENDW, or its ELSE or ENDIF
+    case detail::Stmt::If:
+      return macro_.truth(l) ? next : match().next;
+    case detail::Stmt::EndW:  // back to its WHILE's test
+      return match().at;
+    case detail::Stmt::Else:  // the end of the IF's true branch: past its ENDIF
+      return match().next;
+    default:
+      return next;
+  }
+}
+
+// M98: runs the subprogram c.program c.repeats times.
+void Reader::call(const Call& c, int depth) {
+  std::size_t target = st_.programs.size();
+  for (std::size_t i = 0; i < st_.programs.size(); ++i) {
+    if (st_.programs[i].number == c.program) target = i;
+  }
+  if (target == st_.programs.size()) fail(c.pos, fmt::format("M98 calls program %{}: there is none", c.program));
+  if (depth + 1 > detail::kMaxCallDepth) {
+    fail(c.pos, fmt::format("subprogram calls nested deeper than {}", detail::kMaxCallDepth));
+  }
+  for (std::int64_t k = 0; k < c.repeats && !sum_.ended; ++k) {
+    // #30 and #32 (lathe: X as programmed and Z) or #30 and #31 (mill: the plane's
+    // first and second axes) hold the current position at each call, in mm.
+    const bool lathe = opt_.machine == Machine::Lathe;
+    const double unit = double(kNmPerMm) * (m_.inch ? 25.4 : 1.0);  // the program's unit (G20/G21)
+    const double u = double(at_.u) / unit, v = double(at_.v) / unit;
+    macro_.set(30, lathe ? (m_.diameter ? 2 * v : v) : u);
+    macro_.set(lathe ? 32 : 31, lathe ? u : v);
+    exec(target, depth + 1);
   }
 }
 
@@ -231,14 +264,14 @@ void Reader::block(const detail::Line& l) {
             fail(w.pos, "G36/G37 (diameter or radius X) are lathe codes (--machine lathe)");
           set_group(4, w, "X mode");
         } else if (g == 400) {
-          prog_.ignored.push_back({w.pos, name(w)});
+          ignore(w);
         } else if (g == 410 || g == 420) {
           fail(w.pos, "tool radius compensation (G41/G42) is not supported: program the tool's path");
         } else if (g == 40) {
           set_group(6, w, "dwell");
-          prog_.ignored.push_back({w.pos, name(w)});
+          ignore(w);
         } else if ((g >= 540 && g <= 590 && g % 10 == 0) || g == 940 || g == 950 || g == 800) {
-          prog_.ignored.push_back({w.pos, name(w)});
+          ignore(w);
         } else {
           fail(w.pos, "unknown or unsupported code " + name(w));
         }
@@ -249,7 +282,7 @@ void Reader::block(const detail::Line& l) {
         if (m == 2 || m == 30) {
           end = true;
         } else if (m == 0 || m == 1 || m == 3 || m == 4 || m == 5 || m == 8 || m == 9) {
-          prog_.ignored.push_back({w.pos, name(w)});
+          ignore(w);
         } else if (m == 98) {
           m98 = w.pos;
         } else if (m == 99) {
@@ -261,7 +294,7 @@ void Reader::block(const detail::Line& l) {
       }
       case 'S':
       case 'T':
-        prog_.ignored.push_back({w.pos, name(w)});
+        ignore(w);
         break;
       case 'F': {
         const double f = double(w.mantissa) / double(pow10(w.decimals));
@@ -287,7 +320,7 @@ void Reader::block(const detail::Line& l) {
   if (group[6]) {  // G04: X, U or P is the dwell time, nothing moves
     for (const auto& [c, w] : axes) {
       if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
-      prog_.ignored.push_back({w->pos, name(*w)});
+      ignore(*w);
     }
   } else if (m98) {  // M98 P (program number) L (repeats, default 1): nothing else moves
     if (return_) fail(*m98, "M98 and M99 in one block: call or return, not both");
@@ -310,7 +343,7 @@ void Reader::block(const detail::Line& l) {
     const bool moves = !axes.empty() || (group[0] && (m_.motion == 20 || m_.motion == 30));
     if (moves) motion(axes, group[0] ? group[0]->pos : first, n);
   }
-  if (end) prog_.ended = true;
+  if (end) sum_.ended = true;
 }
 
 void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n) {
@@ -368,7 +401,7 @@ void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& wh
     mv.kind = m_.motion == 62 ? MoveKind::EllipseCw : MoveKind::EllipseCcw;
     ellipse(mv, axes, where);
   }
-  prog_.moves.push_back(mv);
+  out_.on_move(mv);
   at_ = to;
 }
 
@@ -486,11 +519,104 @@ void Reader::ellipse(Move& mv, const std::map<char, const Word*>& axes, const So
   mv.full = mv.from == mv.to;
 }
 
+[[noreturn]] void cannot_read(const std::string& path, int err) {
+  throw InputError("program = '" + path + "' is invalid: cannot read it (" + std::strerror(err) + ")");
+}
+
+// A read-only stream buffer over a C file (of the program `path`), which it closes;
+// seekable, and a seek within what it holds (a loop's jump back to its WHILE, most
+// often) costs no system call. A read error is an InputError.
+class FileBuf : public std::streambuf {
+ public:
+  FileBuf(std::FILE* f, const std::string& path) : f_(f), path_(path) {}
+  ~FileBuf() override { std::fclose(f_); }
+  FileBuf(const FileBuf&) = delete;
+  FileBuf& operator=(const FileBuf&) = delete;
+
+ protected:
+  int_type underflow() override {
+    start_ += egptr() - eback();
+    const std::size_t n = std::fread(buf_.data(), 1, buf_.size(), f_);
+    if (n == 0 && std::ferror(f_)) cannot_read(path_, errno);
+    setg(buf_.data(), buf_.data(), buf_.data() + n);
+    return n == 0 ? traits_type::eof() : traits_type::to_int_type(buf_[0]);
+  }
+  pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode which) override {
+    if (dir == std::ios_base::cur) return seekpos(pos_type(start_ + (gptr() - eback()) + off), which);
+    if (dir == std::ios_base::beg) return seekpos(pos_type(off), which);
+    return pos_type(off_type(-1));  // (from the end: not needed)
+  }
+  pos_type seekpos(pos_type pos, std::ios_base::openmode /*which*/) override {
+    const off_type p = pos;
+    if (p >= start_ && p <= start_ + (egptr() - eback())) {
+      setg(eback(), eback() + (p - start_), egptr());
+      return pos;
+    }
+    if (p < 0 || fseeko(f_, p, SEEK_SET) != 0) return pos_type(off_type(-1));
+    start_ = p;
+    setg(buf_.data(), buf_.data(), buf_.data());
+    return pos;
+  }
+
+ private:
+  std::FILE* f_;
+  std::string path_;
+  std::array<char, 65536> buf_;
+  off_type start_ = 0;  // the file's offset of eback()
+};
+
+class FileStream : public std::istream {
+ public:
+  FileStream(std::FILE* f, const std::string& path) : std::istream(nullptr), buf_(f, path) { rdbuf(&buf_); }
+
+ private:
+  FileBuf buf_;
+};
+
+// Standard input, which cannot seek, copied to an anonymous temporary file (removed by
+// the system when it is closed).
+std::FILE* copy_stdin() {
+  std::FILE* f = std::tmpfile();
+  if (!f) cannot_read("-", errno);
+  const auto give_up = [f] {
+    const int err = errno;
+    std::fclose(f);
+    cannot_read("-", err);
+  };
+  std::vector<char> chunk(65536);
+  for (std::streamsize n; (n = std::cin.rdbuf()->sgetn(chunk.data(), std::streamsize(chunk.size()))) > 0;) {
+    if (std::fwrite(chunk.data(), 1, std::size_t(n), f) != std::size_t(n)) give_up();
+  }
+  if (std::fflush(f) != 0 || std::fseek(f, 0, SEEK_SET) != 0) give_up();
+  return f;
+}
+
 }  // namespace
 
 Program read(std::string_view text, const std::string& file, const ReadOptions& opt) {
-  Reader r(file, opt);
-  return r.run(detail::parse_lines(text, file));
+  std::istringstream in{std::string(text)};
+  Program p;
+  const std::function<void(const Move&)> keep = [&p](const Move& m) { p.moves.push_back(m); };
+  ReadSummary s = Reader(in, file, opt, Output{keep, std::numeric_limits<std::size_t>::max()}).run();
+  p.ignored = std::move(s.ignored);
+  p.start = s.start;
+  p.ended = s.ended;
+  return p;
+}
+
+ReadSummary read_stream(std::istream& in, const std::string& file, const ReadOptions& opt,
+                        const std::function<void(const Move&)>& on_move) {
+  return Reader(in, file, opt, Output{on_move, kMaxIgnoredKept}).run();
+}
+
+std::unique_ptr<std::istream> open_program(const std::string& path) {
+  if (path == "-") return std::make_unique<FileStream>(copy_stdin(), path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("program = '" + path + "' is invalid: it is a directory");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) cannot_read(path, errno);
+  return std::make_unique<FileStream>(f, path);
 }
 
 }  // namespace dda::program

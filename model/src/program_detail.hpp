@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Inside the program reader: the words, macro statements and expressions of each line
-// (program_grammar.cpp, PEGTL) that the interpreter (program.cpp, program_macro.cpp)
-// turns into motion blocks.
+// Inside the program reader: the lines of a stream, one at a time, and the words, macro
+// statements and expressions of each (program_grammar.cpp, PEGTL) that the interpreter
+// (program.cpp, program_macro.cpp) turns into motion blocks.
 #pragma once
 
 #include <cstdint>
+#include <istream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -76,8 +77,46 @@ struct Line {
 // Lines longer than this are refused (RS274 allows 256 characters).
 inline constexpr std::size_t kMaxLineLength = 4096;
 
-// Splits the text into lines and each line into words or a macro statement; throws
-// ProgramError at the first character that does not fit.
-std::vector<Line> parse_lines(std::string_view text, const std::string& file);
+// Where a line starts: its first byte's offset from the start of the stream and its
+// number (1-based).
+struct LinePos {
+  std::uint64_t offset = 0;
+  std::size_t number = 1;
+};
+
+// The lines of a program in a seekable stream, read one at a time. A line ends at '\n'
+// (a '\r' before it, or before the end of the stream, is dropped) or at the end of the
+// stream, so a text ending in '\n' has an empty last line; a UTF-8 byte-order mark at
+// the start is skipped. Only the line being read is held, and at most kMaxLineLength + 1
+// of its characters (a longer line is refused, a '%' line of any length is a header).
+class LineStream {
+ public:
+  // Throws InputError if the stream cannot tell its position.
+  LineStream(std::istream& in, const std::string& file);
+  LinePos first() const { return first_; }
+  // Reads the line at `at` (seeking there unless it is the one after the last read) into
+  // `out`: a '%' header, or its words or macro statement; throws ProgramError at the
+  // first character that does not fit. Returns where the next line starts.
+  LinePos read(const LinePos& at, Line& out);
+  // Whether the line read last ended at the end of the stream (it was the last line).
+  bool at_end() const { return at_end_; }
+
+ private:
+  void seek(std::uint64_t offset);
+  void take(char c);  // one character of the line being read
+  std::streambuf* sb_;
+  std::string file_;
+  std::streampos base_;
+  LinePos first_;
+  std::uint64_t pos_ = 0;  // the offset sb_ reads next
+  bool at_end_ = false;
+  // The line being read: its first characters, its length, and whether its first
+  // character other than a blank is '%' (then the digits after it: the program number).
+  std::string text_;
+  std::size_t length_ = 0;
+  enum class Lead { Blanks, Header, Other } lead_ = Lead::Blanks;
+  bool digits_ = false;  // in the header's digits
+  std::int64_t program_ = -1;
+};
 
 }  // namespace dda::program::detail

@@ -3,11 +3,13 @@
 // number or a macro expression, blanks allowed between them), comments in parentheses
 // that close on the line, and an optional ';' comment to the end of the line; or a macro
 // statement (#n = expression, WHILE, ENDW, IF, ELSE, ENDIF: HNC-21T's). A line starting
-// with '%' marks a program's start and may give its number (%2).
+// with '%' marks a program's start and may give its number (%2). The lines are read from
+// a stream one at a time (LineStream), as often as the interpreter runs them.
 #include <tao/pegtl.hpp>
 
 #include <cctype>
 #include <limits>
+#include <string>
 
 #include "program_detail.hpp"
 
@@ -386,58 +388,100 @@ struct action<kw_else> : stmt_action<Stmt::Else> {};
 template <>
 struct action<kw_endif> : stmt_action<Stmt::EndIf> {};
 
+// One line's text (not a '%' header, at most kMaxLineLength characters) parsed into its
+// words or its statement.
+Line parse_line(std::string_view raw, std::size_t number, const std::string& file) {
+  State s;
+  s.line = number;
+  pg::memory_input<> in(raw.data(), raw.size(), file);
+  try {
+    pg::parse<line, action, control>(in, s);
+  } catch (const pg::parse_error& e) {
+    const auto& p = e.positions().front();
+    throw ProgramError(file, number, p.column, std::string(e.message()));
+  }
+  Line l;
+  l.number = number;
+  l.words = std::move(s.words);
+  l.nodes = std::move(s.nodes);
+  l.stmt = s.stmt;
+  l.target = s.target;
+  l.value = s.value;
+  l.stmt_pos = s.stmt_pos;
+  return l;
+}
+
+bool is_end(std::char_traits<char>::int_type c) {
+  return std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof());
+}
+
 }  // namespace
 
-std::vector<Line> parse_lines(std::string_view text, const std::string& file) {
-  std::vector<Line> out;
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
-  std::size_t start = 0, number = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find('\n', start);
-    const bool last = end == std::string_view::npos;
-    if (last) end = text.size();
-    std::string_view raw = text.substr(start, end - start);
-    if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
-    ++number;
-    Line l;
-    l.number = number;
-    const std::size_t first = raw.find_first_not_of(" \t");
-    if (first != std::string_view::npos && raw[first] == '%') {
-      l.header = true;  // the rest of a '%' line names the program: its number, if digits follow
-      std::size_t i = first + 1;
-      std::int64_t n = 0;
-      bool any = false;
-      while (i < raw.size() && std::isdigit(static_cast<unsigned char>(raw[i])) && n < 100000000) {
-        n = 10 * n + (raw[i++] - '0');
-        any = true;
-      }
-      if (any) l.program = n;
-    } else if (raw.size() > kMaxLineLength) {
-      // (Bounds the grammar's and the evaluator's recursion: brackets and signs nest.)
-      throw ProgramError(file, number, kMaxLineLength + 1,
-                         "a line of more than " + std::to_string(kMaxLineLength) + " characters");
-    } else {
-      State s;
-      s.line = number;
-      pg::memory_input<> in(raw.data(), raw.size(), file);
-      try {
-        pg::parse<line, action, control>(in, s);
-      } catch (const pg::parse_error& e) {
-        const auto& p = e.positions().front();
-        throw ProgramError(file, number, p.column, std::string(e.message()));
-      }
-      l.words = std::move(s.words);
-      l.nodes = std::move(s.nodes);
-      l.stmt = s.stmt;
-      l.target = s.target;
-      l.value = s.value;
-      l.stmt_pos = s.stmt_pos;
-    }
-    out.push_back(std::move(l));
-    if (last) break;
-    start = end + 1;
+LineStream::LineStream(std::istream& in, const std::string& file) : sb_(in.rdbuf()), file_(file) {
+  const std::streampos bad(std::streamoff(-1));
+  base_ = sb_ ? sb_->pubseekoff(0, std::ios::cur, std::ios::in) : bad;
+  if (base_ == bad) throw InputError(file + ": the program's stream cannot seek");
+  char bom[3];
+  pos_ = std::uint64_t(sb_->sgetn(bom, 3));
+  if (pos_ == 3 && std::string_view(bom, 3) == "\xEF\xBB\xBF") first_.offset = 3;  // a UTF-8 byte-order mark
+  text_.reserve(kMaxLineLength + 1);
+}
+
+void LineStream::seek(std::uint64_t offset) {
+  if (offset == pos_) return;
+  if (sb_->pubseekpos(base_ + std::streamoff(offset), std::ios::in) == std::streampos(std::streamoff(-1))) {
+    throw InputError(file_ + ": the program's stream cannot seek");
   }
-  return out;
+  pos_ = offset;
+}
+
+void LineStream::take(char c) {
+  if (text_.size() <= kMaxLineLength) text_ += c;
+  ++length_;
+  if (lead_ == Lead::Blanks && c != ' ' && c != '\t') {
+    lead_ = c == '%' ? Lead::Header : Lead::Other;
+    digits_ = lead_ == Lead::Header;
+  } else if (digits_) {
+    // The rest of a '%' line names the program: its number, if digits follow (read
+    // while the number is below 10^8).
+    const std::int64_t n = program_ < 0 ? 0 : program_;
+    digits_ = std::isdigit(static_cast<unsigned char>(c)) && n < 100000000;
+    if (digits_) program_ = 10 * n + (c - '0');
+  }
+}
+
+LinePos LineStream::read(const LinePos& at, Line& out) {
+  seek(at.offset);
+  text_.clear();
+  length_ = 0;
+  lead_ = Lead::Blanks;
+  digits_ = false;
+  program_ = -1;
+  bool cr = false;  // a '\r' held back: dropped if the line ends after it
+  for (;;) {
+    const auto c = sb_->sbumpc();
+    at_end_ = is_end(c);
+    if (at_end_) break;
+    ++pos_;
+    const char ch = std::char_traits<char>::to_char_type(c);
+    if (ch == '\n') break;
+    if (cr) take('\r');
+    cr = ch == '\r';
+    if (!cr) take(ch);
+  }
+  if (lead_ == Lead::Header) {
+    out = Line{};
+    out.number = at.number;
+    out.header = true;
+    out.program = program_;
+  } else if (length_ > kMaxLineLength) {
+    // (Bounds the grammar's and the evaluator's recursion: brackets and signs nest.)
+    throw ProgramError(file_, at.number, kMaxLineLength + 1,
+                       "a line of more than " + std::to_string(kMaxLineLength) + " characters");
+  } else {
+    out = parse_line(text_, at.number, file_);
+  }
+  return LinePos{pos_, at.number + 1};
 }
 
 }  // namespace dda::program::detail

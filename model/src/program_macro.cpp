@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The macro language of the program reader (docs/programs.md, "Macros"): variables,
 // expressions in IEEE double with the deterministic sines (det_math.hpp), and the
-// programs' structure (WHILE/ENDW and IF/ELSE/ENDIF matched, subprograms by number).
+// programs' structure (WHILE/ENDW and IF/ELSE/ENDIF matched, subprograms by number),
+// read from the stream in a first pass and kept as the offsets of headers and statements.
 #include "program_macro.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "dda/det_math.hpp"
 
@@ -137,76 +141,119 @@ std::string fmt_value(double v) {
   return s == "-0" ? "0" : s;
 }
 
-Structure structure(const std::vector<Line>& lines, const std::string& file) {
-  Structure st;
-  st.jump.assign(lines.size(), 0);
-  const auto fail = [&](const SourcePos& p, const std::string& msg) {
-    throw ProgramError(file, p.line, p.column, msg);
-  };
-  // Programs: cut at '%' lines; text before the first is a program without a number.
-  std::size_t begin = 0;
-  std::int64_t number = -1;
-  const auto close = [&](std::size_t end) {
-    bool content = false;
-    for (std::size_t i = begin; i < end; ++i)
-      content = content || !lines[i].words.empty() || lines[i].stmt != Stmt::None;
-    if (number >= 0) {
-      for (const ProgramText& p : st.programs) {
-        if (p.number == number) {
-          fail(SourcePos{lines[begin - 1].number, 1},
-               fmt::format("program %{} is defined twice (first at line {})", number, lines[p.begin - 1].number));
-        }
-      }
-    }
-    if (content || number >= 0) st.programs.push_back(ProgramText{number, begin, end, content});
-  };
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (!lines[i].header) continue;
-    close(i);
-    begin = i + 1;
-    number = lines[i].program;
+namespace {
+
+// Builds the structure line by line; keeps the first error of each kind, thrown once
+// every line has been parsed (a syntax error anywhere comes first).
+class Builder {
+ public:
+  Builder(const std::string& file, const LinePos& first) : file_(file) { cur_.begin = first; }
+  void add(const Line& l, const LinePos& at, const LinePos& next);
+  Structure finish(std::size_t end);  // end: the last line's number + 1
+
+ private:
+  void close(std::size_t end);  // the program being read ends before line `end`
+  void match(const Line& l, const LinePos& at, const LinePos& next);
+  void defer(std::optional<ProgramError>& first, const SourcePos& p, const std::string& msg) const {
+    if (!first) first.emplace(file_, p.line, p.column, msg);
   }
-  close(lines.size());
-  // Matching WHILE/ENDW and IF/ELSE/ENDIF inside each program.
-  for (const ProgramText& p : st.programs) {
-    std::vector<std::size_t> open;  // WHILE and IF lines (an IF's ELSE replaces it)
-    for (std::size_t i = p.begin; i < p.end; ++i) {
-      const Line& l = lines[i];
-      const auto top_is = [&](Stmt k) { return !open.empty() && lines[open.back()].stmt == k; };
-      switch (l.stmt) {
-        case Stmt::While:
-        case Stmt::If:
-          open.push_back(i);
-          break;
-        case Stmt::EndW:
-          if (!top_is(Stmt::While)) fail(l.stmt_pos, open.empty() ? "ENDW without WHILE" : "ENDW inside an open IF");
-          st.jump[i] = open.back();
-          st.jump[open.back()] = i;
-          open.pop_back();
-          break;
-        case Stmt::Else:
-          if (!top_is(Stmt::If))
-            fail(l.stmt_pos, open.empty() ? "ELSE without IF" : "ELSE inside an open WHILE or ELSE");
-          st.jump[open.back()] = i;  // a false condition goes past the ELSE
-          open.back() = i;
-          break;
-        case Stmt::EndIf:
-          if (!top_is(Stmt::If) && !top_is(Stmt::Else)) {
-            fail(l.stmt_pos, open.empty() ? "ENDIF without IF" : "ENDIF inside an open WHILE");
-          }
-          st.jump[open.back()] = i;
-          open.pop_back();
-          break;
-        default:
-          break;
-      }
-    }
-    if (!open.empty()) {
-      const Line& l = lines[open.back()];
-      fail(l.stmt_pos, l.stmt == Stmt::While ? "WHILE without ENDW in its program" : "IF without ENDIF in its program");
+  std::string file_;
+  Structure st_;
+  ProgramText cur_;                                // the program being read
+  std::map<std::int64_t, std::size_t> headers_;    // a program's number: its header's line
+  std::vector<std::size_t> open_;                  // its open WHILE and IF marks (an IF's ELSE replaces it)
+  std::optional<ProgramError> twice_, unmatched_;  // a program defined twice; a statement unmatched
+};
+
+void Builder::add(const Line& l, const LinePos& at, const LinePos& next) {
+  if (l.header) {  // programs are cut at '%' lines; text before the first is a program without a number
+    close(at.number);
+    cur_ = ProgramText{l.program, next, 0, false};
+    return;
+  }
+  cur_.content = cur_.content || !l.words.empty() || l.stmt != Stmt::None;
+  if (l.stmt != Stmt::None && l.stmt != Stmt::Assign) match(l, at, next);
+}
+
+void Builder::close(std::size_t end) {
+  cur_.end = end;
+  if (cur_.number >= 0) {
+    const std::size_t header = cur_.begin.number - 1;
+    const auto [first, fresh] = headers_.emplace(cur_.number, header);
+    if (!fresh) {
+      defer(twice_, SourcePos{header, 1},
+            fmt::format("program %{} is defined twice (first at line {})", cur_.number, first->second));
     }
   }
-  return st;
+  if (!open_.empty()) {
+    const StmtMark& m = st_.marks[open_.back()];
+    defer(unmatched_, m.pos,
+          m.stmt == Stmt::While ? "WHILE without ENDW in its program" : "IF without ENDIF in its program");
+    open_.clear();
+  }
+  if (cur_.content || cur_.number >= 0) st_.programs.push_back(cur_);
+}
+
+// Matches WHILE/ENDW and IF/ELSE/ENDIF inside the program being read.
+void Builder::match(const Line& l, const LinePos& at, const LinePos& next) {
+  const std::size_t i = st_.marks.size();
+  st_.marks.push_back(StmtMark{at, next, l.stmt, l.stmt_pos, 0});
+  const auto top_is = [&](Stmt k) { return !open_.empty() && st_.marks[open_.back()].stmt == k; };
+  switch (l.stmt) {
+    case Stmt::While:
+    case Stmt::If:
+      open_.push_back(i);
+      return;
+    case Stmt::EndW:
+      if (!top_is(Stmt::While)) {
+        return defer(unmatched_, l.stmt_pos, open_.empty() ? "ENDW without WHILE" : "ENDW inside an open IF");
+      }
+      st_.marks[i].jump = open_.back();
+      st_.marks[open_.back()].jump = i;
+      open_.pop_back();
+      return;
+    case Stmt::Else:
+      if (!top_is(Stmt::If)) {
+        return defer(unmatched_, l.stmt_pos, open_.empty() ? "ELSE without IF" : "ELSE inside an open WHILE or ELSE");
+      }
+      st_.marks[open_.back()].jump = i;  // a false condition goes past the ELSE
+      open_.back() = i;
+      return;
+    case Stmt::EndIf:
+      if (!top_is(Stmt::If) && !top_is(Stmt::Else)) {
+        return defer(unmatched_, l.stmt_pos, open_.empty() ? "ENDIF without IF" : "ENDIF inside an open WHILE");
+      }
+      st_.marks[open_.back()].jump = i;
+      open_.pop_back();
+      return;
+    default:
+      return;
+  }
+}
+
+Structure Builder::finish(std::size_t end) {
+  close(end);
+  if (twice_) throw *twice_;
+  if (unmatched_) throw *unmatched_;
+  return std::move(st_);
+}
+
+}  // namespace
+
+const StmtMark& Structure::mark(std::uint64_t offset) const {
+  return *std::lower_bound(marks.begin(), marks.end(), offset,
+                           [](const StmtMark& m, std::uint64_t o) { return m.at.offset < o; });
+}
+
+Structure structure(LineStream& lines, const std::string& file) {
+  Builder b(file, lines.first());
+  Line l;
+  for (LinePos at = lines.first();;) {
+    const LinePos next = lines.read(at, l);
+    b.add(l, at, next);
+    if (lines.at_end()) return b.finish(next.number);
+    at = next;
+  }
 }
 
 }  // namespace dda::program::detail

@@ -41,20 +41,34 @@ class Macro {
   std::map<std::int64_t, double> vars_;
 };
 
-// A program of the file: the lines after its '%' header (number -1 for text before the
-// first header or a header without a number).
+// A program of the file: the lines after its '%' header, from `begin` to the line
+// before line `end` (number -1 for text before the first header or a header without a
+// number).
 struct ProgramText {
   std::int64_t number = -1;
-  std::size_t begin = 0, end = 0;
+  LinePos begin;
+  std::size_t end = 0;
   bool content = false;  // any word or statement
+};
+// A WHILE, ENDW, IF, ELSE or ENDIF line: where it is, where the line after it starts,
+// and its match (an index in Structure::marks): for WHILE its ENDW, ENDW its WHILE, IF
+// its ELSE or ENDIF, ELSE its ENDIF.
+struct StmtMark {
+  LinePos at, next;
+  Stmt stmt = Stmt::None;
+  SourcePos pos;  // the statement's
+  std::size_t jump = 0;
 };
 struct Structure {
   std::vector<ProgramText> programs;
-  // For WHILE: its ENDW; ENDW: its WHILE; IF: its ELSE or ENDIF; ELSE: its ENDIF.
-  std::vector<std::size_t> jump;
+  std::vector<StmtMark> marks;  // in the order of the file
+  // The mark of the statement line at `offset`.
+  const StmtMark& mark(std::uint64_t offset) const;
 };
-// Cuts the lines into programs and matches their statements; an unmatched WHILE, ENDW,
-// IF, ELSE or ENDIF is a ProgramError at it.
-Structure structure(const std::vector<Line>& lines, const std::string& file);
+// Reads every line of the stream (pass 1 of a read: every syntax error is thrown here),
+// cuts the lines into programs and matches their statements. Then, as a program number
+// defined twice or an unmatched WHILE, ENDW, IF, ELSE or ENDIF is a ProgramError at it,
+// throws the first of them (a program defined twice before any unmatched statement).
+Structure structure(LineStream& lines, const std::string& file);
 
 }  // namespace dda::program::detail

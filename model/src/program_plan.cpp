@@ -122,63 +122,94 @@ Point2 start_point(Machine m, Length first, Length second) {
 std::int64_t to_steps(Length v, Length step) { return round_div(v, step); }
 std::int64_t to_sub_steps(Length v, Length step) { return round_div(__int128(v) << kSubBits, step); }
 
+Point on_lattice(Point2 p, Length step) { return Point{to_steps(p.u, step), to_steps(p.v, step)}; }
+
+double rounding(Point q, Point2 p, Length step) {
+  return std::hypot(double(q.x) - double(p.u) / double(step), double(q.y) - double(p.v) / double(step));
+}
+
+BlockPlanner::BlockPlanner(const LatticeOptions& opt, Point2 start, std::string file, std::size_t window,
+                           std::function<void(BlockPlan&&)> on_block)
+    : opt_(opt), file_(std::move(file)), window_(std::max<std::size_t>(window, 1)), on_block_(std::move(on_block)) {
+  start_ = at_ = on_lattice(start, opt.step);
+  start_rounding_ = rounding(start_, start, opt.step);
+}
+
+void BlockPlanner::move(const Move& mv) {
+  last_ = mv.pos;
+  held_.push_back(mv);
+  if (held_.size() > window_) plan_front();
+}
+
+void BlockPlanner::plan_front() {
+  const Move& mv = held_.front();
+  const Length step = opt_.step;
+  BlockPlan b;
+  b.move = mv;
+  b.from = at_;
+  b.to = on_lattice(mv.to, step);
+  b.rounding = rounding(b.to, mv.to, step);
+  b.plan.from = b.plan.to = b.plan.arc_from = at_;
+  try {
+    if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
+      if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
+    } else if (b.from != b.to || mv.full || half_turn_or_more(mv)) {
+      // (A block whose rounded ends coincide and that sweeps less than half a turn is
+      // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
+      b.plan = plan_arc(arc_spec(mv, step, opt_.preload, b.from, b.to));
+    }
+  } catch (const ProgramError&) {
+    throw;
+  } catch (const InputError& e) {
+    fail(file_, mv, e.what());
+  }
+  b.first_piece = pieces_;
+  pieces_ += b.plan.pieces.size();
+  ++blocks_;
+  at_ = b.to;
+  held_.pop_front();
+  on_block_(std::move(b));
+}
+
+void BlockPlanner::finish() {
+  while (!held_.empty()) plan_front();
+  if (pieces_ == 0) {
+    throw ProgramError(file_, last_.line, last_.column,
+                       blocks_ == 0 ? "the program has no motion block: nothing to run"
+                                    : "the program's moves are all shorter than a step: nothing to run");
+  }
+}
+
 ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const std::string& file) {
   ProgramPlan pp;
   pp.lattice = opt;
-  const Length step = opt.step;
-  pp.start = Point{to_steps(prog.start.u, step), to_steps(prog.start.v, step)};
-  pp.start_rounding = std::hypot(double(pp.start.x) - double(prog.start.u) / double(step),
-                                 double(pp.start.y) - double(prog.start.v) / double(step));
-  Point at = pp.start;
-  for (const Move& mv : prog.moves) {
-    BlockPlan b;
-    b.move = mv;
-    b.from = at;
-    b.to = Point{to_steps(mv.to.u, step), to_steps(mv.to.v, step)};
-    b.rounding =
-        std::hypot(double(b.to.x) - double(mv.to.u) / double(step), double(b.to.y) - double(mv.to.v) / double(step));
-    b.plan.from = b.plan.to = b.plan.arc_from = at;
-    try {
-      if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
-        if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt.preload);
-      } else if (b.from != b.to || mv.full || half_turn_or_more(mv)) {
-        // (A block whose rounded ends coincide and that sweeps less than half a turn is
-        // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
-        b.plan = plan_arc(arc_spec(mv, step, opt.preload, b.from, b.to));
-      }
-    } catch (const ProgramError&) {
-      throw;
-    } catch (const InputError& e) {
-      fail(file, mv, e.what());
-    }
-    b.first_piece = pp.plan.pieces.size();
+  BlockPlanner planner(opt, prog.start, file, kDefaultWindow, [&](BlockPlan&& b) {
     for (const Piece& pc : b.plan.pieces) pp.plan.pieces.push_back(pc);
     pp.plan.iteration_bound += b.plan.iteration_bound;
-    at = b.to;
     pp.blocks.push_back(std::move(b));
-  }
-  if (pp.plan.pieces.empty()) {
-    const SourcePos where = prog.moves.empty() ? SourcePos{1, 1} : prog.moves.back().pos;
-    throw ProgramError(file, where.line, where.column,
-                       prog.moves.empty() ? "the program has no motion block: nothing to run"
-                                          : "the program's moves are all shorter than a step: nothing to run");
-  }
+  });
+  pp.start = planner.start();
+  pp.start_rounding = planner.start_rounding();
+  for (const Move& mv : prog.moves) planner.move(mv);
+  planner.finish();
   pp.plan.from = pp.plan.arc_from = pp.start;
-  pp.plan.to = at;
+  pp.plan.to = planner.end();
   pp.plan.program = true;
   return pp;
 }
 
-void check_hardware(const ProgramPlan& pp, const std::string& file) {
-  for (const BlockPlan& b : pp.blocks) {
-    for (const Piece& pc : b.plan.pieces) {
-      try {
-        hw::pack_command(pc.cmd);
-      } catch (const InputError& e) {
-        fail(file, b.move, std::string("beyond the hardware's widths: ") + e.what());
-      }
+void check_hardware(const BlockPlan& b, const std::string& file) {
+  for (const Piece& pc : b.plan.pieces) {
+    try {
+      hw::pack_command(pc.cmd);
+    } catch (const InputError& e) {
+      fail(file, b.move, std::string("beyond the hardware's widths: ") + e.what());
     }
   }
+}
+
+void check_hardware(const ProgramPlan& pp, const std::string& file) {
+  for (const BlockPlan& b : pp.blocks) check_hardware(b, file);
 }
 
 double block_distance(const BlockPlan& b, Length step, double x, double y) {

@@ -2,6 +2,7 @@
 #include "core_driver.hpp"
 
 #include <sstream>
+#include <utility>
 
 #include "dda/hw_command.hpp"
 
@@ -48,92 +49,114 @@ void reset_core(CoreHarness& h, int cycles) {
   h.set_reset(true);
 }
 
+CoreDrive::CoreDrive(CoreHarness& h, const DriveOptions& opt, std::function<void(const Iteration&)> on_record,
+                     std::function<void(const RegState&)> on_initial)
+    : h_(h), opt_(opt), on_record_(std::move(on_record)), on_initial_(std::move(on_initial)), start_(h.cycle()) {}
+
+void CoreDrive::present(const Piece& pc) {
+  if (pieces_ == 0) pos_ = from_ = pc.from;
+  ++pieces_;
+  limit_ += pc.iteration_bound + 4;
+  h_.set_command(true, hw::command_fields(pc.cmd));
+  running_.push_back(pc);
+  offering_ = true;
+}
+
+void CoreDrive::piece(const Piece& pc) {
+  if (res_.was_reset) return;
+  while (offering_) {
+    if (!edge()) return;
+  }
+  present(pc);
+}
+
+DriveResult CoreDrive::finish() {
+  while (!res_.was_reset && offering_) {
+    if (!edge()) break;
+  }
+  if (!res_.was_reset) h_.set_command(false);
+  while (!res_.was_reset && !running_.empty()) {
+    if (!edge()) break;
+  }
+  if (!res_.was_reset) {
+    res_.cycles = h_.cycle() - start_;
+    res_.end = pos_;
+  }
+  return std::move(res_);
+}
+
+bool CoreDrive::edge() {
+  const auto stop = [&] {
+    reset_core(h_, 1);
+    res_.cycles = h_.cycle() - start_;
+    res_.end = pos_;
+    res_.was_reset = true;
+    return false;
+  };
+  if (opt_.reset_at_cycle != 0 && h_.cycle() - start_ + 1 >= opt_.reset_at_cycle) return stop();
+  const bool ce = opt_.ce ? opt_.ce(h_.cycle()) : true;
+  ce_edges_ += ce;
+  h_.set_ce(ce);
+  const bool ready = offering_ && h_.cmd_ready();
+  const Signals pre = h_.sample();
+  h_.tick();
+  const Signals& post = h_.sample();
+  if (ready) {
+    if (!started_) {
+      res_.initial = CoreModel::datapath_regs(post);
+      if (on_initial_) on_initial_(res_.initial);
+    }
+    started_ = true;
+    offering_ = false;
+  }
+  if (!started_) {
+    if (h_.cycle() - start_ > 1000) throw GuardError("watchdog: command not accepted in 1000 cycles");
+    return true;
+  }
+  if (CoreModel::iterated(post)) {
+    ++res_.iterations;
+    Iteration rec = CoreModel::iteration_record(pre, post);
+    pos_ = pos_ + CoreModel::step_of(post);
+    rec.iter = res_.iterations;
+    rec.piece = done_pieces_;
+    rec.pos = pos_;
+    if (on_record_) on_record_(rec);
+    if (opt_.keep_records) res_.records.push_back(rec);
+    if (opt_.reset_after != 0 && res_.iterations == opt_.reset_after) return stop();
+  }
+  if (CoreModel::err(post)) {
+    std::ostringstream m;
+    m << "core raised err_o (stall) at cycle " << h_.cycle() << " after " << res_.iterations << " iterations at ("
+      << pos_.x << ',' << pos_.y << ')';
+    throw GuardError(m.str());
+  }
+  if (CoreModel::done(post) && !running_.empty()) {
+    if (opt_.check && pos_ != running_.front().to) {
+      throw MismatchError(std::string(h_.name()) + " mismatch: piece " + std::to_string(done_pieces_) + " ended at (" +
+                          std::to_string(pos_.x) + "," + std::to_string(pos_.y) + ") instead of its end point");
+    }
+    running_.pop_front();
+    ++done_pieces_;
+  }
+  if (ce_edges_ > (opt_.watchdog ? opt_.watchdog : limit_)) {
+    std::ostringstream m;
+    m << h_.name() << ": watchdog: no done_o after " << ce_edges_ << " edges with ce_i high (" << res_.iterations
+      << " iterations, piece " << done_pieces_ << " of " << pieces_ << ", at (" << pos_.x << ',' << pos_.y
+      << "), cycle " << h_.cycle() << ")";
+    throw GuardError(m.str());
+  }
+  return true;
+}
+
 DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt) {
-  DriveResult res;
-  const std::uint64_t start = h.cycle();
-  const auto ce_at = [&](std::uint64_t c) { return opt.ce ? opt.ce(c) : true; };
+  DriveOptions o = opt;
   // Watchdog: edges with ce_i high beyond the golden run's own iterations (plus the loads
   // and a margin) mean the core is not finishing.
-  const std::uint64_t limit = run(plan).iterations + 4 * plan.pieces.size() + 64;
-  std::uint64_t ce_edges = 0;
-  const std::size_t npieces = plan.pieces.size();
-
-  // The pieces' commands are presented back to back: the next one as soon as the
-  // previous one was taken (valid/ready: held until a rising edge where ready was high).
-  std::size_t presented = 0, running = 0;
-  h.set_command(true, hw::command_fields(plan.pieces[0].cmd));
-  Point pos = plan.from;
-  bool started = false;  // the first command was taken
-  for (;;) {
-    if (opt.reset_at_cycle != 0 && h.cycle() - start + 1 >= opt.reset_at_cycle) {
-      reset_core(h, 1);
-      res.cycles = h.cycle() - start;
-      res.end = pos;
-      res.was_reset = true;
-      return res;
-    }
-    const bool ce = ce_at(h.cycle());
-    ce_edges += ce;
-    h.set_ce(ce);
-    const bool offering = presented < npieces;
-    const bool ready = offering && h.cmd_ready();
-    const Signals pre = h.sample();
-    h.tick();
-    const Signals& post = h.sample();
-    if (ready) {
-      if (!started) res.initial = CoreModel::datapath_regs(post);
-      started = true;
-      ++presented;
-      if (presented < npieces) {
-        h.set_command(true, hw::command_fields(plan.pieces[presented].cmd));
-      } else {
-        h.set_command(false);
-      }
-    }
-    if (!started) {
-      if (h.cycle() - start > 1000) throw GuardError("watchdog: command not accepted in 1000 cycles");
-      continue;
-    }
-    if (CoreModel::iterated(post)) {
-      ++res.iterations;
-      Iteration rec = CoreModel::iteration_record(pre, post);
-      pos = pos + CoreModel::step_of(post);
-      rec.iter = res.iterations;
-      rec.piece = static_cast<std::uint32_t>(running);
-      rec.pos = pos;
-      if (opt.keep_records) res.records.push_back(rec);
-      if (opt.reset_after != 0 && res.iterations == opt.reset_after) {
-        reset_core(h, 1);
-        res.cycles = h.cycle() - start;
-        res.end = pos;
-        res.was_reset = true;
-        return res;
-      }
-    }
-    if (CoreModel::err(post)) {
-      std::ostringstream m;
-      m << "core raised err_o (stall) at cycle " << h.cycle() << " after " << res.iterations << " iterations at ("
-        << pos.x << ',' << pos.y << ')';
-      throw GuardError(m.str());
-    }
-    if (CoreModel::done(post)) {
-      if (opt.check && pos != plan.pieces[running].to) {
-        throw MismatchError(std::string(h.name()) + " mismatch: piece " + std::to_string(running) + " ended at (" +
-                            std::to_string(pos.x) + "," + std::to_string(pos.y) + ") instead of its end point");
-      }
-      if (++running == npieces) break;
-    }
-    if (ce_edges > limit) {
-      std::ostringstream m;
-      m << h.name() << ": watchdog: no done_o after " << ce_edges << " edges with ce_i high (" << res.iterations
-        << " iterations, piece " << running << " of " << npieces << ", at (" << pos.x << ',' << pos.y << "), cycle "
-        << h.cycle() << ")";
-      throw GuardError(m.str());
-    }
-  }
-  res.cycles = h.cycle() - start;
-  res.end = pos;
-  if (opt.check && res.end != plan.to) {
+  if (o.watchdog == 0) o.watchdog = run(plan).iterations + 4 * plan.pieces.size() + 64;
+  CoreDrive d(h, o);
+  for (const Piece& pc : plan.pieces) d.piece(pc);
+  DriveResult res = d.finish();
+  if (!res.was_reset && opt.check && res.end != plan.to) {
     throw MismatchError(std::string(h.name()) + " ended at (" + std::to_string(res.end.x) + "," +
                         std::to_string(res.end.y) + ") instead of the end point");
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -72,6 +73,9 @@ struct DriveOptions {
   // Reset the core on this clock edge counted from the command's presentation (0:
   // never): any edge, the load edge and ce_i stalls included.
   std::uint64_t reset_at_cycle = 0;
+  // Edges with ce_i high after which a run without done_o is stopped (0: each piece's
+  // iteration bound plus the loads and a margin, summed as the pieces come).
+  std::uint64_t watchdog = 0;
 };
 
 struct DriveResult {
@@ -86,9 +90,41 @@ struct DriveResult {
 // Holds rst_ni low for `cycles` edges, then releases it.
 void reset_core(CoreHarness& h, int cycles = 2);
 
-// Runs one arc: hands over the command, clocks until done, samples every edge. The core
-// must be idle (just reset, or after an arc). Throws MismatchError (scoreboard),
-// GuardError (err_o, watchdog).
+// Drives a stream of pieces into the core: each piece's command is presented as soon as
+// the one before it was taken (valid/ready), as a user's system hands commands over back
+// to back, and every edge is sampled. piece() returns once the command before it has
+// been taken (or at once for the first); finish() clocks until the last piece is done.
+// Records go to on_record as the core makes them (and into the result with
+// keep_records). The core must be idle (just reset, or after a run). Memory: the pieces
+// presented and not yet done (at most two). Throws MismatchError (scoreboard, a piece
+// ending off its end point), GuardError (err_o, watchdog).
+class CoreDrive {
+ public:
+  CoreDrive(CoreHarness& h, const DriveOptions& opt = {}, std::function<void(const Iteration&)> on_record = {},
+            std::function<void(const RegState&)> on_initial = {});
+  void piece(const Piece& pc);
+  DriveResult finish();
+  bool was_reset() const { return res_.was_reset; }
+
+ private:
+  // One edge with the inputs as they are; false once the run is over (reset).
+  bool edge();
+  void present(const Piece& pc);
+  CoreHarness& h_;
+  DriveOptions opt_;
+  std::function<void(const Iteration&)> on_record_;
+  std::function<void(const RegState&)> on_initial_;
+  DriveResult res_;
+  std::uint64_t start_ = 0, ce_edges_ = 0, limit_ = 64, pieces_ = 0;
+  std::deque<Piece> running_;  // presented and not yet done: the front is running
+  bool offering_ = false;      // the back of running_ is offered and not yet taken
+  bool started_ = false;       // the first command was taken
+  Point pos_, from_;
+  std::uint32_t done_pieces_ = 0;
+};
+
+// Runs one plan's pieces through CoreDrive (the watchdog from the golden run's
+// iterations, unless given).
 DriveResult drive_arc(CoreHarness& h, const Plan& plan, const DriveOptions& opt = {});
 
 }  // namespace dda

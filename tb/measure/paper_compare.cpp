@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The lathe paper's macro program (304 G01 chords of the oblique ellipse) against the same
-// contour as one native ellipse block (issue 16; docs/results.md, "The lathe paper's macro
+// contour as one native ellipse block (docs/results.md, "The lathe paper's macro
 // program"). Both programs are read, planned and run on the golden model (the SystemC
 // model and the RTL run them identically: tests/check-examples.sh); over the contour's
 // blocks (G01 chords, or the G6.3 block) it measures blocks, core commands, steps,

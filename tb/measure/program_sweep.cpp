@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Accuracy sweep of arcs as part programs give them (issue 11): lattice start and end
+// Accuracy sweep of arcs as part programs give them: lattice start and end
 // points rounded from random points of the curve, full turns by point and by angle,
 // aspect ratios up to 1000, half of the ellipses rotated, and lines; a, b log-uniform in
 // [1, M], default width. Every case runs with half preload (the accuracy targets) and,

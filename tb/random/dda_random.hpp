@@ -26,7 +26,7 @@ enum class ArcKind {
   Quarter,  // quadrant I, counter-clockwise, sub-arcs of the quarter (the paper's case)
   Whole,    // any arc: random centre, start and end anywhere on the ellipse, both
             // directions, full turns, circles, quarter turns of the axes
-  Program,  // as part programs give them (issue 11): lattice start and end points
+  Program,  // as part programs give them: lattice start and end points
             // rounded from random points of the curve, full turns by point and by angle,
             // aspect ratios up to 1000, half of the ellipses rotated, and lines
 };

@@ -20,7 +20,7 @@ struct MixedStats {
   // Coverage of the arcs run to their end: [start quadrant][end quadrant][direction]
   // (quadrants of the first and last piece), full turns, circles, quarter-turned
   // ellipses, rotated ones, aspect ratio above 100, lines, arcs with lattice ends (the
-  // program kind: issue 11), and draws the planner refused.
+  // program kind), and draws the planner refused.
   long quadrant_pairs[4][4][2] = {};
   long full = 0, circles = 0, turned = 0, rotated = 0, thin = 0, lines = 0, program = 0, refused = 0;
   int pairs_covered() const;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Deterministic double-precision functions for the macro language (issue 16): sine,
+// Deterministic double-precision functions for the macro language (docs/programs.md): sine,
 // cosine, tangent and arc tangent in radians computed with IEEE 754 additions,
 // multiplications and divisions only (no libm, no fused multiply-add: the library is
 // built with -ffp-contract=off), so that a macro program computes the same bits, and a

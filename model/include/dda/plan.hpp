@@ -35,7 +35,7 @@ struct ArcSpec {
   // semi-axis to the end of the b semi-axis (parametric angles 0 and 90).
   std::optional<Point> from, to;
   std::optional<std::int64_t> from_theta, to_theta;
-  // Geometry between lattice points (part programs, issue 15): with sub > 0, a and b are
+  // Geometry between lattice points (part programs, docs/golden-model.md): with sub > 0, a and b are
   // in units of 2^-sub step and the centre is center + center_frac / 2^sub (each
   // component of center_frac in [0, 2^sub)). Such arcs run on the fixed-point datapath
   // of rotated ellipses (whatever the angle) and the anchored planner.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The part-program reader (issue 15, docs/programs.md): G-code of RS274 / ISO 6983 with
+// The part-program reader (docs/programs.md): G-code of RS274 / ISO 6983 with
 // modal groups, read with PEGTL into the motion blocks a program describes, in the
 // machine's plane and in integer nanometres (1e-6 mm), with each block's source
 // position. It is the planner's side, before the lattice: the geometry is as the
@@ -11,6 +11,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <istream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -94,7 +97,33 @@ struct ReadOptions {
   std::uint64_t max_lines = 10000000;
 };
 
-// Reads a program's text; `file` names it in error messages.
+// Reads a program's text; `file` names it in error messages. (It reads the text as a
+// stream with read_stream, keeping every move and every ignored word.)
 Program read(std::string_view text, const std::string& file, const ReadOptions& opt = {});
+
+// What a streamed read leaves besides the moves.
+struct ReadSummary {
+  std::vector<Ignored> ignored;     // the first kMaxIgnoredKept words that do not move (in order)
+  std::uint64_t ignored_count = 0;  // all of them
+  Point2 start;
+  bool ended = false;
+};
+inline constexpr std::size_t kMaxIgnoredKept = 1000;
+// Reads the program from `in` (a seekable stream: tellg/seekg must work) and calls
+// on_move for each motion block as the interpreter reaches it, in program order.
+// Memory: the structure of the programs and statements (offsets of '%' headers and of
+// WHILE/ENDW/IF/ELSE/ENDIF lines), the variables, the call stack and one line at a
+// time; never the whole text or a record per line. Two passes: the first parses every
+// line and matches the statements, so that every syntax or structure error is thrown
+// before any on_move call; the second seeks back and runs the lines, parsing each when
+// it runs (an error at run time, an undefined variable for one, may follow some calls).
+// Throws ProgramError as read() does.
+ReadSummary read_stream(std::istream& in, const std::string& file, const ReadOptions& opt,
+                        const std::function<void(const Move&)>& on_move);
+// Opens a program for read_stream: a path, or "-" for standard input (copied to an
+// anonymous temporary file, removed by the system when closed, since standard input
+// cannot seek). A path that is a directory, missing or unreadable throws InputError with
+// one line: "program = 'PATH' is invalid: it is a directory" / "...: cannot read it (<strerror>)".
+std::unique_ptr<std::istream> open_program(const std::string& path);
 
 }  // namespace dda::program

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// The planner for part programs (issue 15, docs/programs.md): a program's motion blocks
-// onto the lattice, each cut into core commands by the arc and line planners, all of
-// them back to back in one plan that every engine runs. Programmed geometry between
+// The planner for part programs (docs/programs.md): a program's motion blocks onto the
+// lattice, each cut into core commands by the arc and line planners, back to back in
+// the order the engines run them. Programmed geometry between
 // lattice points (centres, radii, semi-axes) is kept in sub-step units (1/2^kSubBits
 // step); end points are rounded to the nearest lattice point.
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +38,10 @@ Point2 start_point(Machine m, Length first, Length second);
 // sub-step units (1/2^kSubBits step).
 std::int64_t to_steps(Length v, Length step);
 std::int64_t to_sub_steps(Length v, Length step);
+// A point of the plane on the lattice (each coordinate rounded as to_steps), and the
+// distance (steps) between a lattice point and the programmed point it stands for.
+Point on_lattice(Point2 p, Length step);
+double rounding(Point q, Point2 p, Length step);
 
 struct BlockPlan {
   Move move;
@@ -53,7 +59,42 @@ struct ProgramPlan {
   Plan plan;                      // every block's pieces, back to back: what the engines run
 };
 
-// Plan every motion block. A block the planners refuse throws ProgramError naming it
+// How many motion blocks the planner holds before it plans the oldest: the lookahead
+// a speed planner will use. Each block is planned on its own today, so the window only
+// bounds what is held.
+inline constexpr std::size_t kDefaultWindow = 16;
+
+// The streaming planner: motion blocks in, in program order; each block planned once
+// `window` blocks stand behind it (or at finish()), and handed to on_block with its
+// lattice ends and pieces. A block the planners refuse throws ProgramError naming it.
+class BlockPlanner {
+ public:
+  BlockPlanner(const LatticeOptions& opt, Point2 start, std::string file, std::size_t window,
+               std::function<void(BlockPlan&&)> on_block);
+  Point start() const { return start_; }
+  double start_rounding() const { return start_rounding_; }
+  void move(const Move& mv);
+  // Plans what the window holds; throws ProgramError if nothing at all ran (no motion
+  // block, or every move shorter than a step).
+  void finish();
+  std::uint64_t pieces() const { return pieces_; }
+  Point end() const { return at_; }
+
+ private:
+  void plan_front();
+  LatticeOptions opt_;
+  std::string file_;
+  std::size_t window_;
+  std::function<void(BlockPlan&&)> on_block_;
+  std::deque<Move> held_;
+  Point start_, at_;
+  double start_rounding_ = 0;
+  std::uint64_t pieces_ = 0, blocks_ = 0;
+  SourcePos last_{1, 1};
+};
+
+// Plan every motion block (the whole program in memory: tests and vector sets). A block the planners refuse throws
+// ProgramError naming it
 // ("FILE:LINE:COLUMN: block N (arc cw): reason"). A program without a motion block
 // throws too (there is nothing to run).
 ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const std::string& file);
@@ -61,6 +102,7 @@ ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const s
 // Refuse (ProgramError naming the first block at fault) a plan with a command the
 // hardware's widths cannot hold: what `--engine systemc|rtl` runs.
 void check_hardware(const ProgramPlan& pp, const std::string& file);
+void check_hardware(const BlockPlan& b, const std::string& file);
 
 // Distance (steps, floating point: measurement only) of point (x, y) from a block's
 // programmed geometry: the segment between its programmed ends, its circle or its

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: Apache-2.0
+// What a careless user gives the `dda` command: each gets one line naming what is wrong
+// and exit status 2, and no file the tool did not write is ever deleted or overwritten.
+#define CATCH_CONFIG_MAIN
+#include <signal.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <thread>
+
+#include "cli_helpers.hpp"
+
+namespace {
+
+const std::string kPaper = "--a 10 --b 6 --bits 4 --preload zero";
+
+void write_file(const fs::path& p, const std::string& text) {
+  std::ofstream f(p, std::ios::binary);
+  f << text;
+}
+
+// Files in `dir` whose names hold ".tmp." or ".old.": a run's temporary files.
+int temporaries(const fs::path& dir) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const auto name = e.path().filename().string();
+    n += name.find(".tmp.") != std::string::npos || name.find(".old.") != std::string::npos;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("cli input: vectors --out-dir never deletes a file it did not write", "[cli][files]") {
+  Scratch s;
+  const fs::path dir = s.dir / "set";
+  fs::create_directories(dir);
+  write_file(dir / "manifest.json", "{}");
+  write_file(dir / "notes.txt", "mine");
+  Result r = run_dda(s, "vectors " + kPaper + " --out-dir " + dir.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("is not one `dda vectors` wrote: nothing is replaced") != std::string::npos);
+  CHECK(slurp(dir / "notes.txt") == "mine");
+  CHECK(slurp(dir / "manifest.json") == "{}");
+
+  // A set the tool wrote, with a user's file put beside it: refused, the file survives.
+  const fs::path set = s.dir / "own";
+  REQUIRE(run_dda(s, "vectors " + kPaper + " --out-dir " + set.string()).status == 0);
+  write_file(set / "notes.txt", "mine");
+  r = run_dda(s, "vectors " + kPaper + " --out-dir " + set.string());
+  CHECK(r.status == 2);
+  CHECK(r.err ==
+        "dda: error: out-dir = '" + set.string() +
+            "' is invalid: it holds 'notes.txt', which is not a file of its vector set: nothing is replaced\n");
+  CHECK(slurp(set / "notes.txt") == "mine");
+
+  // Without the foreign file the set is replaced, and nothing temporary is left.
+  fs::remove(set / "notes.txt");
+  r = run_dda(s, "vectors --line --from 0,0 --to 7,3 --out-dir " + set.string());
+  CHECK(r.status == 0);
+  CHECK(slurp(set / "manifest.json").find("--line") != std::string::npos);
+  CHECK(temporaries(s.dir) == 0);
+
+  // A non-empty directory without a manifest, and a file: refused.
+  const fs::path plain = s.dir / "plain";
+  fs::create_directories(plain);
+  write_file(plain / "a.txt", "x");
+  r = run_dda(s, "vectors " + kPaper + " --out-dir " + plain.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("holds no vector set (no manifest.json)") != std::string::npos);
+  CHECK(slurp(plain / "a.txt") == "x");
+  r = run_dda(s, "vectors " + kPaper + " --out-dir " + (plain / "a.txt").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("it exists and is not a directory") != std::string::npos);
+}
+
+TEST_CASE("cli input: a run ended by SIGTERM leaves no temporary file", "[cli][files]") {
+  Scratch s;
+  const fs::path out = s.dir / "trace.csv";
+  // A long run (an arc of 2^20 steps written as a trace), stopped once its temporary
+  // file exists.
+  const std::string cmd =
+      std::string(DDA_BIN) + " trace --a 1048576 --b 1048575 --out " + out.string() + " >/dev/null 2>&1 & echo $!";
+  FILE* p = ::popen(cmd.c_str(), "r");
+  REQUIRE(p);
+  int pid = 0;
+  REQUIRE(std::fscanf(p, "%d", &pid) == 1);
+  ::pclose(p);
+  bool seen = false;
+  for (int i = 0; i < 200 && !seen; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    seen = temporaries(s.dir) > 0;
+  }
+  REQUIRE(seen);
+  ::kill(pid, SIGTERM);
+  for (int i = 0; i < 200 && ::kill(pid, 0) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  CHECK(temporaries(s.dir) == 0);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("cli input: a killed run's temporary file is removed by the next run", "[cli][files]") {
+  Scratch s;
+  const fs::path out = s.dir / "path.csv";
+  // A PID that is not running (above the kernel's pid_max).
+  write_file(s.dir / "path.csv.tmp.999999999", "left by a killed run");
+  write_file(s.dir / "path.csv.tmp.notapid", "a user's file");
+  CHECK(run_dda(s, "path " + kPaper + " --out " + out.string()).status == 0);
+  CHECK_FALSE(fs::exists(s.dir / "path.csv.tmp.999999999"));
+  CHECK(slurp(s.dir / "path.csv.tmp.notapid") == "a user's file");
+}
+
+TEST_CASE("cli input: --out - writes standard output", "[cli]") {
+  Scratch s;
+  const Result a = run_dda(s, "path " + kPaper);
+  const Result b = run_dda(s, "path " + kPaper + " --out -");
+  CHECK(b.status == 0);
+  CHECK(b.out == a.out);
+  CHECK_FALSE(fs::exists(s.dir / "-"));
+}
+
+TEST_CASE("cli input: plot writes SVG only", "[cli][plot][errors]") {
+  Scratch s;
+  const Result r = run_dda(s, "plot " + kPaper + " --out " + (s.dir / "x.png").string());
+  CHECK(r.status == 2);
+  CHECK(r.err == "dda: error: out = '" + (s.dir / "x.png").string() +
+                     "' is invalid: plot writes SVG (a file name ending in .svg)\n");
+  CHECK(s.user_files() == 0);
+}
+
+TEST_CASE("cli input: a directory or a missing file as the program", "[cli][program][errors]") {
+  Scratch s;
+  Result r = run_dda(s, "stats --program " + s.dir.string());
+  CHECK(r.status == 2);
+  CHECK(r.err == "dda: error: program = '" + s.dir.string() + "' is invalid: it is a directory\n");
+  r = run_dda(s, "stats --program " + (s.dir / "none.ngc").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("dda: error: program = '" + (s.dir / "none.ngc").string() + "' is invalid: cannot read it", 0) ==
+        0);
+}
