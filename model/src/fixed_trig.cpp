@@ -2,6 +2,8 @@
 // Deterministic fixed-point trigonometry (see fixed_trig.hpp).
 #include "dda/fixed_trig.hpp"
 
+#include <array>
+
 #include <cctype>
 #include <cstdlib>
 
@@ -46,8 +48,31 @@ std::int64_t normalize_udeg(std::int64_t udeg) {
   return m < 0 ? m + kFullTurn : m;
 }
 
+namespace {
+
+SinCos sincos_uncached(std::int64_t t);
+
+}  // namespace
+
+// The planners ask for the same angles again and again (an ellipse's own angle beside
+// every point's, the same 1440 sample angles for every arc): a direct-mapped memo of the
+// pure function, per thread, returns the bits the series gives.
 SinCos sincos_udeg(std::int64_t udeg) {
+  struct Entry {
+    std::int64_t t = -1;
+    SinCos v;
+  };
+  constexpr int kBits = 12;
+  thread_local std::array<Entry, std::size_t{1} << kBits> memo;
   const std::int64_t t = normalize_udeg(udeg);
+  Entry& e = memo[(std::uint64_t(t) * 0x9E3779B97F4A7C15ull) >> (64 - kBits)];
+  if (e.t != t) e = Entry{t, sincos_uncached(t)};
+  return e.v;
+}
+
+namespace {
+
+SinCos sincos_uncached(std::int64_t t) {
   const int quadrant = static_cast<int>(t / kQuarterTurn);
   std::int64_t r = t % kQuarterTurn;  // [0, 90 degrees)
   const bool complement = r > kQuarterTurn / 2;
@@ -74,6 +99,8 @@ SinCos sincos_udeg(std::int64_t udeg) {
       return SinCos{c, s};
   }
 }
+
+}  // namespace
 
 std::int64_t parse_degrees(const std::string& name, const std::string& text) {
   const auto bad = [&](const std::string& rule) { return InputError(name + " = '" + text + "' is invalid: " + rule); };
