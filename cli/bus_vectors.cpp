@@ -168,7 +168,14 @@ BusOptions bus_options(const BusCli& c) {
   b.polarity = c.polarity;
   if (c.feed && c.feed_rate != 0) throw InputError("--feed and --feed-rate are alternatives: give one");
   if ((c.feed_rate != 0) != (c.clock_hz != 0)) throw InputError("--feed-rate and --clock go together");
-  if (c.feed_rate < 0 || c.clock_hz < 0) throw InputError("--feed-rate and --clock must be positive");
+  // (nan and inf fail these comparisons too.)
+  if (c.feed_rate != 0 && !(c.feed_rate > 0 && c.feed_rate <= 1e9)) {
+    throw InputError(
+        fmt::format("feed-rate = {} is out of range: steps per second, above 0 and at most 1e9", c.feed_rate));
+  }
+  if (c.clock_hz != 0 && !(c.clock_hz >= 1 && c.clock_hz <= 1e10)) {
+    throw InputError(fmt::format("clock = {} is out of range: Hz, from 1 to 1e10", c.clock_hz));
+  }
   b.feed = c.feed;
   b.feed_rate = c.feed_rate;
   b.clock_hz = c.clock_hz;

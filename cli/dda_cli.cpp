@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -49,9 +50,20 @@ std::int64_t parse_int(const std::string& name, const std::string& s, const char
   const char* b = s.data();
   const char* e = s.data() + s.size();
   auto [p, ec] = std::from_chars(b, e, v);
+  if (!s.empty() && ec == std::errc::result_out_of_range && p == e) {
+    throw InputError(name + " = '" + s + "' is out of range: " + rule);
+  }
   if (s.empty() || ec != std::errc() || p != e) {
     throw InputError(name + " = '" + s + "' is invalid: " + rule);
   }
+  return v;
+}
+
+// An integer option within [lo, hi]: "out of range" outside it.
+std::int64_t parse_int_in(const std::string& name, const std::string& s, std::int64_t lo, std::int64_t hi) {
+  const std::string rule = "an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+  const std::int64_t v = parse_int(name, s, rule.c_str());
+  if (v < lo || v > hi) throw InputError(name + " = '" + s + "' is out of range: " + rule);
   return v;
 }
 
@@ -383,8 +395,8 @@ int main(int argc, char** argv) {
       }
       vec::Options vo;
       vo.out_dir = ve_dir;
-      vo.seed = std::uint64_t(parse_int("seed", ve_seed, "a non-negative integer"));
-      vo.ce_percent = int(parse_int("ce-percent", ve_ce, "an integer from 1 to 100"));
+      vo.seed = std::uint64_t(parse_int_in("seed", ve_seed, 0, std::numeric_limits<std::int64_t>::max()));
+      vo.ce_percent = int(parse_int_in("ce-percent", ve_ce, 1, 100));
       vo.command_line = "dda";
       for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -417,7 +429,12 @@ int main(int argc, char** argv) {
     } else if (feedc->parsed()) {
       parse_enum<int>("format", fd.format, {{"markdown", 0}});
       if (fd.prog.given()) throw InputError("--program is invalid with feed: the feed table is one arc's");
-      write_feed_report(std::cout, make_plan(fd), fd_summary, fd_label);
+      if (fd.engine != "golden") throw InputError("--engine is invalid with feed: the planner computes the table");
+      if (!fd.vcd.empty()) throw InputError("--vcd is invalid with feed: the table runs no engine");
+      const Plan plan = make_plan(fd);
+      Output out(fd.out);
+      write_feed_report(out.stream(), plan, fd_summary, fd_label);
+      out.commit();
     } else if (plot->parsed()) {
       parse_enum<int>("format", pl.format, {{"svg", 0}});
       if (pl.out.empty() || pl.out == "-") throw InputError("plot needs --out FILE.svg: it writes a picture, not text");

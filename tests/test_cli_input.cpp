@@ -4,6 +4,7 @@
 #define CATCH_CONFIG_MAIN
 #include <signal.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <thread>
@@ -136,4 +137,54 @@ TEST_CASE("cli input: a directory or a missing file as the program", "[cli][prog
   CHECK(r.status == 2);
   CHECK(r.err.rfind("dda: error: program = '" + (s.dir / "none.ngc").string() + "' is invalid: cannot read it", 0) ==
         0);
+}
+
+TEST_CASE("cli input: numbers out of range, nan and inf are named", "[cli][errors]") {
+  Scratch s;
+  const std::string dir = " --out-dir " + (s.dir / "set").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"stats --a 99999999999999999999 --b 6", "a = '99999999999999999999' is out of range"},
+      {"stats --a nan --b 6", "a = 'nan' is invalid"},
+      {"stats --a 10 --b 6 --angle inf", "angle = 'inf' is invalid"},
+      {"stats --a 10 --b 6 --from-theta nan", "from-theta = 'nan' is invalid"},
+      {"vectors " + kPaper + " --seed -1" + dir, "seed = '-1' is out of range: an integer from 0 to"},
+      {"vectors " + kPaper + " --ce-percent 0" + dir, "ce-percent = '0' is out of range: an integer from 1 to 100"},
+      {"vectors " + kPaper + " --bus --ce-percent 0" + dir, "ce-percent = '0' is out of range"},
+      {"vectors " + kPaper + " --ce-percent 101" + dir, "ce-percent = '101' is out of range"},
+      {"vectors " + kPaper + " --bus --feed-rate nan --clock 1000" + dir, "feed-rate = nan is out of range"},
+      {"vectors " + kPaper + " --bus --feed-rate 100 --clock inf" + dir, "clock = inf is out of range"},
+      {"vectors " + kPaper + " --bus --feed-rate -5 --clock 1000" + dir, "feed-rate = -5 is out of range"},
+  };
+  for (const auto& [args, want] : cases) {
+    const Result r = run_dda(s, args);
+    INFO("dda " << args << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind("dda: error: " + want, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(s.user_files() == 0);
+  }
+}
+
+TEST_CASE("cli input: an option that does not apply is refused, not ignored", "[cli][errors]") {
+  Scratch s;
+  const std::pair<std::string, std::string> cases[] = {
+      {"feed " + kPaper + " --engine rtl", "--engine is invalid with feed"},
+      {"feed " + kPaper + " --vcd " + (s.dir / "w.vcd").string(), "--vcd is invalid with feed"},
+      {"vectors " + kPaper + " --vcd " + (s.dir / "w.vcd").string() + " --out-dir " + (s.dir / "set").string(),
+       "vectors write --out-dir DIR, not --out (nor --vcd, but with --bus"},
+      {"stats " + kPaper + " --machine lathe", "--machine, --start and --step go with --program FILE"},
+  };
+  for (const auto& [args, want] : cases) {
+    const Result r = run_dda(s, args);
+    INFO("dda " << args << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind("dda: error: " + want, 0) == 0);
+    CHECK(s.user_files() == 0);
+  }
+  // feed writes --out as every other table does.
+  const fs::path out = s.dir / "feed.md";
+  const Result r = run_dda(s, "feed " + kPaper + " --out " + out.string());
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(slurp(out).rfind("| piece |", 0) == 0);
 }
