@@ -7,7 +7,15 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
-"$root/scripts/build.sh" >/dev/null
+# Only what the demo needs: the demo's packages, and the dda command (a build directory
+# configured before keeps its settings, the test suite included).
+"$root/scripts/setup.sh" --demo
+if [ -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" >/dev/null
+else
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDDA_TESTS=OFF >/dev/null
+fi
+cmake --build "$build" --target dda -j "$(nproc)" >/dev/null
 dda="$build/bin/dda"
 args=(--a 10 --b 6 --bits 4 --preload zero)  # the paper's mode (half preload is the default)
 out="$build/demo"

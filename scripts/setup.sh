@@ -4,6 +4,13 @@
 # Safe to run again: it asks apt only when a package is absent.
 set -euo pipefail
 
+# What the dda command and the demo need (scripts/setup.sh --demo installs only these),
+# then the verification and synthesis tools.
+DEMO_PACKAGES=(
+  build-essential cmake pkg-config
+  libsystemc-dev verilator iverilog
+  catch2 libcli11-dev nlohmann-json3-dev libfmt-dev tao-pegtl-dev
+)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
@@ -12,6 +19,8 @@ PACKAGES=(
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
   time  # GNU time: peak memory in scripts/scale-table.sh
 )
+
+if [ "${1:-}" = "--demo" ]; then PACKAGES=("${DEMO_PACKAGES[@]}"); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -5,6 +5,8 @@
 # missing from ctest never runs in the suite: a program whose catch_discover_tests was
 # forgotten, or a name CMake's list handling cuts (a ';' in it did, and two tests
 # with stale assertions went unseen).
+# And every ctest entry carries a label (tests/CMakeLists.txt names them), so that a
+# label's lane (`ctest -L quick`) is what it says.
 #   usage: tests/check-discovery.sh BUILD_DIR
 set -euo pipefail
 build=$1
@@ -22,5 +24,14 @@ for prog in "$build"/bin/test_*; do
   done <<< "$list"
 done
 [ "$checked" -gt 0 ] || { echo "discovery: no Catch2 test case found in $build/bin" >&2; exit 1; }
+unlabelled=$(cd "$build" && ctest --show-only=json-v1 | python3 -c '
+import json, sys
+for t in json.load(sys.stdin)["tests"]:
+    if not any(p["name"] == "LABELS" and p["value"] for p in t.get("properties", [])):
+        print(t["name"])')
+if [ -n "$unlabelled" ]; then
+  while IFS= read -r name; do echo "discovery: '$name' has no label" >&2; done <<< "$unlabelled"
+  missing=$((missing + 1))
+fi
 [ "$missing" -eq 0 ] || exit 1
-echo "discovery: all $checked Catch2 test cases are ctest tests"
+echo "discovery: all $checked Catch2 test cases are ctest tests, and every ctest entry has a label"

@@ -96,6 +96,7 @@ set_tests_properties(vectors.detects_corruption PROPERTIES FIXTURES_REQUIRED vec
 # The bench's field table is generated from hw_params.hpp: the checked-in copy must match.
 add_test(NAME vectors.fields_in_sync
          COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_vec_fields.vh")
+set_tests_properties(vectors.fields_in_sync PROPERTIES LABELS rtl)
 # The paper's and the lathe example's vector sets, written to the same directory names,
 # are byte-identical to the sets main wrote before the restructuring of the models into
 # libraries.
