@@ -13,18 +13,13 @@ seconds=${1:-600}
 out=${DDA_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 cp "$root"/tests/fuzz/corpus/* "$out/corpus/"
-srcs=("$root/model/src/program.cpp" "$root/model/src/program_grammar.cpp" "$root/model/src/program_macro.cpp"
-  "$root/model/src/program_names.cpp"
-  "$root/model/src/det_math.cpp" "$root/model/src/fixed_trig.cpp")
-flags=(-std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off -I"$root/model/include" -I"$root/model/src")
-san=-fsanitize=address,undefined
-clang++ "${flags[@]}" "$san",fuzzer -fno-sanitize-recover=undefined "${srcs[@]}" \
-  "$root/tests/fuzz/fuzz_program.cpp" -lfmt -o "$out/fuzz_program"
+# The fuzz target and the sanitized tests are CMake targets (DDA_FUZZ: the model's
+# libraries only, built with clang).
+CXX=clang++ cmake -S "$root" -B "$out/build" -DDDA_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
+cmake --build "$out/build" --target fuzz_program test_program_san -j "$(nproc)" >/dev/null
 echo "fuzz-program: running $seconds s from $(ls "$out/corpus" | wc -l) inputs"
-"$out/fuzz_program" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 -artifact_prefix="$out/" \
+"$out/build/bin/fuzz_program" -max_total_time="$seconds" -print_final_stats=1 -max_len=4096 -artifact_prefix="$out/" \
   "$out/corpus" 2> "$out/fuzz.log" || { tail -40 "$out/fuzz.log"; echo "fuzz-program: FAILED" >&2; exit 1; }
 grep -E "^#[0-9]+.*DONE|^Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb|cov:" "$out/fuzz.log" | tail -4
-clang++ "${flags[@]}" "$san" -fno-sanitize-recover=undefined "${srcs[@]}" "$root/tests/test_program.cpp" \
-  -lfmt -o "$out/test_program_san"
-"$out/test_program_san" | grep -E "passed|failed"
+"$out/build/bin/test_program_san" | grep -E "passed|failed"
 echo "fuzz-program: PASS: no crash, no sanitizer report in $seconds s; the reader's tests pass under ASan and UBSan"

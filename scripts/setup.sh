@@ -15,7 +15,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
-  z3 librsvg2-bin clang-format parallel tao-pegtl-dev
+  z3 librsvg2-bin clang-format clang-tidy parallel tao-pegtl-dev python3
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
   time  # GNU time: peak memory in scripts/scale-table.sh
 )
