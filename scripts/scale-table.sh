@@ -65,7 +65,7 @@ for e in $(seq 3 "$max_exp"); do
   iters=$(awk '$1 == "iterations:" {print $2}' "$work/out")
   blocks=$(awk '$1 == "blocks:" {print $2}' "$work/out")
   read -r pa_s pa_kb < <(measure "$dda" path --program "$work/p.ngc")
-  rate=$(awk -v i="$iters" -v s="$st_s" 'BEGIN {printf "%.0f", s > 0 ? i / s : 0}')
+  rate=$(awk -v i="$iters" -v s="$st_s" 'BEGIN {printf "%.0f", (s > 0 ? i / s : 0)}')
   table+=$'\n'"$(awk -v b="$blocks" -v sz="$size" -v i="$iters" -v ss="$st_s" -v sk="$st_kb" -v r="$rate" \
     -v bare="$bare" -v ps="$pa_s" -v pk="$pa_kb" 'BEGIN {
       printf "| %d | %s | %d | %.2f s | %.1f MB | %.3g | %.2f | %.2f s | %.1f MB |", b, sz, i, ss, sk / 1024, r,
