@@ -68,7 +68,7 @@ for e in $(seq 3 "$max_exp"); do
   rate=$(awk -v i="$iters" -v s="$st_s" 'BEGIN {printf "%.0f", (s > 0 ? i / s : 0)}')
   table+=$'\n'"$(awk -v b="$blocks" -v sz="$size" -v i="$iters" -v ss="$st_s" -v sk="$st_kb" -v r="$rate" \
     -v bare="$bare" -v ps="$pa_s" -v pk="$pa_kb" 'BEGIN {
-      printf "| %d | %s | %d | %.2f s | %.1f MB | %.3g | %.2f | %.2f s | %.1f MB |", b, sz, i, ss, sk / 1024, r,
+      printf "| %d | %s | %.0f | %.2f s | %.1f MB | %.3g | %.2f | %.2f s | %.1f MB |", b, sz, i, ss, sk / 1024, r,
         r / bare, ps, pk / 1024 }')"
 done
 read -r arc_s arc_kb < <(measure "$dda" stats --a 1073741824 --b 1)
