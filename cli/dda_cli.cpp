@@ -24,6 +24,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "dda/golden.hpp"
 #include "dda/hw_command.hpp"
@@ -274,46 +275,63 @@ void run_arc_command(const ArcOptions& o, MakeSink make_sink) {
   wave.commit();
 }
 
-}  // namespace
+// The options of `dda vectors` besides the arc's.
+struct VectorsCli {
+  ArcOptions arc;
+  std::string out_dir, seed = "1", ce_percent = "100";
+  std::vector<std::string> then;  // further arcs, each its options in one string
+  vec::BusCli bus;
+};
 
-int main(int argc, char** argv) {
-  install_signal_cleanup();  // a run ended by a signal leaves no temporary file
-  CLI::App app{"dda: ellipse DDA interpolator (golden model, SystemC model, RTL)"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
+// The options of `dda feed` besides the arc's.
+struct FeedCli {
+  ArcOptions arc;
+  bool summary = false;
+  std::string label = "arc";
+};
 
-  ArcOptions tr, pa, st, pl;
-  auto* trace = app.add_subcommand("trace", "per-iteration register trace");
-  add_arc_options(trace, tr, "csv, table or json", "csv");
-  auto* path = app.add_subcommand("path", "lattice points of the path");
-  add_arc_options(path, pa, "csv or json", "csv");
-  auto* stats = app.add_subcommand("stats", "counts and deviation from the ideal ellipse");
-  add_arc_options(stats, st, "text or json", "text");
-  ArcOptions ve;
-  std::string ve_dir, ve_seed = "1", ve_ce = "100";
-  std::vector<std::string> ve_then;
-  auto* vectors = app.add_subcommand("vectors", "test vectors from the golden model (--out-dir DIR; docs/vectors.md)");
-  add_arc_options(vectors, ve, "hex (with CSV and a JSON manifest)", "hex");
-  vectors->add_option("--out-dir", ve_dir, "directory of the vector set (written atomically)");
-  vectors->add_option("--then", ve_then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
-  vectors->add_option("--seed", ve_seed, "seed of the ce pattern (default 1)");
-  vectors->add_option("--ce-percent", ve_ce, "chance in percent that ce_i is high on a cycle (default 100)");
-  vec::BusCli ve_bus;
-  vec::add_bus_options(vectors, ve_bus);
-  ArcOptions fd;
-  bool fd_summary = false;
-  std::string fd_label = "arc";
-  auto* feedc = app.add_subcommand("feed", "the DDA's speed along the path at a constant feed increment, per piece");
-  add_arc_options(feedc, fd, "markdown", "markdown");
-  feedc->add_flag("--summary", fd_summary, "one row for the arc (the table of docs/results.md)");
-  feedc->add_option("--label", fd_label, "the arc's name in the --summary row");
-  auto* plot = app.add_subcommand("plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)");
-  add_arc_options(plot, pl, "svg", "svg");
-  std::string gp_kind = "verilog", gp_out;
-  int gp_acc = hw::kAccWidth, gp_cnt = hw::kCntWidth;
-  auto* gen = app.add_subcommand("gen-params", "print the hardware widths and command fields");
-  gen->add_option(
-      "--kind", gp_kind,
+// The options of `dda gen-params`.
+struct GenParamsCli {
+  std::string kind = "verilog", out;
+  int acc_width = hw::kAccWidth, cnt_width = hw::kCntWidth;
+};
+
+// Every subcommand's options, as the command line fills them in.
+struct Cli {
+  ArcOptions trace, path, stats, plot;
+  VectorsCli vectors;
+  FeedCli feed;
+  GenParamsCli gen_params;
+};
+
+void set_up_trace(CLI::App* sub, Cli& c) { add_arc_options(sub, c.trace, "csv, table or json", "csv"); }
+
+void set_up_path(CLI::App* sub, Cli& c) { add_arc_options(sub, c.path, "csv or json", "csv"); }
+
+void set_up_stats(CLI::App* sub, Cli& c) { add_arc_options(sub, c.stats, "text or json", "text"); }
+
+void set_up_vectors(CLI::App* sub, Cli& c) {
+  VectorsCli& v = c.vectors;
+  add_arc_options(sub, v.arc, "hex (with CSV and a JSON manifest)", "hex");
+  sub->add_option("--out-dir", v.out_dir, "directory of the vector set (written atomically)");
+  sub->add_option("--then", v.then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
+  sub->add_option("--seed", v.seed, "seed of the ce pattern (default 1)");
+  sub->add_option("--ce-percent", v.ce_percent, "chance in percent that ce_i is high on a cycle (default 100)");
+  vec::add_bus_options(sub, v.bus);
+}
+
+void set_up_feed(CLI::App* sub, Cli& c) {
+  add_arc_options(sub, c.feed.arc, "markdown", "markdown");
+  sub->add_flag("--summary", c.feed.summary, "one row for the arc (the table of docs/results.md)");
+  sub->add_option("--label", c.feed.label, "the arc's name in the --summary row");
+}
+
+void set_up_plot(CLI::App* sub, Cli& c) { add_arc_options(sub, c.plot, "svg", "svg"); }
+
+void set_up_gen_params(CLI::App* sub, Cli& c) {
+  GenParamsCli& g = c.gen_params;
+  sub->add_option(
+      "--kind", g.kind,
       "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
       "the largest semi-axis they hold at the default width), vector-fields "
       "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
@@ -321,194 +339,325 @@ int main(int argc, char** argv) {
       "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
       "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
       "(docs/dda_motion.gtkw)");
-  gen->add_option("--out", gp_out, "write to FILE (atomically) instead of stdout");
-  gen->add_option("--acc-width", gp_acc,
+  sub->add_option("--out", g.out, "write to FILE (atomically) instead of stdout");
+  sub->add_option("--acc-width", g.acc_width,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
       ->check(CLI::Range(4, hw::kAccWidth));
-  gen->add_option("--cnt-width", gp_cnt, "--kind verilog, json or registers at another counter width")
+  sub->add_option("--cnt-width", g.cnt_width, "--kind verilog, json or registers at another counter width")
       ->check(CLI::Range(2, hw::kCntWidth));
+}
+
+void run_trace(const Cli& c, int, char**) {
+  const auto fmt =
+      parse_enum<TraceFormat>("format", c.trace.format,
+                              {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
+  run_arc_command(c.trace, [&](std::ostream& os, const RunTarget& t) {
+    return t.plan ? std::make_unique<TraceSink>(os, *t.plan, fmt)
+                  : std::make_unique<TraceSink>(os, t.program->lattice.preload, t.from(), fmt);
+  });
+}
+
+void run_path(const Cli& c, int, char**) {
+  const auto fmt =
+      parse_enum<PathFormat>("format", c.path.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
+  run_arc_command(c.path,
+                  [&](std::ostream& os, const RunTarget& t) { return std::make_unique<PathSink>(os, t.from(), fmt); });
+}
+
+void run_stats(const Cli& c, int, char**) {
+  using program::BlockStatsFormat;
+  const auto fmt = parse_enum<BlockStatsFormat>(
+      "format", c.stats.format,
+      {{"text", BlockStatsFormat::Text}, {"csv", BlockStatsFormat::Csv}, {"json", BlockStatsFormat::Json}});
+  if (fmt == BlockStatsFormat::Csv && !c.stats.prog.given()) throw InputError("--format csv goes with --program");
+  run_arc_command(c.stats, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
+    if (t.program) {
+      return std::make_unique<program::BlockStatsSink>(os, t.program->lattice,
+                                                       t.program->read.start.value_or(program::Point2{}), fmt);
+    }
+    return std::make_unique<StatsSink>(*t.plan, &os,
+                                       fmt == program::BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);
+  });
+}
+
+// The vector set's options: the seed and ce pattern checked, and the command line as
+// given (for the manifest; an argument with a space quoted).
+vec::Options vector_options(const VectorsCli& v, int argc, char** argv) {
+  vec::Options vo;
+  vo.out_dir = v.out_dir;
+  vo.seed = std::uint64_t(parse_int_in("seed", v.seed, 0, std::numeric_limits<std::int64_t>::max()));
+  vo.ce_percent = int(parse_int_in("ce-percent", v.ce_percent, 1, 100));
+  vo.command_line = "dda";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    vo.command_line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
+  }
+  return vo;
+}
+
+// The plans of the vector set: the arc (or program) given, then each --then arc.
+std::vector<Plan> vector_plans(const VectorsCli& v) {
+  std::vector<Plan> plans{make_plan(v.arc)};
+  if (v.arc.prog.given() && !v.then.empty())
+    throw InputError("--then is invalid with --program: one program is one run");
+  for (const std::string& then : v.then) {
+    CLI::App sub{"arc"};
+    ArcOptions o;
+    add_arc_options(&sub, o, "", "");
+    try {
+      sub.parse(then, false);
+    } catch (const CLI::ParseError& e) {
+      throw InputError("then = '" + then + "' is invalid: " + e.what());
+    }
+    plans.push_back(make_plan(o));
+  }
+  return plans;
+}
+
+void run_vectors(const Cli& c, int argc, char** argv) {
+  const VectorsCli& v = c.vectors;
+  parse_enum<int>("format", v.arc.format, {{"hex", 0}});
+  if (v.out_dir.empty()) throw InputError("vectors needs --out-dir DIR");
+  if (v.arc.engine != "golden")
+    throw InputError("engine = '" + v.arc.engine + "' is invalid for vectors: they come from the golden model");
+  if (!v.arc.out.empty() || (!v.arc.vcd.empty() && !v.bus.bus)) {
+    throw InputError("vectors write --out-dir DIR, not --out (nor --vcd, but with --bus: the RTL's waveform)");
+  }
+  const vec::Options vo = vector_options(v, argc, argv);
+  const std::vector<Plan> plans = vector_plans(v);
+  if (v.bus.bus) {
+    vec::BusOptions bo = vec::bus_options(v.bus);
+    AtomicFile wave(v.arc.vcd);  // the RTL run beside the set: written only on success
+    bo.vcd = wave.write_path();
+    vec::write_bus_vector_set(plans, vo, bo);
+    wave.commit();
+  } else {
+    vec::bus_options(v.bus);  // refuses the bus options without --bus
+    vec::write_vector_set(plans, vo);
+  }
+}
+
+void run_feed(const Cli& c, int, char**) {
+  const ArcOptions& fd = c.feed.arc;
+  parse_enum<int>("format", fd.format, {{"markdown", 0}});
+  if (fd.prog.given()) throw InputError("--program is invalid with feed: the feed table is one arc's");
+  if (fd.engine != "golden") throw InputError("--engine is invalid with feed: the planner computes the table");
+  if (!fd.vcd.empty()) throw InputError("--vcd is invalid with feed: the table runs no engine");
+  const Plan plan = make_plan(fd);
+  Output out(fd.out);
+  write_feed_report(out.stream(), plan, c.feed.summary, c.feed.label);
+  out.commit();
+}
+
+// The plot's title: the command line without --out FILE, escaped as XML text.
+std::string plot_title(int argc, char** argv) {
+  std::string title = "dda";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--out") == 0) {
+      ++i;  // not part of the arc
+      continue;
+    }
+    title += std::string(" ") + argv[i];
+  }
+  std::string esc;
+  for (const char ch : title) esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+  return esc;
+}
+
+void run_plot(const Cli& c, int argc, char** argv) {
+  const ArcOptions& pl = c.plot;
+  parse_enum<int>("format", pl.format, {{"svg", 0}});
+  if (pl.out.empty() || pl.out == "-") throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+  std::string ext = std::filesystem::path(pl.out).extension().string();
+  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  if (!ext.empty() && ext != ".svg") {
+    throw InputError("out = '" + pl.out + "' is invalid: plot writes SVG (a file name ending in .svg)");
+  }
+  const std::string esc = plot_title(argc, argv);
+  run_arc_command(pl, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
+    if (t.program) {
+      return std::make_unique<program::ProgramSvgSink>(os, t.program->lattice,
+                                                       t.program->read.start.value_or(program::Point2{}), esc);
+    }
+    return std::make_unique<SvgSink>(os, *t.plan, esc);
+  });
+}
+
+// What gen-params prints (--kind).
+enum class GenKind {
+  Verilog,
+  Markdown,
+  Json,
+  VectorFields,
+  GtkwSystemc,
+  GtkwRtl,
+  Registers,
+  MotionMarkdown,
+  MotionC,
+  MotionVerilog,
+  MotionVectorFields,
+  GtkwMotion,
+  StepdirDiagram,
+};
+
+// The text of one kind, at the accumulator and counter widths acc and cnt.
+void write_gen_params(std::ostream& os, GenKind kind, int acc, int cnt) {
+  switch (kind) {
+    case GenKind::Verilog:
+      os << hw::verilog_header(acc, cnt);
+      break;
+    case GenKind::Markdown:
+      os << hw::markdown_tables();
+      break;
+    case GenKind::Json: {
+      nlohmann::ordered_json j;
+      j["acc_width"] = acc;
+      j["cnt_width"] = cnt;
+      j["cmd_width"] = hw::cmd_width(acc, cnt);
+      j["max_semi_axis"] = hw::max_semi_axis(4, acc, cnt);  // default width: smallest valid + 4
+      os << j.dump(1) << '\n';
+      break;
+    }
+    case GenKind::VectorFields:
+      os << vec::verilog_fields();
+      break;
+    case GenKind::GtkwSystemc:  // the waveforms' scopes: dda --engine systemc|rtl --vcd
+      os << hw::gtkw(hw::signal_table(), "dda_systemc.gtkw", "SystemC");
+      break;
+    case GenKind::GtkwRtl:
+      os << hw::gtkw(hw::signal_table(), "dda_rtl.gtkw", "dut.dda_core");
+      break;
+    case GenKind::Registers:  // the architectural registers: "name width" (scripts/formal.sh)
+      for (const auto& r : hw::kSignals) {
+        if (r.kind == hw::SigKind::Reg) os << r.name << ' ' << hw::field_width(r.width, acc, cnt) << '\n';
+      }
+      break;
+    case GenKind::MotionMarkdown:  // the motion block's register map
+      os << motion::markdown();
+      break;
+    case GenKind::MotionC:
+      os << motion::c_header();
+      break;
+    case GenKind::MotionVerilog:
+      os << motion::verilog_header();
+      break;
+    case GenKind::MotionVectorFields:  // the bus bench's field table
+      os << vec::bus_verilog_fields();
+      break;
+    case GenKind::GtkwMotion:  // the motion block's waveform: dda vectors --bus --vcd
+      os << motion::gtkw("dda_motion.gtkw", "dut.dda_motion", motion::kMaxDepthLog2);
+      break;
+    case GenKind::StepdirDiagram:  // the step/dir stage's edge-by-edge diagram (docs/design.md)
+      os << motion::stage_diagram();
+      break;
+  }
+}
+
+void run_gen_params(const Cli& c, int, char**) {
+  const GenParamsCli& g = c.gen_params;
+  const GenKind kind = parse_enum<GenKind>("kind", g.kind,
+                                           {{"verilog", GenKind::Verilog},
+                                            {"markdown", GenKind::Markdown},
+                                            {"json", GenKind::Json},
+                                            {"vector-fields", GenKind::VectorFields},
+                                            {"gtkw-systemc", GenKind::GtkwSystemc},
+                                            {"gtkw-rtl", GenKind::GtkwRtl},
+                                            {"registers", GenKind::Registers},
+                                            {"motion-markdown", GenKind::MotionMarkdown},
+                                            {"motion-c", GenKind::MotionC},
+                                            {"motion-verilog", GenKind::MotionVerilog},
+                                            {"motion-vector-fields", GenKind::MotionVectorFields},
+                                            {"gtkw-motion", GenKind::GtkwMotion},
+                                            {"stepdir-diagram", GenKind::StepdirDiagram}});
+  const bool sized = kind == GenKind::Verilog || kind == GenKind::Json || kind == GenKind::Registers;
+  if (!sized && (g.acc_width != hw::kAccWidth || g.cnt_width != hw::kCntWidth)) {
+    throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
+  }
+  Output out(g.out);
+  write_gen_params(out.stream(), kind, g.acc_width, g.cnt_width);
+  out.commit();
+}
+
+// The subcommands, in the order of the help: each one's options set up, and its run
+// once the command line is parsed (argc and argv: the command line, for records of it).
+struct Subcommand {
+  const char* name;
+  const char* help;
+  void (*set_up)(CLI::App* sub, Cli& c);
+  void (*run)(const Cli& c, int argc, char** argv);
+};
+const Subcommand kSubcommands[] = {
+    {"trace", "per-iteration register trace", set_up_trace, run_trace},
+    {"path", "lattice points of the path", set_up_path, run_path},
+    {"stats", "counts and deviation from the ideal ellipse", set_up_stats, run_stats},
+    {"vectors", "test vectors from the golden model (--out-dir DIR; docs/vectors.md)", set_up_vectors, run_vectors},
+    {"feed", "the DDA's speed along the path at a constant feed increment, per piece", set_up_feed, run_feed},
+    {"plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)", set_up_plot, run_plot},
+    {"gen-params", "print the hardware widths and command fields", set_up_gen_params, run_gen_params},
+};
+
+// The first argument must be a command (or --help, -h, --version): an option before
+// the command, or a command not known, is refused naming the commands.
+void check_command_word(CLI::App& app, int argc, char** argv) {
+  if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 && std::strcmp(argv[1], "-h") != 0 &&
+      std::strcmp(argv[1], "--version") != 0) {
+    throw InputError(std::string("option '") + argv[1] +
+                     "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
+  }
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const auto* sub : app.get_subcommands({})) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) throw InputError(std::string("command '") + argv[1] + "' is unknown: use one of " + names);
+  }
+}
+
+// Parses the command line. Returns the exit status when that ends the run: help or the
+// version printed, or a usage error (one line on stderr, status 2).
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    for (auto& ch : msg)
+      if (ch == '\n') ch = ' ';
+    std::cerr << "dda: error: " << msg << " (see dda --help)\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  install_signal_cleanup();  // a run ended by a signal leaves no temporary file
+  CLI::App app{"dda: ellipse DDA interpolator (golden model, SystemC model, RTL)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
+  Cli options;
+  std::vector<CLI::App*> subs;
+  for (const Subcommand& s : kSubcommands) {
+    subs.push_back(app.add_subcommand(s.name, s.help));
+    s.set_up(subs.back(), options);
+  }
 
   try {
-    if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 && std::strcmp(argv[1], "-h") != 0 &&
-        std::strcmp(argv[1], "--version") != 0) {
-      throw InputError(std::string("option '") + argv[1] +
-                       "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
-    }
-    if (argc > 1 && argv[1][0] != '-') {
-      std::string names;
-      bool known = false;
-      for (const auto* sub : app.get_subcommands({})) {
-        names += (names.empty() ? "" : ", ") + sub->get_name();
-        known = known || sub->get_name() == argv[1];
+    check_command_word(app, argc, argv);
+    if (const std::optional<int> status = parse_command_line(app, argc, argv)) return *status;
+    for (std::size_t i = 0; i < subs.size(); ++i) {
+      if (subs[i]->parsed()) {
+        kSubcommands[i].run(options, argc, argv);
+        break;
       }
-      if (!known) throw InputError(std::string("command '") + argv[1] + "' is unknown: use one of " + names);
-    }
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-      return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-      return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      std::string msg = e.what();
-      for (auto& ch : msg)
-        if (ch == '\n') ch = ' ';
-      std::cerr << "dda: error: " << msg << " (see dda --help)\n";
-      return 2;
-    }
-
-    if (trace->parsed()) {
-      const auto fmt = parse_enum<TraceFormat>(
-          "format", tr.format, {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
-      run_arc_command(tr, [&](std::ostream& os, const RunTarget& t) {
-        return t.plan ? std::make_unique<TraceSink>(os, *t.plan, fmt)
-                      : std::make_unique<TraceSink>(os, t.program->lattice.preload, t.from(), fmt);
-      });
-    } else if (path->parsed()) {
-      const auto fmt =
-          parse_enum<PathFormat>("format", pa.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
-      run_arc_command(
-          pa, [&](std::ostream& os, const RunTarget& t) { return std::make_unique<PathSink>(os, t.from(), fmt); });
-    } else if (stats->parsed()) {
-      using program::BlockStatsFormat;
-      const auto fmt = parse_enum<BlockStatsFormat>(
-          "format", st.format,
-          {{"text", BlockStatsFormat::Text}, {"csv", BlockStatsFormat::Csv}, {"json", BlockStatsFormat::Json}});
-      if (fmt == BlockStatsFormat::Csv && !st.prog.given()) throw InputError("--format csv goes with --program");
-      run_arc_command(st, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
-        if (t.program) {
-          return std::make_unique<program::BlockStatsSink>(os, t.program->lattice,
-                                                           t.program->read.start.value_or(program::Point2{}), fmt);
-        }
-        return std::make_unique<StatsSink>(
-            *t.plan, &os, fmt == program::BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);
-      });
-    } else if (vectors->parsed()) {
-      parse_enum<int>("format", ve.format, {{"hex", 0}});
-      if (ve_dir.empty()) throw InputError("vectors needs --out-dir DIR");
-      if (ve.engine != "golden")
-        throw InputError("engine = '" + ve.engine + "' is invalid for vectors: they come from the golden model");
-      if (!ve.out.empty() || (!ve.vcd.empty() && !ve_bus.bus)) {
-        throw InputError("vectors write --out-dir DIR, not --out (nor --vcd, but with --bus: the RTL's waveform)");
-      }
-      vec::Options vo;
-      vo.out_dir = ve_dir;
-      vo.seed = std::uint64_t(parse_int_in("seed", ve_seed, 0, std::numeric_limits<std::int64_t>::max()));
-      vo.ce_percent = int(parse_int_in("ce-percent", ve_ce, 1, 100));
-      vo.command_line = "dda";
-      for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        vo.command_line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
-      }
-      std::vector<Plan> plans{make_plan(ve)};
-      if (ve.prog.given() && !ve_then.empty())
-        throw InputError("--then is invalid with --program: one program is one run");
-      for (const std::string& then : ve_then) {
-        CLI::App sub{"arc"};
-        ArcOptions o;
-        add_arc_options(&sub, o, "", "");
-        try {
-          sub.parse(then, false);
-        } catch (const CLI::ParseError& e) {
-          throw InputError("then = '" + then + "' is invalid: " + e.what());
-        }
-        plans.push_back(make_plan(o));
-      }
-      if (ve_bus.bus) {
-        vec::BusOptions bo = vec::bus_options(ve_bus);
-        AtomicFile wave(ve.vcd);  // the RTL run beside the set: written only on success
-        bo.vcd = wave.write_path();
-        vec::write_bus_vector_set(plans, vo, bo);
-        wave.commit();
-      } else {
-        vec::bus_options(ve_bus);  // refuses the bus options without --bus
-        vec::write_vector_set(plans, vo);
-      }
-    } else if (feedc->parsed()) {
-      parse_enum<int>("format", fd.format, {{"markdown", 0}});
-      if (fd.prog.given()) throw InputError("--program is invalid with feed: the feed table is one arc's");
-      if (fd.engine != "golden") throw InputError("--engine is invalid with feed: the planner computes the table");
-      if (!fd.vcd.empty()) throw InputError("--vcd is invalid with feed: the table runs no engine");
-      const Plan plan = make_plan(fd);
-      Output out(fd.out);
-      write_feed_report(out.stream(), plan, fd_summary, fd_label);
-      out.commit();
-    } else if (plot->parsed()) {
-      parse_enum<int>("format", pl.format, {{"svg", 0}});
-      if (pl.out.empty() || pl.out == "-") throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
-      std::string ext = std::filesystem::path(pl.out).extension().string();
-      for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-      if (!ext.empty() && ext != ".svg") {
-        throw InputError("out = '" + pl.out + "' is invalid: plot writes SVG (a file name ending in .svg)");
-      }
-      std::string title = "dda";
-      for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--out") == 0) {
-          ++i;  // not part of the arc
-          continue;
-        }
-        title += std::string(" ") + argv[i];
-      }
-      std::string esc;  // the title is XML text
-      for (const char ch : title)
-        esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
-      run_arc_command(pl, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
-        if (t.program) {
-          return std::make_unique<program::ProgramSvgSink>(os, t.program->lattice,
-                                                           t.program->read.start.value_or(program::Point2{}), esc);
-        }
-        return std::make_unique<SvgSink>(os, *t.plan, esc);
-      });
-    } else if (gen->parsed()) {
-      const int kind = parse_enum<int>("kind", gp_kind,
-                                       {{"verilog", 0},
-                                        {"markdown", 1},
-                                        {"json", 2},
-                                        {"vector-fields", 3},
-                                        {"gtkw-systemc", 4},
-                                        {"gtkw-rtl", 5},
-                                        {"registers", 6},
-                                        {"motion-markdown", 7},
-                                        {"motion-c", 8},
-                                        {"motion-verilog", 9},
-                                        {"motion-vector-fields", 10},
-                                        {"gtkw-motion", 11},
-                                        {"stepdir-diagram", 12}});
-      if (kind != 0 && kind != 2 && kind != 6 && (gp_acc != hw::kAccWidth || gp_cnt != hw::kCntWidth)) {
-        throw InputError("--acc-width and --cnt-width go with --kind verilog, json or registers only");
-      }
-      Output out(gp_out);
-      if (kind == 12) {  // the step/dir stage's edge-by-edge diagram (docs/design.md)
-        out.stream() << motion::stage_diagram();
-      } else if (kind == 11) {  // the motion block's waveform: dda vectors --bus --vcd
-        out.stream() << motion::gtkw("dda_motion.gtkw", "dut.dda_motion", motion::kMaxDepthLog2);
-      } else if (kind == 10) {  // the bus bench's field table
-        out.stream() << vec::bus_verilog_fields();
-      } else if (kind >= 7) {  // the motion block's register map
-        out.stream() << (kind == 7 ? motion::markdown() : kind == 8 ? motion::c_header() : motion::verilog_header());
-      } else if (kind == 4 || kind == 5) {  // the waveforms' scopes: dda --engine systemc|rtl --vcd
-        out.stream() << hw::gtkw(hw::signal_table(), kind == 4 ? "dda_systemc.gtkw" : "dda_rtl.gtkw",
-                                 kind == 4 ? "SystemC" : "dut.dda_core");
-      } else if (kind == 6) {  // the architectural registers: "name width" (scripts/formal.sh)
-        for (const auto& r : hw::kSignals) {
-          if (r.kind == hw::SigKind::Reg)
-            out.stream() << r.name << ' ' << hw::field_width(r.width, gp_acc, gp_cnt) << '\n';
-        }
-      } else if (kind == 3) {
-        out.stream() << vec::verilog_fields();
-      } else if (kind == 2) {
-        nlohmann::ordered_json j;
-        j["acc_width"] = gp_acc;
-        j["cnt_width"] = gp_cnt;
-        j["cmd_width"] = hw::cmd_width(gp_acc, gp_cnt);
-        j["max_semi_axis"] = hw::max_semi_axis(4, gp_acc, gp_cnt);  // default width: smallest valid + 4
-        out.stream() << j.dump(1) << '\n';
-      } else {
-        out.stream() << (kind == 0 ? hw::verilog_header(gp_acc, gp_cnt) : hw::markdown_tables());
-      }
-      out.commit();
     }
   } catch (const program::ProgramError& e) {
     std::cerr << e.what() << '\n';  // FILE:LINE:COLUMN: message, as compilers print

@@ -158,9 +158,11 @@ std::string verilog_fields(const hw::SignalTable& t) {
   return s.str();
 }
 
-void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
-  if (plans.empty()) throw InputError("vectors need at least one arc");
-  // The command stream: every piece of every arc, back to back.
+namespace {
+
+// The command stream: every piece of every arc, back to back; at most what the bench's
+// command memory holds.
+std::vector<Cmd> command_stream(const std::vector<Plan>& plans) {
   std::vector<Cmd> cmds;
   for (std::size_t a = 0; a < plans.size(); ++a) {
     for (std::size_t k = 0; k < plans[a].pieces.size(); ++k) {
@@ -174,70 +176,65 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
                      " (split the work into several sets, or give --bus: the motion "
                      "block's set streams its commands)");
   }
+  return cmds;
+}
+
+// The cycles the stream may take before the run counts as hung: the arcs' iteration
+// bounds, stretched by the cycles ce_i is low, doubled, with a margin.
+std::uint64_t cycle_bound(const std::vector<Plan>& plans, int ce_percent) {
   std::uint64_t bound = 16;
   for (const auto& p : plans) bound += p.iteration_bound;
-  if (opt.ce_percent < 1 || opt.ce_percent > 100) {
-    throw InputError("ce-percent = " + std::to_string(opt.ce_percent) + " is invalid: use 1 to 100");
+  if (ce_percent < 1 || ce_percent > 100) {
+    throw InputError("ce-percent = " + std::to_string(ce_percent) + " is invalid: use 1 to 100");
   }
-  bound = bound * 100 / std::uint64_t(opt.ce_percent) * 2 + 64;
+  return bound * 100 / std::uint64_t(ce_percent) * 2 + 64;
+}
 
-  const auto in_f = input_fields(), exp_f = expect_fields(), it_f = iteration_fields();
-  std::ostringstream cmds_hex, in_hex, out_hex, cyc_csv, it_hex, it_csv;
+// cmds.hex: one command word per line, cmd_i from its MSB.
+std::string command_words(const std::vector<Cmd>& cmds) {
+  std::ostringstream s;
   for (const auto& c : cmds) {
     Word w(hw::kCmdWidth);
     const auto& v = c.fields;
     for (std::size_t i = hw::kCmdFields.size(); i-- > 0;) w.put(v[i], hw::kCmdFields[i].width);  // cmd_i[MSB..0]
-    cmds_hex << w.hex() << '\n';
+    s << w.hex() << '\n';
   }
-  cyc_csv << "cycle";
-  for (const auto& f : in_f) cyc_csv << ',' << f.name;
-  for (const auto& f : exp_f) cyc_csv << ',' << f.name;
-  cyc_csv << '\n';
-  it_csv << "iteration,arc,seg,step_x,dir_x,step_y,dir_y,seg_end,arc_end,x,y\n";
+  return s.str();
+}
 
-  // The cycle-level reference model, fed the commands back to back.
-  std::mt19937_64 rng(opt.seed);
-  CoreModel model;
-  std::size_t next = 0, cur = 0;
-  std::uint64_t cycle = 0, iterations = 0;
-  Point pos;
-  int idle_tail = 0;
-  for (;; ++cycle) {
-    if (cycle > bound)
-      throw GuardError("vectors: the command stream did not finish within " + std::to_string(bound) + " cycles");
-    const bool rst_n = cycle >= 2;
-    const bool ce = opt.ce_percent >= 100 || int(rng() % 100) < opt.ce_percent;
-    const bool valid = rst_n && next < cmds.size();
-    const std::size_t idx = std::min(next, cmds.size() - 1);
-    CoreInputs in;
-    in.rst_n = rst_n;
-    in.ce = ce;
-    in.cmd_valid = valid;
-    if (valid) in.cmd = cmds[next].fields;
-    const Signals pre = model.state();
-    const CoreEdge e = model.edge(in);
-    const Signals& post = model.state();
-    if (e.iterate) {
-      const Iteration it = CoreModel::iteration_record(pre, post);
-      pos = pos + CoreModel::step_of(post);
-      ++iterations;
-      const bool piece_end = e.finishing;
-      const bool arc_end = piece_end && cmds[cur].arc_last;
-      Word w(total_width(it_f));
-      for (const int b :
-           {int(arc_end), int(piece_end), int(it.dir_y_neg), int(it.step_y), int(it.dir_x_neg), int(it.step_x)}) {
-        w.put(unsigned(b), 1);
-      }
-      it_hex << w.hex() << '\n';
-      it_csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", iterations, cmds[cur].arc, cmds[cur].piece,
-                            int(it.step_x), int(it.dir_x_neg), int(it.step_y), int(it.dir_y_neg), int(piece_end),
-                            int(arc_end), pos.x, pos.y);
+// The per-cycle and per-iteration files of the set, a line at a time as the model runs.
+struct Traces {
+  const std::vector<Field> in_f = input_fields(), exp_f = expect_fields(), it_f = iteration_fields();
+  std::ostringstream in_hex, out_hex, cyc_csv, it_hex, it_csv;
+  std::uint64_t iterations = 0;
+
+  Traces() {
+    cyc_csv << "cycle";
+    for (const auto& f : in_f) cyc_csv << ',' << f.name;
+    for (const auto& f : exp_f) cyc_csv << ',' << f.name;
+    cyc_csv << '\n';
+    it_csv << "iteration,arc,seg,step_x,dir_x,step_y,dir_y,seg_end,arc_end,x,y\n";
+  }
+
+  // An iteration of command c that left the tool at pos.
+  void iteration(const Iteration& it, const Cmd& c, bool piece_end, Point pos) {
+    ++iterations;
+    const bool arc_end = piece_end && c.arc_last;
+    Word w(total_width(it_f));
+    for (const int b :
+         {int(arc_end), int(piece_end), int(it.dir_y_neg), int(it.step_y), int(it.dir_x_neg), int(it.step_x)}) {
+      w.put(unsigned(b), 1);
     }
-    if (e.load) {
-      const Cmd& c = cmds[next];
-      pos = plans[c.arc].pieces[c.piece].from;
-      cur = next++;
-    }
+    it_hex << w.hex() << '\n';
+    it_csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", iterations, c.arc, c.piece, int(it.step_x),
+                          int(it.dir_x_neg), int(it.step_y), int(it.dir_y_neg), int(piece_end), int(arc_end), pos.x,
+                          pos.y);
+  }
+
+  // A cycle: its inputs (idx: the command line offered) and the outputs and registers
+  // after its edge.
+  void cycle(std::uint64_t cycle, const CoreInputs& in, std::size_t idx, const Signals& post, bool ready) {
+    const bool rst_n = in.rst_n, ce = in.ce, valid = in.cmd_valid;
     Word in_w(total_width(in_f));
     in_w.put(rst_n, 1);
     in_w.put(ce, 1);
@@ -245,7 +242,7 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
     in_w.put(idx, kIdxWidth);
     in_hex << in_w.hex() << '\n';
     Word out(total_width(exp_f));
-    const PortValues outs = CoreModel::outputs(post, e.ready);
+    const PortValues outs = CoreModel::outputs(post, ready);
     for (std::size_t i = 0; i < outs.size(); ++i) out.put(outs[i], 1);
     for (std::size_t i = 0; i < hw::kNumRegisters; ++i) out.put(post[i], hw::kSignals[i].width);
     out_hex << out.hex() << '\n';
@@ -253,11 +250,79 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
     for (const auto v : outs) cyc_csv << ',' << v;
     for (std::size_t i = 0; i < hw::kNumRegisters; ++i) cyc_csv << ',' << post[i];
     cyc_csv << '\n';
-    if (rst_n && next == cmds.size() && !CoreModel::busy(post) && ++idle_tail > 2) break;
   }
-  const std::uint64_t ncycles = cycle + 1;
+};
 
-  // Manifest.
+// Runs the cycle-level reference model, fed the commands back to back (ce_i drawn from
+// the seeded pattern), into the traces until the stream is done and the core idle for
+// a few cycles; returns the number of cycles.
+std::uint64_t run_model(const std::vector<Plan>& plans, const std::vector<Cmd>& cmds, const Options& opt,
+                        Traces& traces) {
+  const std::uint64_t bound = cycle_bound(plans, opt.ce_percent);
+  std::mt19937_64 rng(opt.seed);
+  CoreModel model;
+  std::size_t next = 0, cur = 0;
+  std::uint64_t cycle = 0;
+  Point pos;
+  int idle_tail = 0;
+  for (;; ++cycle) {
+    if (cycle > bound)
+      throw GuardError("vectors: the command stream did not finish within " + std::to_string(bound) + " cycles");
+    CoreInputs in;
+    in.rst_n = cycle >= 2;
+    in.ce = opt.ce_percent >= 100 || int(rng() % 100) < opt.ce_percent;
+    in.cmd_valid = in.rst_n && next < cmds.size();
+    if (in.cmd_valid) in.cmd = cmds[next].fields;
+    const std::size_t idx = std::min(next, cmds.size() - 1);
+    const Signals pre = model.state();
+    const CoreEdge e = model.edge(in);
+    const Signals& post = model.state();
+    if (e.iterate) {
+      pos = pos + CoreModel::step_of(post);
+      traces.iteration(CoreModel::iteration_record(pre, post), cmds[cur], e.finishing, pos);
+    }
+    if (e.load) {
+      const Cmd& c = cmds[next];
+      pos = plans[c.arc].pieces[c.piece].from;
+      cur = next++;
+    }
+    traces.cycle(cycle, in, idx, post, e.ready);
+    if (in.rst_n && next == cmds.size() && !CoreModel::busy(post) && ++idle_tail > 2) break;
+  }
+  return cycle + 1;
+}
+
+// A word layout for the manifest: each field's name, bits (most significant first),
+// width and meaning.
+nlohmann::ordered_json field_layout(const std::vector<Field>& fs) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  int msb = total_width(fs) - 1;
+  for (const auto& f : fs) {
+    a.push_back(
+        {{"name", f.name}, {"msb", msb}, {"lsb", msb - f.width + 1}, {"width", f.width}, {"meaning", f.meaning}});
+    msb -= f.width;
+  }
+  return a;
+}
+
+// The command word's layout: the fields of cmd_i from bit 0 up.
+nlohmann::ordered_json command_layout() {
+  nlohmann::ordered_json cmd_layout = nlohmann::ordered_json::array();
+  int off = 0;
+  for (const auto& f : hw::kCmdFields) {
+    cmd_layout.push_back({{"name", "cmd_" + std::string(f.name)},
+                          {"msb", off + f.width - 1},
+                          {"lsb", off},
+                          {"width", f.width},
+                          {"meaning", std::string(f.meaning)}});
+    off += f.width;
+  }
+  return cmd_layout;
+}
+
+// manifest.json: how the set was made, its arcs, its counts, its files and their layouts.
+nlohmann::ordered_json manifest(const std::vector<Plan>& plans, const Options& opt, std::size_t commands,
+                                std::uint64_t cycles, const Traces& traces) {
   nlohmann::ordered_json m;
   m["generator"] = "dda vectors (golden model; docs/vectors.md)";
   m["command"] = opt.command_line;
@@ -272,29 +337,7 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
                     {"to", {p.to.x, p.to.y}}});
   }
   m["arcs"] = arcs;
-  m["counts"] = {{"commands", cmds.size()}, {"cycles", ncycles}, {"iterations", iterations}};
-  const auto layout = [](const std::vector<Field>& fs) {
-    nlohmann::ordered_json a = nlohmann::ordered_json::array();
-    int msb = total_width(fs) - 1;
-    for (const auto& f : fs) {
-      a.push_back(
-          {{"name", f.name}, {"msb", msb}, {"lsb", msb - f.width + 1}, {"width", f.width}, {"meaning", f.meaning}});
-      msb -= f.width;
-    }
-    return a;
-  };
-  nlohmann::ordered_json cmd_layout = nlohmann::ordered_json::array();
-  {
-    int off = 0;
-    for (const auto& f : hw::kCmdFields) {
-      cmd_layout.push_back({{"name", "cmd_" + std::string(f.name)},
-                            {"msb", off + f.width - 1},
-                            {"lsb", off},
-                            {"width", f.width},
-                            {"meaning", std::string(f.meaning)}});
-      off += f.width;
-    }
-  }
+  m["counts"] = {{"commands", commands}, {"cycles", cycles}, {"iterations", traces.iterations}};
   m["files"] = {
       {"counts.hex", "two hex numbers, one per line: commands, cycles"},
       {"cmds.hex", "one command word (cmd_i, " + std::to_string(hw::kCmdWidth) + " bits) per line, line = cmd_idx"},
@@ -303,16 +346,28 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
       {"cycles.csv", "per cycle: inputs and expected values in decimal"},
       {"iter.hex", "per iteration: pulses, directions and end flags (layout iteration)"},
       {"iterations.csv", "per iteration: the same with arc, piece and position"}};
-  m["layout"] = {
-      {"cmd", cmd_layout}, {"cycle_in", layout(in_f)}, {"cycle_exp", layout(exp_f)}, {"iteration", layout(it_f)}};
+  m["layout"] = {{"cmd", command_layout()},
+                 {"cycle_in", field_layout(traces.in_f)},
+                 {"cycle_exp", field_layout(traces.exp_f)},
+                 {"iteration", field_layout(traces.it_f)}};
+  return m;
+}
 
+}  // namespace
+
+void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
+  if (plans.empty()) throw InputError("vectors need at least one arc");
+  const std::vector<Cmd> cmds = command_stream(plans);
+  Traces traces;
+  const std::uint64_t ncycles = run_model(plans, cmds, opt, traces);
+  const nlohmann::ordered_json m = manifest(plans, opt, cmds.size(), ncycles, traces);
   write_set(opt.out_dir, {{"counts.hex", fmt::format("{:x}\n{:x}\n", cmds.size(), ncycles)},
-                          {"cmds.hex", cmds_hex.str()},
-                          {"cycle_in.hex", in_hex.str()},
-                          {"cycle_exp.hex", out_hex.str()},
-                          {"cycles.csv", cyc_csv.str()},
-                          {"iter.hex", it_hex.str()},
-                          {"iterations.csv", it_csv.str()},
+                          {"cmds.hex", command_words(cmds)},
+                          {"cycle_in.hex", traces.in_hex.str()},
+                          {"cycle_exp.hex", traces.out_hex.str()},
+                          {"cycles.csv", traces.cyc_csv.str()},
+                          {"iter.hex", traces.it_hex.str()},
+                          {"iterations.csv", traces.it_csv.str()},
                           {"manifest.json", m.dump(1) + "\n"}});
 }
 

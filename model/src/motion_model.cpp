@@ -325,62 +325,186 @@ BlockOutputs MotionModel::outputs() const {
   return o;
 }
 
-void MotionModel::edge(const BlockInputs& in) {
-  const BusIn& b = in.bus;
+// The combinational side of one edge (the RTL's wires): everything the registers load,
+// decoded from the inputs and the registers before the edge, before anything is written.
+struct MotionModel::Wires {
+  // The bus request.
+  std::uint32_t adr = 0, word = 0;
+  bool req = false, wr = false, commit = false, abort = false, clear = false;
+  // The queue.
+  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0;
+  bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
+  bool cmd_valid = false, take = false;
+  // The core's registered outputs, the stages and the feed.
+  bool core_done = false, core_err = false, running = false, advance = false, core_ce = false;
+  StageEdge ex, ey;
+  std::uint64_t acc_sum = 0;
+  // The read data of a bus read in this cycle.
+  std::uint32_t rd = 0;
+};
+
+MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
+  Wires w;
   const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
   const std::uint64_t all_words = mask_of(kEntryWords);
-  const std::uint32_t adr = b.adr & std::uint32_t(mask_of(kAddrWidth)) & ~3u;
+  w.adr = b.adr & std::uint32_t(mask_of(kAddrWidth)) & ~3u;
 
-  const bool req = b.cyc && b.stb && !get("ack_q");
-  const bool wr = req && b.we;
-  const bool wr_ctrl = wr && adr == reg_offset("CTRL");
-  const bool commit = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
-  const bool abort = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
-  const bool clear = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
-  const bool in_entry = adr >= kEntryBase && adr < kEntryBase + 4u * kEntryWords;
-  const std::uint32_t word = (adr - kEntryBase) >> 2;
+  w.req = b.cyc && b.stb && !get("ack_q");
+  w.wr = w.req && b.we;
+  const bool wr_ctrl = w.wr && w.adr == reg_offset("CTRL");
+  w.commit = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
+  w.abort = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
+  w.clear = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
+  const bool in_entry = w.adr >= kEntryBase && w.adr < kEntryBase + 4u * kEntryWords;
+  w.word = (w.adr - kEntryBase) >> 2;
 
-  const std::uint64_t level = get("level_q");
-  const bool full = level == depth, empty = level == 0;
+  w.level = get("level_q");
+  const bool full = w.level == depth;
+  w.empty = w.level == 0;
   const bool mask_all = get("mask_q") == all_words;
-  const bool wr_entry = wr && in_entry && !abort;
-  const bool entry_ok = wr_entry && !full;
-  const bool commit_ok = commit && !abort && !full && mask_all;
-  const bool err_overflow = (wr_entry || commit) && !abort && full;
-  const bool err_partial = commit && !abort && !full && !mask_all;
+  const bool wr_entry = w.wr && in_entry && !w.abort;
+  w.entry_ok = wr_entry && !full;
+  w.commit_ok = w.commit && !w.abort && !full && mask_all;
+  w.err_overflow = (wr_entry || w.commit) && !w.abort && full;
+  w.err_partial = w.commit && !w.abort && !full && !mask_all;
+  return w;
+}
 
+void MotionModel::core_wires(bool ce, Wires& w) const {
   // The core's outputs during this cycle (registered): what the stages and counters see.
   const Signals& pre = core_.state();
   const PortValues po = CoreModel::outputs(pre, false);
-  const bool core_done = CoreModel::done(pre), core_err = CoreModel::err(pre), running = CoreModel::busy(pre);
+  w.core_done = CoreModel::done(pre);
+  w.core_err = CoreModel::err(pre);
+  w.running = CoreModel::busy(pre);
   const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
   const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
-  const StageEdge ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, core_done, abort);
-  const StageEdge ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, core_done, abort);
+  w.ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, w.core_done, w.abort);
+  w.ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, w.core_done, w.abort);
   // The feed: the core may iterate when no stage holds it and the accumulator carries
   // (a timing written on this edge holds it once: the stages' look-ahead used the old).
-  const bool wr_timing = wr && (adr == reg_offset("STEP_X") || adr == reg_offset("DIR_X") ||
-                                adr == reg_offset("STEP_Y") || adr == reg_offset("DIR_Y"));
-  const bool hold = ex.hold || ey.hold || wr_timing;
-  const bool advance = in.ce && !hold;
-  const std::uint64_t feed = get("feed_q"), acc_sum = get("acc_q") + feed;
-  const bool core_ce = advance && (feed == 0 || ((acc_sum >> kFeedWidth) & 1u) != 0);
+  const bool wr_timing = w.wr && (w.adr == reg_offset("STEP_X") || w.adr == reg_offset("DIR_X") ||
+                                  w.adr == reg_offset("STEP_Y") || w.adr == reg_offset("DIR_Y"));
+  const bool hold = w.ex.hold || w.ey.hold || wr_timing;
+  w.advance = ce && !hold;
+  const std::uint64_t feed = get("feed_q");
+  w.acc_sum = get("acc_q") + feed;
+  w.core_ce = w.advance && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
 
-  const bool cmd_valid = get("primed_q") && !empty;
-  const bool take = cmd_valid && core_.cmd_ready(core_ce) && !abort;
-  const std::uint64_t level_d = level + commit_ok - take;
-  const std::uint32_t rd = read(adr);
-  const std::uint64_t head = get("head_q"), tail = get("tail_q");
-  const std::uint64_t entry_feed = (mem_[head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
+  w.cmd_valid = get("primed_q") && !w.empty;
+  w.take = w.cmd_valid && core_.cmd_ready(w.core_ce) && !w.abort;
+  w.level_d = w.level + w.commit_ok - w.take;
+  w.rd = read(w.adr);
+  w.head = get("head_q");
+  w.tail = get("tail_q");
+  w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
+}
 
+void MotionModel::step_core(bool rst_n, const Wires& w) {
   CoreInputs ci;
-  ci.rst_n = in.rst_n && !abort;
-  ci.ce = core_ce;
-  ci.cmd_valid = cmd_valid;
-  if (cmd_valid) ci.cmd = entry_fields(mem_[head]);
+  ci.rst_n = rst_n && !w.abort;
+  ci.ce = w.core_ce;
+  ci.cmd_valid = w.cmd_valid;
+  if (w.cmd_valid) ci.cmd = entry_fields(mem_[w.head]);
   core_.edge(ci);
+}
 
-  if (entry_ok) mem_[tail][word] = b.dat;  // the RAM has no reset
+void MotionModel::note_edge(const Wires& w) {
+  took_ = w.take;
+  core_ce_ = w.core_ce;
+  iterated_ = w.core_ce && !w.abort && w.running;
+  rise_x_ = w.ex.rise ? (w.ex.rise_dir ? -1 : 1) : 0;
+  rise_y_ = w.ey.rise ? (w.ey.rise_dir ? -1 : 1) : 0;
+}
+
+void MotionModel::load_bus(const BusIn& b, const Wires& w) {
+  reg("ack_q") = w.req;
+  if (w.req && !b.we) reg("dat_q") = w.rd;
+}
+
+void MotionModel::load_queue(const Wires& w) {
+  reg("primed_q") = 1;
+  reg("head_q") = w.abort ? w.tail : w.take ? (w.head + 1) & mask_of(depth_log2_) : w.head;
+  if (w.abort) {
+    reg("level_q") = 0;
+    reg("mask_q") = 0;
+  } else {
+    reg("level_q") = w.level_d;
+    if (w.commit_ok) {
+      reg("tail_q") = (w.tail + 1) & mask_of(depth_log2_);
+      reg("mask_q") = 0;
+    } else if (w.entry_ok) {
+      reg("mask_q") |= std::uint64_t{1} << w.word;
+    }
+  }
+}
+
+void MotionModel::load_status(const BusIn& b, const Wires& w) {
+  const bool err_set = w.err_overflow || w.err_partial || w.core_err;
+  const bool low_set = w.take && w.level_d < get("irq_level_q");
+  // A piece is done once its last steps (tagged on the core's done_o) have left.
+  const bool tags_left = w.ex.tag_left || w.ey.tag_left;
+  const bool old_done = get("done_wait_q") && !tags_left;
+  const bool new_wait = w.core_done && (w.ex.wait || w.ey.wait);
+  const bool new_done = w.core_done && !new_wait;
+  reg("done_wait_q") = !w.abort && (new_wait || (get("done_wait_q") && tags_left));
+  const std::uint64_t irq_set =
+      std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  // Sticky bits: a cause on the edge of a clear stays set.
+  reg("err_q") = (get("err_q") && !w.clear) || err_set;
+  reg("err_overflow_q") = (get("err_overflow_q") && !w.clear) || w.err_overflow;
+  reg("err_partial_q") = (get("err_partial_q") && !w.clear) || w.err_partial;
+  reg("err_stall_q") = (get("err_stall_q") && !w.clear) || w.core_err;
+  reg("aborted_q") = (get("aborted_q") && !w.clear) || w.abort;
+  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (b.dat & 7u) : 0;
+  reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
+  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
+  if (w.wr && w.adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
+  reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
+  reg("err_count_q") = (get("err_count_q") + w.core_err) & 0xFFFFFFFFu;
+  load_positions(b, w);
+}
+
+void MotionModel::load_positions(const BusIn& b, const Wires& w) {
+  const std::uint64_t dx = w.ex.rise ? (w.ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint64_t dy = w.ey.rise ? (w.ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+  // A preset is the position before the steps of the same edge: none is lost.
+  const std::uint64_t px = w.wr && w.adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
+  const std::uint64_t py = w.wr && w.adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
+  reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
+  reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
+}
+
+void MotionModel::load_feed(const Wires& w) {
+  if (w.abort) {
+    reg("feed_q") = 0;
+    reg("acc_q") = 0;
+  } else {
+    if (w.take) reg("feed_q") = w.entry_feed;
+    if (w.advance) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+  }
+}
+
+void MotionModel::load_settings(const BusIn& b, const Wires& w) {
+  for (const char axis : {'x', 'y'}) {
+    for (const auto& t : kTimingFields) {
+      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
+      if (w.wr && w.adr == reg_offset(r)) {
+        reg(std::string(t.name) + "_" + axis + "_q") = (b.dat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
+      }
+    }
+  }
+  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
+}
+
+void MotionModel::edge(const BlockInputs& in) {
+  // Every wire first, from the registers before the edge; then the core's edge, the
+  // RAM's write and the block's registers, in that order.
+  Wires w = bus_wires(in.bus);
+  core_wires(in.ce, w);
+  step_core(in.rst_n, w);
+
+  if (w.entry_ok) mem_[w.tail][w.word] = in.bus.dat;  // the RAM has no reset
   took_ = false;
   core_ce_ = iterated_ = false;
   rise_x_ = rise_y_ = 0;
@@ -390,72 +514,14 @@ void MotionModel::edge(const BlockInputs& in) {
     set_stage('y', stage_reset());
     return;
   }
-  took_ = take;
-  core_ce_ = core_ce;
-  iterated_ = core_ce && !abort && running;
-  rise_x_ = ex.rise ? (ex.rise_dir ? -1 : 1) : 0;
-  rise_y_ = ey.rise ? (ey.rise_dir ? -1 : 1) : 0;
-  reg("ack_q") = req;
-  if (req && !b.we) reg("dat_q") = rd;
-  reg("primed_q") = 1;
-  reg("head_q") = abort ? tail : take ? (head + 1) & mask_of(depth_log2_) : head;
-  if (abort) {
-    reg("level_q") = 0;
-    reg("mask_q") = 0;
-  } else {
-    reg("level_q") = level_d;
-    if (commit_ok) {
-      reg("tail_q") = (tail + 1) & mask_of(depth_log2_);
-      reg("mask_q") = 0;
-    } else if (entry_ok) {
-      reg("mask_q") |= std::uint64_t{1} << word;
-    }
-  }
-  const bool err_set = err_overflow || err_partial || core_err;
-  const bool low_set = take && level_d < get("irq_level_q");
-  // A piece is done once its last steps (tagged on the core's done_o) have left.
-  const bool tags_left = ex.tag_left || ey.tag_left;
-  const bool old_done = get("done_wait_q") && !tags_left;
-  const bool new_wait = core_done && (ex.wait || ey.wait);
-  const bool new_done = core_done && !new_wait;
-  reg("done_wait_q") = !abort && (new_wait || (get("done_wait_q") && tags_left));
-  const std::uint64_t irq_set =
-      std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
-  reg("err_q") = (get("err_q") && !clear) || err_set;
-  reg("err_overflow_q") = (get("err_overflow_q") && !clear) || err_overflow;
-  reg("err_partial_q") = (get("err_partial_q") && !clear) || err_partial;
-  reg("err_stall_q") = (get("err_stall_q") && !clear) || core_err;
-  reg("aborted_q") = (get("aborted_q") && !clear) || abort;
-  const std::uint64_t w1c = wr && adr == reg_offset("IRQ_STATUS") ? (b.dat & 7u) : 0;
-  reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
-  if (wr && adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
-  if (wr && adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
-  reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
-  reg("err_count_q") = (get("err_count_q") + core_err) & 0xFFFFFFFFu;
-  const std::uint64_t dx = ex.rise ? (ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint64_t dy = ey.rise ? (ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint64_t px = wr && adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
-  const std::uint64_t py = wr && adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
-  reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
-  reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
-  if (abort) {
-    reg("feed_q") = 0;
-    reg("acc_q") = 0;
-  } else {
-    if (take) reg("feed_q") = entry_feed;
-    if (advance) reg("acc_q") = acc_sum & mask_of(kFeedWidth);
-  }
-  set_stage('x', ex.next);
-  set_stage('y', ey.next);
-  for (const char axis : {'x', 'y'}) {
-    for (const auto& t : kTimingFields) {
-      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
-      if (wr && adr == reg_offset(r)) {
-        reg(std::string(t.name) + "_" + axis + "_q") = (b.dat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
-      }
-    }
-  }
-  if (wr && adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
+  note_edge(w);
+  load_bus(in.bus, w);
+  load_queue(w);
+  load_status(in.bus, w);
+  load_feed(w);
+  set_stage('x', w.ex.next);
+  set_stage('y', w.ey.next);
+  load_settings(in.bus, w);
 }
 
 }  // namespace dda::motion

@@ -268,17 +268,9 @@ std::int64_t nearest_theta(const ArcSpec& spec, Point q) {
   return normalize_udeg(t);
 }
 
-}  // namespace
-
-Plan plan_arc(const ArcSpec& spec_in) {
-  Plan p;
-  p.spec = spec_in;
-  ArcSpec& spec = p.spec;
-  spec.angle = normalize_udeg(spec.angle);
-  check_axes_and_center(spec);
-  const std::int64_t a = steps_ceil(spec, spec.a), b = steps_ceil(spec, spec.b);  // whole steps
-  const int qt = quarter_turns(spec);
-  p.rotated = qt < 0;
+// Settles the width n (the default if none is given) and refuses one below the smallest
+// valid width, 2^n >= max(a, b) (whole steps), or more than kMaxExtraBits above it.
+void resolve_bits(ArcSpec& spec, std::int64_t a, std::int64_t b) {
   const int nmin = smallest_valid_bits(a, b);
   if (spec.bits == 0) spec.bits = default_bits(a, b);
   if (spec.bits < 1 || spec.bits > 61 || (std::int64_t{1} << spec.bits) < std::max(a, b)) {
@@ -291,6 +283,13 @@ Plan plan_arc(const ArcSpec& spec_in) {
                      " bits above the smallest valid width (" + std::to_string(nmin) +
                      ") are accepted; each bit doubles the run");
   }
+}
+
+// Refuses a width the datapath cannot run: quarter turns, a capacity 2^n a b from 2^61
+// up (kCapLimit); a rotated ellipse, a width whose fixed-point coefficients could move
+// the curve by more than kMaxCoefficientDrift steps, or above kRotCapBits.
+void check_capacity(const Plan& p, std::int64_t a, std::int64_t b) {
+  const ArcSpec& spec = p.spec;
   const std::int64_t ab = spec.a * spec.b;
   if (!p.rotated) {
     const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
@@ -305,23 +304,13 @@ Plan plan_arc(const ArcSpec& spec_in) {
       << " allowed: max(a,b)^2 2^n / (2^" << kRotCapBits << " min(a,b)); use fewer bits)";
     throw InputError(m.str());
   }
-  p.scale = ab;
-  const Scaled sc = scaled_coefficients(spec, spec.bits);
-  p.coef = sc.k;
-  p.ax = qt >= 0 && qt % 2 ? spec.b : spec.a;
-  p.by = qt >= 0 && qt % 2 ? spec.a : spec.b;
-  if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
-  if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
-  const Point c = spec.center;
-  // Defaults: the quadrant-I quarter arc (quarter turns), parametric 0 to 90 (rotated).
-  const auto dflt = [&](Point q) { return p.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
-  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + p.ax, c.y}));
-  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + p.by}));
-  p.from = from.lattice;
-  p.to = to.lattice;
-  p.frac_x = from.fx;
-  p.frac_y = from.fy;
+}
 
+// Refuses a lattice start or end (p.from, p.to) that lies more than the tolerance from
+// the ellipse; a parametric end is found by the walk, so it is not checked here.
+void check_end_points(const Plan& p, std::int64_t a, std::int64_t b) {
+  const ArcSpec& spec = p.spec;
+  const Point c = spec.center;
   const double tol =
       (spec.tolerance > 0 ? spec.tolerance : kPointTolerance) + 1e-9 * static_cast<double>(std::max(a, b));
   for (const auto& [name, q] : {std::pair{"from", p.from}, std::pair{"to", p.to}}) {
@@ -347,33 +336,61 @@ Plan plan_arc(const ArcSpec& spec_in) {
       throw InputError(m.str());
     }
   }
-  // A full turn: equal lattice ends, or equal parametric angles (a parametric end is
-  // found by the walk, so its lattice point is not known yet).
-  p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
-                         : p.from == p.to;
-  const Point start = p.from, target = p.to;  // the path's own ends (target: lattice ends)
-  const bool half = spec.preload == Preload::Half;
-  // docs/golden-model.md, "Start and end points". With half preload a lattice start maps
-  // to the nearest point of the curve: the arc starts from the lattice point nearest to
-  // that point, the rest of it in the preloads (so the DDA follows the ideal curve, not
-  // the level set through the lattice start), after a lead-in line from the start if
-  // that lattice point is another one. A lattice end (half preload, or zero preload when
-  // the path cannot reach it by counting its steps) ends the arc where the path crosses
-  // the ray through the end's nearest curve point, and a lead-out line goes on to the
-  // end. A full turn closes with a line to its start.
-  EndPoint arc_from = from;
+}
+
+// The cut of a validated arc into pieces, from its start p.from to its end p.to.
+// docs/golden-model.md, "Start and end points". With half preload a lattice start maps
+// to the nearest point of the curve: the arc starts from the lattice point nearest to
+// that point, the rest of it in the preloads (so the DDA follows the ideal curve, not
+// the level set through the lattice start), after a lead-in line from the start if
+// that lattice point is another one. A lattice end (half preload, or zero preload when
+// the path cannot reach it by counting its steps) ends the arc where the path crosses
+// the ray through the end's nearest curve point, and a lead-out line goes on to the
+// end. A full turn closes with a line to its start.
+struct ArcPieces {
+  Plan& p;
+  const ArcSpec& spec;
+  const Scaled& sc;
+  const Point c;
+  const Point start, target;  // the path's own ends (target: lattice ends)
+  const bool half;
+  EndPoint arc_from;  // the arc's own start
+  // Its parametric angle, when a lattice start was mapped to the curve (half preload).
   std::optional<std::int64_t> theta_start;
-  if (half && !spec.from_theta) {
-    theta_start = nearest_theta(spec, start);
-    arc_from = resolve_point(spec, std::nullopt, *theta_start, 0, std::nullopt);
+
+  ArcPieces(Plan& plan, const Scaled& scaled, const EndPoint& from)
+      : p(plan),
+        spec(plan.spec),
+        sc(scaled),
+        c(plan.spec.center),
+        start(plan.from),
+        target(plan.to),
+        half(plan.spec.preload == Preload::Half),
+        arc_from(from) {
+    if (half && !spec.from_theta) {
+      theta_start = nearest_theta(spec, start);
+      arc_from = resolve_point(spec, std::nullopt, *theta_start, 0, std::nullopt);
+    }
   }
-  const auto ray_to = [&](FixedPoint e) {
+
+  // The end where the path crosses the ray through the curve point e, seen from the
+  // arc's start.
+  RayEnd ray_to(FixedPoint e) const {
     const Point s0 = arc_from.lattice;
     const FixedPoint rep{((s0.x - c.x) << kPosFrac) + arc_from.fx, ((s0.y - c.y) << kPosFrac) + arc_from.fy};
     return RayEnd(e, spec.dir, p.full, spec.from_theta ? theta_ideal(spec, *spec.from_theta) : rep,
                   Point{s0.x - c.x, s0.y - c.y}, center_offset(spec));
-  };
-  const auto plan_pieces = [&](std::optional<RayEnd> ray) {
+  }
+
+  // The ray through the lattice end's nearest curve point (a full turn: the start's).
+  RayEnd end_ray() const {
+    const std::int64_t te = p.full && theta_start ? *theta_start : nearest_theta(spec, target);
+    return ray_to(theta_ideal(spec, te));
+  }
+
+  // The pieces by the DDA's own turns (plan_rotated.cpp) or at the vertices
+  // (plan_quadrant.cpp), ending at the ray, or with a lattice end at the target.
+  void plan_pieces(std::optional<RayEnd> ray) {
     p.pieces.clear();
     p.iteration_bound = 0;
     p.from = arc_from.lattice;  // the piece planners start at the arc's own start
@@ -383,13 +400,22 @@ Plan plan_arc(const ArcSpec& spec_in) {
     } else {
       detail::plan_quadrant_pieces(p, sc.cap, arc_from, ray);
     }
-  };
-  // Rotated ellipses with half preload, and with zero preload where the DDA's own turns
-  // lose the curve (always at tips sharper than a quarter step: radius of curvature
-  // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
-  const bool quarter_step_tips =
-      4 * i128(std::min(spec.a, spec.b)) * std::min(spec.a, spec.b) <= i128(std::max(spec.a, spec.b)) << spec.sub;
-  const auto plan_anchored = [&] {
+  }
+
+  // Zero preload with a lattice end: the path counts its steps to it, as in the paper,
+  // unless it cannot reach it; then it ends at the ray.
+  void plan_counted_or_ray() {
+    try {
+      plan_pieces(std::nullopt);
+      p.from = start;
+      check_reachable(p);
+    } catch (const InputError&) {
+      plan_pieces(end_ray());
+    }
+  }
+
+  // The pieces anchored on the ideal curve at every turn (plan_anchored.cpp).
+  void plan_anchored() {
     p.pieces.clear();
     p.from = arc_from.lattice;
     p.to = target;
@@ -398,65 +424,101 @@ Plan plan_arc(const ArcSpec& spec_in) {
                                             : nearest_theta(spec, start);
     const std::int64_t t1 = spec.to_theta ? *spec.to_theta : p.full ? t0 : nearest_theta(spec, target);
     detail::plan_anchored_pieces(p, sc, arc_from, normalize_udeg(t0), normalize_udeg(t1));
-  };
-  const auto end_ray = [&] {
-    const std::int64_t te = p.full && theta_start ? *theta_start : nearest_theta(spec, target);
-    return ray_to(theta_ideal(spec, te));
-  };
-  if (!spec.to_theta && !p.full &&
-      nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
-    // Both ends map to the same point of the curve: the arc between them is the line.
-    p.pieces = line_pieces(start, target, spec.preload);
-  } else if (p.rotated && (half || quarter_step_tips || spec.sub != 0)) {
-    plan_anchored();
-  } else if (p.rotated) {
-    try {  // zero preload: the DDA's own turns (plan_rotated.cpp), unless they lose the curve
-      if (spec.to_theta) {
-        plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
-      } else {
-        try {
-          plan_pieces(std::nullopt);
-          p.from = start;
-          check_reachable(p);
-        } catch (const InputError&) {
-          plan_pieces(end_ray());
-        }
-      }
-    } catch (const InputError&) {
+  }
+
+  // The arc's pieces by the planner that fits the ellipse, its preload and its ends.
+  void plan() {
+    // Rotated ellipses with half preload, and with zero preload where the DDA's own turns
+    // lose the curve (always at tips sharper than a quarter step: radius of curvature
+    // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
+    const bool quarter_step_tips =
+        4 * i128(std::min(spec.a, spec.b)) * std::min(spec.a, spec.b) <= i128(std::max(spec.a, spec.b)) << spec.sub;
+    if (!spec.to_theta && !p.full &&
+        nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
+      // Both ends map to the same point of the curve: the arc between them is the line.
+      p.pieces = line_pieces(start, target, spec.preload);
+    } else if (p.rotated && (half || quarter_step_tips || spec.sub != 0)) {
       plan_anchored();
-    }
-  } else if (spec.to_theta) {
-    plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
-  } else if (half) {
-    plan_pieces(end_ray());
-  } else {
-    try {  // zero preload: the path counts its steps to the lattice end, as in the paper
-      plan_pieces(std::nullopt);
-      p.from = start;
-      check_reachable(p);
-    } catch (const InputError&) {
+    } else if (p.rotated) {
+      try {  // zero preload: the DDA's own turns (plan_rotated.cpp), unless they lose the curve
+        if (spec.to_theta) {
+          plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
+        } else {
+          plan_counted_or_ray();
+        }
+      } catch (const InputError&) {
+        plan_anchored();
+      }
+    } else if (spec.to_theta) {
+      plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
+    } else if (half) {
       plan_pieces(end_ray());
+    } else {
+      plan_counted_or_ray();
     }
   }
-  // The lead-in and lead-out lines; a full turn given by angles closes on its start.
-  const Point arc_start = p.pieces.empty() ? arc_from.lattice : p.pieces.front().from;
-  const Point arc_end = p.pieces.empty() ? arc_from.lattice : p.pieces.back().to;
-  const Point end = spec.to_theta && !p.full ? arc_end : p.full && spec.to_theta ? start : target;
-  if (arc_end != end) {
-    for (const Piece& l : line_pieces(arc_end, end, spec.preload)) p.pieces.push_back(l);
+
+  // The lead-in and lead-out lines around the arc's pieces, and the plan's ends, start
+  // point fraction and iteration bound; a full turn given by angles closes on its start.
+  void add_lead_lines() {
+    const Point arc_start = p.pieces.empty() ? arc_from.lattice : p.pieces.front().from;
+    const Point arc_end = p.pieces.empty() ? arc_from.lattice : p.pieces.back().to;
+    const Point end = spec.to_theta && !p.full ? arc_end : p.full && spec.to_theta ? start : target;
+    if (arc_end != end) {
+      for (const Piece& l : line_pieces(arc_end, end, spec.preload)) p.pieces.push_back(l);
+    }
+    if (arc_start != start) {
+      std::vector<Piece> v = line_pieces(start, arc_start, spec.preload);
+      p.pieces.insert(p.pieces.begin(), v.begin(), v.end());
+    }
+    if (p.pieces.empty()) throw GuardError("planner fault: the arc from " + pt(start) + " has no piece");
+    p.from = start;
+    p.to = end;
+    p.arc_from = arc_from.lattice;
+    p.frac_x = arc_from.fx;
+    p.frac_y = arc_from.fy;
+    p.iteration_bound = 0;
+    for (const Piece& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
   }
-  if (arc_start != start) {
-    std::vector<Piece> v = line_pieces(start, arc_start, spec.preload);
-    p.pieces.insert(p.pieces.begin(), v.begin(), v.end());
-  }
-  if (p.pieces.empty()) throw GuardError("planner fault: the arc from " + pt(start) + " has no piece");
-  p.from = start;
-  p.to = end;
-  p.arc_from = arc_from.lattice;
-  p.frac_x = arc_from.fx;
-  p.frac_y = arc_from.fy;
-  p.iteration_bound = 0;
-  for (const Piece& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
+};
+
+}  // namespace
+
+Plan plan_arc(const ArcSpec& spec_in) {
+  Plan p;
+  p.spec = spec_in;
+  ArcSpec& spec = p.spec;
+  spec.angle = normalize_udeg(spec.angle);
+  check_axes_and_center(spec);
+  const std::int64_t a = steps_ceil(spec, spec.a), b = steps_ceil(spec, spec.b);  // whole steps
+  const int qt = quarter_turns(spec);
+  p.rotated = qt < 0;
+  resolve_bits(spec, a, b);
+  check_capacity(p, a, b);
+  p.scale = spec.a * spec.b;
+  const Scaled sc = scaled_coefficients(spec, spec.bits);
+  p.coef = sc.k;
+  p.ax = qt >= 0 && qt % 2 ? spec.b : spec.a;
+  p.by = qt >= 0 && qt % 2 ? spec.a : spec.b;
+  if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
+  if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
+  const Point c = spec.center;
+  // Defaults: the quadrant-I quarter arc (quarter turns), parametric 0 to 90 (rotated).
+  const auto dflt = [&](Point q) { return p.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
+  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + p.ax, c.y}));
+  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + p.by}));
+  p.from = from.lattice;
+  p.to = to.lattice;
+  p.frac_x = from.fx;
+  p.frac_y = from.fy;
+  check_end_points(p, a, b);
+  // A full turn: equal lattice ends, or equal parametric angles (a parametric end is
+  // found by the walk, so its lattice point is not known yet).
+  p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
+                         : p.from == p.to;
+  ArcPieces pieces(p, sc, from);
+  pieces.plan();
+  pieces.add_lead_lines();
   // Reachability: the exact model decides whether every piece ends (no stall).
   check_reachable(p);
   return p;

@@ -125,7 +125,27 @@ class Reader {
   void exec(std::size_t program, int depth);
   detail::LinePos step(const detail::Line& l, const detail::LinePos& at, const detail::LinePos& next);
   void call(const Call& c, int depth);
+
+  // The modal groups of the G codes, one code of each in a block: motion, plane, units,
+  // distance mode, the lathe's X mode (G36/G37), cutter compensation, dwell, work offset.
+  enum Group : std::size_t { kMotion, kPlane, kUnits, kDistance, kXMode, kComp, kDwell, kWork, kGroups };
+  // A block's words sorted by kind: its N, its G codes by group, its other words by
+  // letter (axes, centre offsets, parameters), and what its M codes ask for.
+  struct Block {
+    std::optional<std::int64_t> n;
+    std::array<const Word*, kGroups> group{};
+    std::map<char, const Word*> axes;
+    bool end = false;              // M02 or M30: the program ends after the block
+    std::optional<SourcePos> m98;  // M98: the block calls a subprogram
+  };
   void block(const detail::Line& l);
+  void sort_word(const Word& w, Block& b);
+  void g_code(const Word& w, Block& b);
+  void m_code(const Word& w, Block& b);
+  void set_group(Block& b, Group g, const Word& w, const char* what) const;
+  void set_modes(const Block& b);
+  void dwell(const Block& b);
+  Call m98_call(const Block& b) const;
   void motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n);
   void arc(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
   void ellipse(Move& mv, const std::map<char, const Word*>& axes, const SourcePos& where);
@@ -233,117 +253,137 @@ void Reader::block(const detail::Line& l) {
   std::vector<Word> words;  // expressions evaluated now, in the variables' present state
   words.reserve(l.words.size());
   for (const Word& w : l.words) words.push_back(macro_.value_word(l, w));
-  const SourcePos first = words.front().pos;
-  std::optional<std::int64_t> n;
-  std::array<const Word*, 8> group{};  // modal groups: motion, plane, units, distance, diameter, comp, dwell, work
-  std::map<char, const Word*> axes;
-  bool end = false;
-  const auto set_group = [&](std::size_t g, const Word& w, const char* what) {
-    if (group[g]) fail(w.pos, "G" + group[g]->text + " and G" + w.text + " in one block: one " + what + " per block");
-    group[g] = &w;
-  };
-  std::optional<SourcePos> m98;
-  for (const Word& w : words) {
-    switch (w.letter) {
-      case 'N':
-        n = integer(w);
-        break;
-      case 'G': {
-        const int g = tenths(w);
-        if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63) {
-          set_group(0, w, "motion");
-        } else if (g == 170 || g == 180 || g == 190) {
-          if (opt_.machine == Machine::Lathe && g != 180) fail(w.pos, "a lathe works in G18 (Z and X)");
-          set_group(1, w, "plane");
-        } else if (g == 200 || g == 210) {
-          set_group(2, w, "unit");
-        } else if (g == 900 || g == 910) {
-          set_group(3, w, "distance mode");
-        } else if (g == 360 || g == 370) {
-          if (opt_.machine != Machine::Lathe)
-            fail(w.pos, "G36/G37 (diameter or radius X) are lathe codes (--machine lathe)");
-          set_group(4, w, "X mode");
-        } else if (g == 400) {
-          ignore(w);
-        } else if (g == 410 || g == 420) {
-          fail(w.pos, "tool radius compensation (G41/G42) is not supported: program the tool's path");
-        } else if (g == 40) {
-          set_group(6, w, "dwell");
-          ignore(w);
-        } else if ((g >= 540 && g <= 590 && g % 10 == 0) || g == 940 || g == 950 || g == 800) {
-          ignore(w);
-        } else {
-          fail(w.pos, "unknown or unsupported code " + name(w));
-        }
-        break;
-      }
-      case 'M': {
-        const std::int64_t m = integer(w);
-        if (m == 2 || m == 30) {
-          end = true;
-        } else if (m == 0 || m == 1 || m == 3 || m == 4 || m == 5 || m == 8 || m == 9) {
-          ignore(w);
-        } else if (m == 98) {
-          m98 = w.pos;
-        } else if (m == 99) {
-          return_ = true;
-        } else {
-          fail(w.pos, "unknown or unsupported code " + name(w));
-        }
-        break;
-      }
-      case 'S':
-      case 'T':
-        ignore(w);
-        break;
-      case 'F': {
-        const double f = double(w.mantissa) / double(pow10(w.decimals));
-        if (f <= 0) fail(w.pos, "the feed F must be positive");
-        m_.feed = f;
-        break;
-      }
-      default:
-        if (std::string_view("XYZUVWIJKRABQPL").find(w.letter) == std::string_view::npos) {
-          fail(w.pos, std::string("unknown word ") + w.letter);
-        }
-        if (axes.count(w.letter)) fail(w.pos, std::string(1, w.letter) + " twice in one block");
-        axes[w.letter] = &w;
-    }
-  }
-  // The modal codes take effect before the block's motion (RS274's order).
-  if (group[1]) m_.plane = tenths(*group[1]);
-  if (group[2]) m_.inch = tenths(*group[2]) == 200;
-  if (group[3]) m_.incremental = tenths(*group[3]) == 910;
-  if (group[4]) m_.diameter = tenths(*group[4]) == 360;
-  if (group[0]) m_.motion = tenths(*group[0]);
-  if (group[6] && m98) fail(*m98, "M98 in a dwell (G04) block: a call stands in its own block");
-  if (group[6]) {  // G04: X, U or P is the dwell time, nothing moves
-    for (const auto& [c, w] : axes) {
-      if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
-      ignore(*w);
-    }
-  } else if (m98) {  // M98 P (program number) L (repeats, default 1): nothing else moves
-    if (return_) fail(*m98, "M98 and M99 in one block: call or return, not both");
-    const auto p = axes.find('P');
-    if (p == axes.end()) fail(*m98, "M98 needs P, the number of the program to call");
-    Call c;
-    c.program = integer(*p->second);
-    c.pos = p->second->pos;
-    if (const auto rl = axes.find('L'); rl != axes.end()) {
-      c.repeats = integer(*rl->second);
-      if (c.repeats < 1 || c.repeats > 9999) fail(rl->second->pos, "L (the repeat count) must be from 1 to 9999");
-    }
-    for (const auto& [ch, w] : axes) {
-      if (ch != 'P' && ch != 'L') fail(w->pos, std::string(1, ch) + " in an M98 block: a call moves nothing");
-    }
-    call_ = c;
+  Block b;
+  for (const Word& w : words) sort_word(w, b);
+  set_modes(b);
+  if (b.group[kDwell] && b.m98) fail(*b.m98, "M98 in a dwell (G04) block: a call stands in its own block");
+  if (b.group[kDwell]) {
+    dwell(b);
+  } else if (b.m98) {
+    call_ = m98_call(b);
   } else {
-    if (const auto p = axes.find('P'); p != axes.end()) fail(p->second->pos, "P is read only with G04 and M98");
-    if (const auto rl = axes.find('L'); rl != axes.end()) fail(rl->second->pos, "L is read only with M98");
-    const bool moves = !axes.empty() || (group[0] && (m_.motion == 20 || m_.motion == 30));
-    if (moves) motion(axes, group[0] ? group[0]->pos : first, n);
+    if (const auto p = b.axes.find('P'); p != b.axes.end()) fail(p->second->pos, "P is read only with G04 and M98");
+    if (const auto rl = b.axes.find('L'); rl != b.axes.end()) fail(rl->second->pos, "L is read only with M98");
+    const bool moves = !b.axes.empty() || (b.group[kMotion] && (m_.motion == 20 || m_.motion == 30));
+    if (moves) motion(b.axes, b.group[kMotion] ? b.group[kMotion]->pos : words.front().pos, b.n);
   }
-  if (end) sum_.ended = true;
+  if (b.end) sum_.ended = true;
+}
+
+// One word of a block into its place in `b`: an unknown word, or a letter twice, fails.
+void Reader::sort_word(const Word& w, Block& b) {
+  switch (w.letter) {
+    case 'N':
+      b.n = integer(w);
+      break;
+    case 'G':
+      g_code(w, b);
+      break;
+    case 'M':
+      m_code(w, b);
+      break;
+    case 'S':
+    case 'T':
+      ignore(w);
+      break;
+    case 'F': {
+      const double f = double(w.mantissa) / double(pow10(w.decimals));
+      if (f <= 0) fail(w.pos, "the feed F must be positive");
+      m_.feed = f;
+      break;
+    }
+    default:
+      if (std::string_view("XYZUVWIJKRABQPL").find(w.letter) == std::string_view::npos) {
+        fail(w.pos, std::string("unknown word ") + w.letter);
+      }
+      if (b.axes.count(w.letter)) fail(w.pos, std::string(1, w.letter) + " twice in one block");
+      b.axes[w.letter] = &w;
+  }
+}
+
+// A G code: into its modal group, ignored (it does not move the tool) or refused.
+void Reader::g_code(const Word& w, Block& b) {
+  const int g = tenths(w);
+  if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63) {
+    set_group(b, kMotion, w, "motion");
+  } else if (g == 170 || g == 180 || g == 190) {
+    if (opt_.machine == Machine::Lathe && g != 180) fail(w.pos, "a lathe works in G18 (Z and X)");
+    set_group(b, kPlane, w, "plane");
+  } else if (g == 200 || g == 210) {
+    set_group(b, kUnits, w, "unit");
+  } else if (g == 900 || g == 910) {
+    set_group(b, kDistance, w, "distance mode");
+  } else if (g == 360 || g == 370) {
+    if (opt_.machine != Machine::Lathe) fail(w.pos, "G36/G37 (diameter or radius X) are lathe codes (--machine lathe)");
+    set_group(b, kXMode, w, "X mode");
+  } else if (g == 400) {
+    ignore(w);
+  } else if (g == 410 || g == 420) {
+    fail(w.pos, "tool radius compensation (G41/G42) is not supported: program the tool's path");
+  } else if (g == 40) {
+    set_group(b, kDwell, w, "dwell");
+    ignore(w);
+  } else if ((g >= 540 && g <= 590 && g % 10 == 0) || g == 940 || g == 950 || g == 800) {
+    ignore(w);
+  } else {
+    fail(w.pos, "unknown or unsupported code " + name(w));
+  }
+}
+
+// An M code: the program's end, a call, a return, ignored (spindle, coolant) or refused.
+void Reader::m_code(const Word& w, Block& b) {
+  const std::int64_t m = integer(w);
+  if (m == 2 || m == 30) {
+    b.end = true;
+  } else if (m == 0 || m == 1 || m == 3 || m == 4 || m == 5 || m == 8 || m == 9) {
+    ignore(w);
+  } else if (m == 98) {
+    b.m98 = w.pos;
+  } else if (m == 99) {
+    return_ = true;
+  } else {
+    fail(w.pos, "unknown or unsupported code " + name(w));
+  }
+}
+
+void Reader::set_group(Block& b, Group g, const Word& w, const char* what) const {
+  if (b.group[g]) fail(w.pos, "G" + b.group[g]->text + " and G" + w.text + " in one block: one " + what + " per block");
+  b.group[g] = &w;
+}
+
+// The modal codes take effect before the block's motion (RS274's order).
+void Reader::set_modes(const Block& b) {
+  if (b.group[kPlane]) m_.plane = tenths(*b.group[kPlane]);
+  if (b.group[kUnits]) m_.inch = tenths(*b.group[kUnits]) == 200;
+  if (b.group[kDistance]) m_.incremental = tenths(*b.group[kDistance]) == 910;
+  if (b.group[kXMode]) m_.diameter = tenths(*b.group[kXMode]) == 360;
+  if (b.group[kMotion]) m_.motion = tenths(*b.group[kMotion]);
+}
+
+// G04: X, U or P is the dwell time, nothing moves.
+void Reader::dwell(const Block& b) {
+  for (const auto& [c, w] : b.axes) {
+    if (c != 'X' && c != 'U' && c != 'P') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
+    ignore(*w);
+  }
+}
+
+// M98 P (program number) L (repeats, default 1): nothing else moves.
+Reader::Call Reader::m98_call(const Block& b) const {
+  if (return_) fail(*b.m98, "M98 and M99 in one block: call or return, not both");
+  const auto p = b.axes.find('P');
+  if (p == b.axes.end()) fail(*b.m98, "M98 needs P, the number of the program to call");
+  Call c;
+  c.program = integer(*p->second);
+  c.pos = p->second->pos;
+  if (const auto rl = b.axes.find('L'); rl != b.axes.end()) {
+    c.repeats = integer(*rl->second);
+    if (c.repeats < 1 || c.repeats > 9999) fail(rl->second->pos, "L (the repeat count) must be from 1 to 9999");
+  }
+  for (const auto& [ch, w] : b.axes) {
+    if (ch != 'P' && ch != 'L') fail(w->pos, std::string(1, ch) + " in an M98 block: a call moves nothing");
+  }
+  return c;
 }
 
 void Reader::motion(const std::map<char, const Word*>& axes, const SourcePos& where, std::optional<std::int64_t> n) {

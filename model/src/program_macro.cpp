@@ -30,38 +30,59 @@ std::int64_t Macro::var_number(const Line& l, int index, const SourcePos& at) {
 
 double Macro::eval(const Line& l, int node) {
   const Node& n = l.nodes[std::size_t(node)];
-  const auto arg = [&](int i) { return eval(l, i); };
   double r = 0;
   switch (n.op) {
     case Op::Num:
       return n.value;
     case Op::Pi:
       return det::kPi;
-    case Op::Var: {
-      const std::int64_t k = var_number(l, n.a, n.pos);
-      const auto it = vars_.find(k);
-      if (it == vars_.end()) fail(n.pos, fmt::format("#{} is undefined: no value was assigned to it", k));
-      return it->second;
-    }
+    case Op::Var:
+      return variable(l, n);
     case Op::Neg:
-      return -arg(n.a);
+      return -eval(l, n.a);
     case Op::Not:
-      return arg(n.a) == 0 ? 1 : 0;
+      return eval(l, n.a) == 0 ? 1 : 0;
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Lt:
+    case Op::Le:
+    case Op::And:
+    case Op::Or:
+      return condition(l, n);  // 0 or 1: nothing to overflow
     case Op::Add:
-      r = arg(n.a) + arg(n.b);
-      break;
     case Op::Sub:
-      r = arg(n.a) - arg(n.b);
-      break;
     case Op::Mul:
-      r = arg(n.a) * arg(n.b);
+    case Op::Div:
+      r = arithmetic(l, n);
       break;
-    case Op::Div: {
-      const double num = arg(n.a), den = arg(n.b);
-      if (den == 0) fail(n.pos, "division by zero");
-      r = num / den;
+    case Op::Sin:
+    case Op::Cos:
+    case Op::Tan:
+    case Op::Atan:
+    case Op::Sqrt:
+    case Op::Abs:
+    case Op::Int:
+      r = function(l, n);
       break;
-    }
+  }
+  if (!std::isfinite(r) || std::fabs(r) > kMaxValue) {
+    fail(n.pos, fmt::format("a value beyond {:g}: the macro arithmetic overflows", kMaxValue));
+  }
+  return r;
+}
+
+double Macro::variable(const Line& l, const Node& n) {
+  const std::int64_t k = var_number(l, n.a, n.pos);
+  const auto it = vars_.find(k);
+  if (it == vars_.end()) fail(n.pos, fmt::format("#{} is undefined: no value was assigned to it", k));
+  return it->second;
+}
+
+double Macro::condition(const Line& l, const Node& n) {
+  const auto arg = [&](int i) { return eval(l, i); };
+  switch (n.op) {
     case Op::Eq:
       return arg(n.a) == arg(n.b);
     case Op::Ne:
@@ -74,7 +95,7 @@ double Macro::eval(const Line& l, int node) {
       return arg(n.a) < arg(n.b);
     case Op::Le:
       return arg(n.a) <= arg(n.b);
-    case Op::And: {
+    case Op::And: {  // both operands evaluated (and checked), as in the comparisons
       const double a = arg(n.a), b = arg(n.b);
       return a != 0 && b != 0;
     }
@@ -82,35 +103,51 @@ double Macro::eval(const Line& l, int node) {
       const double a = arg(n.a), b = arg(n.b);
       return a != 0 || b != 0;
     }
-    case Op::Sin:
-      r = det::sin(arg(n.a));
-      break;
-    case Op::Cos:
-      r = det::cos(arg(n.a));
-      break;
-    case Op::Tan:  // (near an odd multiple of pi/2 the value overflows: refused below)
-      r = det::tan(arg(n.a));
-      break;
-    case Op::Atan:
-      r = det::atan(arg(n.a));
-      break;
-    case Op::Sqrt: {
-      const double a = arg(n.a);
-      if (a < 0) fail(n.pos, fmt::format("SQRT of a negative number ({})", fmt_value(a)));
-      r = std::sqrt(a);  // IEEE 754 rounds it correctly: the same bits everywhere
-      break;
+    default:
+      return 0;
+  }
+}
+
+double Macro::arithmetic(const Line& l, const Node& n) {
+  const auto arg = [&](int i) { return eval(l, i); };
+  switch (n.op) {
+    case Op::Add:
+      return arg(n.a) + arg(n.b);
+    case Op::Sub:
+      return arg(n.a) - arg(n.b);
+    case Op::Mul:
+      return arg(n.a) * arg(n.b);
+    case Op::Div: {
+      const double num = arg(n.a), den = arg(n.b);
+      if (den == 0) fail(n.pos, "division by zero");
+      return num / den;
     }
+    default:
+      return 0;
+  }
+}
+
+double Macro::function(const Line& l, const Node& n) {
+  const double a = eval(l, n.a);
+  switch (n.op) {
+    case Op::Sin:
+      return det::sin(a);
+    case Op::Cos:
+      return det::cos(a);
+    case Op::Tan:  // (near an odd multiple of pi/2 the value overflows: refused by eval)
+      return det::tan(a);
+    case Op::Atan:
+      return det::atan(a);
+    case Op::Sqrt:
+      if (a < 0) fail(n.pos, fmt::format("SQRT of a negative number ({})", fmt_value(a)));
+      return std::sqrt(a);  // IEEE 754 rounds it correctly: the same bits everywhere
     case Op::Abs:
-      r = std::fabs(arg(n.a));
-      break;
+      return std::fabs(a);
     case Op::Int:
-      r = std::trunc(arg(n.a));
-      break;
+      return std::trunc(a);
+    default:
+      return 0;
   }
-  if (!std::isfinite(r) || std::fabs(r) > kMaxValue) {
-    fail(n.pos, fmt::format("a value beyond {:g}: the macro arithmetic overflows", kMaxValue));
-  }
-  return r;
 }
 
 bool Macro::truth(const Line& l) { return eval(l, l.value) != 0; }

@@ -37,6 +37,12 @@ class Macro {
  private:
   [[noreturn]] void fail(const SourcePos& p, const std::string& msg) const;
   std::int64_t var_number(const Line& l, int index, const SourcePos& at);
+  // The parts of eval, by the kind of node: a variable's value; a comparison, AND or OR
+  // (0 or 1); + - * /; a function (SIN .. INT). eval checks the last two for overflow.
+  double variable(const Line& l, const Node& n);
+  double condition(const Line& l, const Node& n);
+  double arithmetic(const Line& l, const Node& n);
+  double function(const Line& l, const Node& n);
   std::string file_;
   std::map<std::int64_t, double> vars_;
 };

@@ -149,100 +149,152 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   return v;
 }
 
-void dda_motion::seq() {
+// The decode of this edge's bus request and queue (the RTL's wires), read from the ports
+// and registers before the edge.
+struct dda_motion::Decode {
+  std::uint32_t adr = 0, dat = 0, word = 0, tail = 0, level_d = 0, head_d = 0;
+  bool req = false, wr = false, abort = false, clear = false;
+  bool entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false, take = false;
+};
+
+dda_motion::Decode dda_motion::decode() const {
   const std::uint32_t depth = 1u << depth_log2_, imask = depth - 1;
   const std::uint32_t all_words = std::uint32_t((std::uint64_t{1} << kEntryWords) - 1);
-  const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
-  const bool wr = req && wb_we_i.read();
-  const std::uint32_t adr = wb_adr_i.read() & 0xFCu, dat = wb_dat_i.read();
-  const bool wr_ctrl = wr && adr == kCtrl;
-  const bool commit = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
-  const bool abort = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
-  const bool clear = wr_ctrl && ((dat >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
-  const bool in_entry = adr >= motion::kEntryBase && adr < motion::kEntryBase + 4u * kEntryWords;
-  const std::uint32_t word = (adr - motion::kEntryBase) >> 2;
-  const std::uint32_t level = level_q.read(), head = head_q.read(), tail = tail_q.read();
+  Decode d;
+  d.req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
+  d.wr = d.req && wb_we_i.read();
+  d.adr = wb_adr_i.read() & 0xFCu;
+  d.dat = wb_dat_i.read();
+  const bool wr_ctrl = d.wr && d.adr == kCtrl;
+  const bool commit = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
+  d.abort = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  d.clear = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
+  const bool in_entry = d.adr >= motion::kEntryBase && d.adr < motion::kEntryBase + 4u * kEntryWords;
+  d.word = (d.adr - motion::kEntryBase) >> 2;
+  const std::uint32_t level = level_q.read(), head = head_q.read();
+  d.tail = tail_q.read();
   const bool full = level == depth;
   const bool mask_all = mask_q.read() == all_words;
-  const bool wr_entry = wr && in_entry && !abort;
-  const bool entry_ok = wr_entry && !full;
-  const bool commit_ok = commit && !abort && !full && mask_all;
-  const bool err_overflow = (wr_entry || commit) && !abort && full;
-  const bool err_partial = commit && !abort && !full && !mask_all;
-  const bool take = cmd_valid.read() && core_ready.read() && !abort;
-  const std::uint32_t level_d = level + commit_ok - take;
-  const std::uint32_t head_d = !rst_ni.read() ? 0 : abort ? tail : take ? (head + 1) & imask : head;
+  const bool wr_entry = d.wr && in_entry && !d.abort;
+  d.entry_ok = wr_entry && !full;
+  d.commit_ok = commit && !d.abort && !full && mask_all;
+  d.err_overflow = (wr_entry || commit) && !d.abort && full;
+  d.err_partial = commit && !d.abort && !full && !mask_all;
+  d.take = cmd_valid.read() && core_ready.read() && !d.abort;
+  d.level_d = level + d.commit_ok - d.take;
+  d.head_d = !rst_ni.read() ? 0 : d.abort ? d.tail : d.take ? (head + 1) & imask : head;
+  return d;
+}
 
-  rd_q.write(entry_bits(mem_[head_d]));  // read before this edge's write
-  rd_feed_q.write((mem_[head_d][motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
-  if (entry_ok) mem_[tail][word] = dat;
-  if (!rst_ni.read()) {
-    for (auto* s : {&ack_q, &primed_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
-      s->write(false);
-    for (auto* s : {&dat_q,        &head_q,        &tail_q,       &level_q,       &mask_q,       &irq_status_q,
-                    &irq_enable_q, &irq_level_q,   &done_count_q, &err_count_q,   &pos_x_q,      &pos_y_q,
-                    &feed_q,       &acc_q,         &steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
-                    &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q,   &polarity_q})
-      s->write(0);
-    return;
-  }
-  ack_q.write(req);
-  if (req && !wb_we_i.read()) dat_q.write(read(adr));
+// The RAM lanes: read at the next head address, then this edge's entry word written.
+void dda_motion::seq_ram(const Decode& d) {
+  rd_q.write(entry_bits(mem_[d.head_d]));  // read before this edge's write
+  rd_feed_q.write((mem_[d.head_d][motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
+  if (d.entry_ok) mem_[d.tail][d.word] = d.dat;
+}
+
+void dda_motion::seq_reset() {
+  for (auto* s : {&ack_q, &primed_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
+    s->write(false);
+  for (auto* s : {&dat_q,        &head_q,        &tail_q,       &level_q,       &mask_q,       &irq_status_q,
+                  &irq_enable_q, &irq_level_q,   &done_count_q, &err_count_q,   &pos_x_q,      &pos_y_q,
+                  &feed_q,       &acc_q,         &steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
+                  &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q,   &polarity_q})
+    s->write(0);
+}
+
+// ack_q, dat_q.
+void dda_motion::seq_bus(const Decode& d) {
+  ack_q.write(d.req);
+  if (d.req && !wb_we_i.read()) dat_q.write(read(d.adr));
+}
+
+// primed_q, head_q, level_q, tail_q, mask_q.
+void dda_motion::seq_queue(const Decode& d) {
+  const std::uint32_t imask = (1u << depth_log2_) - 1;
   primed_q.write(true);
-  head_q.write(head_d);
-  if (abort) {
+  head_q.write(d.head_d);
+  if (d.abort) {
     level_q.write(0);
     mask_q.write(0);
   } else {
-    level_q.write(level_d);
-    if (commit_ok) {
-      tail_q.write((tail + 1) & imask);
+    level_q.write(d.level_d);
+    if (d.commit_ok) {
+      tail_q.write((d.tail + 1) & imask);
       mask_q.write(0);
-    } else if (entry_ok) {
-      mask_q.write(mask_q.read() | (1u << word));
+    } else if (d.entry_ok) {
+      mask_q.write(mask_q.read() | (1u << d.word));
     }
   }
+}
+
+// done_wait_q, the sticky errors, the interrupt registers, the counters and positions.
+void dda_motion::seq_status(const Decode& d) {
   // A piece is done once its last steps (tagged on the core's done_o) have left.
   const bool tags_left = sx_tag_left.read() || sy_tag_left.read();
   const bool old_done = done_wait_q.read() && !tags_left;
   const bool new_wait = core_done.read() && (sx_wait.read() || sy_wait.read());
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
-  done_wait_q.write(!abort && (new_wait || (done_wait_q.read() && tags_left)));
-  const bool err_set = err_overflow || err_partial || cerr;
-  const bool low_set = take && level_d < irq_level_q.read();
+  done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
+  const bool err_set = d.err_overflow || d.err_partial || cerr;
+  const bool low_set = d.take && d.level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
-  err_q.write((err_q.read() && !clear) || err_set);
-  err_overflow_q.write((err_overflow_q.read() && !clear) || err_overflow);
-  err_partial_q.write((err_partial_q.read() && !clear) || err_partial);
-  err_stall_q.write((err_stall_q.read() && !clear) || cerr);
-  aborted_q.write((aborted_q.read() && !clear) || abort);
-  const std::uint32_t w1c = wr && adr == kIrqStatus ? (dat & 7u) : 0u;
+  // Sticky bits: a cause on the edge of a clear stays set.
+  err_q.write((err_q.read() && !d.clear) || err_set);
+  err_overflow_q.write((err_overflow_q.read() && !d.clear) || d.err_overflow);
+  err_partial_q.write((err_partial_q.read() && !d.clear) || d.err_partial);
+  err_stall_q.write((err_stall_q.read() && !d.clear) || cerr);
+  aborted_q.write((aborted_q.read() && !d.clear) || d.abort);
+  const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.dat & 7u) : 0u;
   irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
-  if (wr && adr == kIrqEnable) irq_enable_q.write(dat & 7u);
-  if (wr && adr == kIrqLevel) irq_level_q.write(dat & ((1u << motion::kLevelWidth) - 1));
+  if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.dat & 7u);
+  if (d.wr && d.adr == kIrqLevel) irq_level_q.write(d.dat & ((1u << motion::kLevelWidth) - 1));
   done_count_q.write(done_count_q.read() + std::uint32_t(old_done) + std::uint32_t(new_done));
   err_count_q.write(err_count_q.read() + cerr);
   const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
-  pos_x_q.write((wr && adr == kPosX ? dat : pos_x_q.read()) + dx);
-  pos_y_q.write((wr && adr == kPosY ? dat : pos_y_q.read()) + dy);
+  // A preset is the position before the steps of the same edge: none is lost.
+  pos_x_q.write((d.wr && d.adr == kPosX ? d.dat : pos_x_q.read()) + dx);
+  pos_y_q.write((d.wr && d.adr == kPosY ? d.dat : pos_y_q.read()) + dy);
+}
+
+// feed_q, acc_q: the phase accumulator that paces the core.
+void dda_motion::seq_feed(const Decode& d) {
   const std::uint32_t fmask = (1u << motion::kFeedWidth) - 1;
-  if (abort) {
+  if (d.abort) {
     feed_q.write(0);
     acc_q.write(0);
   } else {
-    if (take) feed_q.write(rd_feed_q.read());
+    if (d.take) feed_q.write(rd_feed_q.read());
     if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
   }
+}
+
+// The step/dir timings and polarity_q.
+void dda_motion::seq_settings(const Decode& d) {
   const std::uint32_t tmask = (1u << motion::kTimingWidth) - 1;
   const auto regs = timing_regs();
   for (std::size_t i = 0; i < regs.size(); ++i) {
     const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
     const std::string r = std::string(t.reg) + (i < motion::kTimingFields.size() ? "_X" : "_Y");
-    if (wr && adr == motion::reg_offset(r)) regs[i]->write((dat >> motion::field_of(r, t.name).lsb) & tmask);
+    if (d.wr && d.adr == motion::reg_offset(r)) regs[i]->write((d.dat >> motion::field_of(r, t.name).lsb) & tmask);
   }
-  if (wr && adr == motion::reg_offset("POLARITY")) polarity_q.write(dat & 0xFu);
+  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.dat & 0xFu);
+}
+
+void dda_motion::seq() {
+  const Decode d = decode();
+  seq_ram(d);
+  if (!rst_ni.read()) {
+    seq_reset();
+    return;
+  }
+  seq_bus(d);
+  seq_queue(d);
+  seq_status(d);
+  seq_feed(d);
+  seq_settings(d);
 }
 
 }  // namespace dda::sc

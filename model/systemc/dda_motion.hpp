@@ -72,6 +72,17 @@ SC_MODULE(dda_motion) {
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;
+  // seq() in parts, in the order it runs them: the decode, the RAM lanes, then the reset
+  // or the registers group by group as rtl/dda_motion.v's always blocks hold them.
+  struct Decode;
+  Decode decode() const;
+  void seq_ram(const Decode& d);
+  void seq_reset();
+  void seq_bus(const Decode& d);
+  void seq_queue(const Decode& d);
+  void seq_status(const Decode& d);
+  void seq_feed(const Decode& d);
+  void seq_settings(const Decode& d);
 };
 
 }  // namespace dda::sc

@@ -55,86 +55,125 @@ void measure(const Plan& plan, double& worst, double& sum, long& points) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   long arcs = 2000;
   std::uint64_t seed = 2026;
   std::int64_t max_axis = 32768;
+};
+
+// Reads the options; false (after the usage line) on a bad one.
+bool parse_options(int argc, char** argv, Options& o) {
   for (int i = 1; i + 1 < argc; i += 2) {
     char* end = nullptr;
     if (!std::strcmp(argv[i], "--arcs"))
-      arcs = std::strtol(argv[i + 1], &end, 10);
+      o.arcs = std::strtol(argv[i + 1], &end, 10);
     else if (!std::strcmp(argv[i], "--seed"))
-      seed = std::strtoull(argv[i + 1], &end, 0);
+      o.seed = std::strtoull(argv[i + 1], &end, 0);
     else if (!std::strcmp(argv[i], "--max-axis"))
-      max_axis = std::strtoll(argv[i + 1], &end, 10);
+      o.max_axis = std::strtoll(argv[i + 1], &end, 10);
     if (!end || *end != '\0') {
       std::fprintf(stderr, "usage: accuracy_sweep [--arcs N] [--seed S] [--max-axis M]\n");
-      return 2;
+      return false;
     }
   }
-  std::mt19937_64 rng(seed);
+  return true;
+}
+
+// One arc as drawn, before its preload is chosen.
+struct DrawnArc {
+  ArcSpec s;  // the semi-axes
+  double aspect = 1;
+  std::int64_t t0 = 0, t1 = 0, angle = 0;
+  bool cw = false, turned = false;
+  Point c;
+};
+
+// Draws an arc (every draw in the same order whether or not it is kept).
+DrawnArc draw_arc(std::mt19937_64& rng, std::int64_t max_axis) {
   const auto unit = [&] { return double(rng() % (1u << 30)) / double(1u << 30); };
-  // [row][aspect class]; rows: zero, half (axis-aligned), rotated zero, rotated half,
-  // rotated half without the smallest ellipses (max(a, b) < 16).
+  DrawnArc d;
+  d.s.a = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
+  d.s.b = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
+  d.aspect = double(std::max(d.s.a, d.s.b)) / double(std::min(d.s.a, d.s.b));
+  d.t0 = std::int64_t(rng() % std::uint64_t(kFullTurn));
+  d.t1 = std::int64_t(rng() % std::uint64_t(kFullTurn));
+  d.cw = rng() % 2;
+  d.c = Point{std::int64_t(rng() % 2001) - 1000, std::int64_t(rng() % 2001) - 1000};
+  d.turned = rng() % 2;
+  d.angle = std::int64_t(rng() % std::uint64_t(kFullTurn));
+  return d;
+}
+
+// Plans the arc with zero (plans[0]) and half (plans[1]) preload; false if the planner
+// refuses either (e.g. an unreachable end point: the same arc is skipped in both modes).
+bool plan_both(const DrawnArc& d, Plan (&plans)[2]) {
+  for (int m = 0; m < 2; ++m) {
+    ArcSpec sm = d.s;
+    sm.preload = m == 0 ? Preload::Zero : Preload::Half;
+    sm.dir = d.cw ? Direction::Cw : Direction::Ccw;
+    sm.center = d.c;
+    sm.angle = d.turned ? d.angle : 0;
+    sm.from_theta = d.t0;
+    sm.to_theta = d.t1;
+    try {
+      plans[m] = plan_arc(sm);
+    } catch (const InputError& e) {
+      if (std::getenv("DDA_SWEEP_VERBOSE"))
+        std::fprintf(stderr, "refused (%s, %s): %s\n", to_string(sm.preload), d.turned ? "turned" : "axis-aligned",
+                     e.what());
+      return false;
+    }
+  }
+  return true;
+}
+
+// [row][aspect class]; rows: zero, half (axis-aligned), rotated zero, rotated half,
+// rotated half without the smallest ellipses (max(a, b) < 16).
+struct Sweep {
   Acc acc[5][2];
   long drawn = 0, rejected = 0;
-  while (drawn - rejected < arcs) {
-    ArcSpec s;
-    s.a = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
-    s.b = std::max<std::int64_t>(1, std::llround(std::exp(unit() * std::log(double(max_axis)))));
-    const double aspect = double(std::max(s.a, s.b)) / double(std::min(s.a, s.b));
-    const std::int64_t t0 = std::int64_t(rng() % std::uint64_t(kFullTurn));
-    const std::int64_t t1 = std::int64_t(rng() % std::uint64_t(kFullTurn));
-    const bool cw = rng() % 2;
-    const Point c{std::int64_t(rng() % 2001) - 1000, std::int64_t(rng() % 2001) - 1000};
-    const bool turned = rng() % 2;
-    const std::int64_t angle = std::int64_t(rng() % std::uint64_t(kFullTurn));
-    if (aspect > 1000) continue;
-    ++drawn;
-    Plan plans[2];
-    bool ok = true;
-    for (int m = 0; m < 2 && ok; ++m) {
-      ArcSpec sm = s;
-      sm.preload = m == 0 ? Preload::Zero : Preload::Half;
-      sm.dir = cw ? Direction::Cw : Direction::Ccw;
-      sm.center = c;
-      sm.angle = turned ? angle : 0;
-      sm.from_theta = t0;
-      sm.to_theta = t1;
-      try {
-        plans[m] = plan_arc(sm);
-      } catch (const InputError& e) {
-        ok = false;  // e.g. an unreachable end point: the same arc is skipped in both modes
-        if (std::getenv("DDA_SWEEP_VERBOSE"))
-          std::fprintf(stderr, "refused (%s, %s): %s\n", to_string(sm.preload), turned ? "turned" : "axis-aligned",
-                       e.what());
-      }
-    }
-    if (!ok) {
-      ++rejected;
-      continue;
-    }
-    const int k = aspect <= 4 ? 0 : 1;
-    for (int m = 0; m < 2; ++m) {
-      double worst = 0, sum = 0;
-      long pts = 0;
-      measure(plans[m], worst, sum, pts);
-      const int row = (plans[m].rotated ? 2 : 0) + m;
-      for (const int r : {row, row == 3 && std::max(s.a, s.b) >= 16 ? 4 : -1}) {
-        if (r < 0) continue;
-        Acc& a = acc[r][k];
-        ++a.arcs;
-        a.sum += sum;
-        a.points += pts;
-        if (worst > a.worst) {
-          a.worst = worst;
-          a.worst_arc = describe(plans[m]);
-        }
+};
+
+// Adds both plans of an arc to their rows.
+void add_arc(Sweep& sw, const DrawnArc& d, const Plan (&plans)[2]) {
+  const int k = d.aspect <= 4 ? 0 : 1;
+  for (int m = 0; m < 2; ++m) {
+    double worst = 0, sum = 0;
+    long pts = 0;
+    measure(plans[m], worst, sum, pts);
+    const int row = (plans[m].rotated ? 2 : 0) + m;
+    for (const int r : {row, row == 3 && std::max(d.s.a, d.s.b) >= 16 ? 4 : -1}) {
+      if (r < 0) continue;
+      Acc& a = sw.acc[r][k];
+      ++a.arcs;
+      a.sum += sum;
+      a.points += pts;
+      if (worst > a.worst) {
+        a.worst = worst;
+        a.worst_arc = describe(plans[m]);
       }
     }
   }
+}
+
+Sweep run_sweep(const Options& o) {
+  std::mt19937_64 rng(o.seed);
+  Sweep sw;
+  while (sw.drawn - sw.rejected < o.arcs) {
+    const DrawnArc d = draw_arc(rng, o.max_axis);
+    if (d.aspect > 1000) continue;
+    ++sw.drawn;
+    Plan plans[2];
+    if (!plan_both(d, plans)) {
+      ++sw.rejected;
+      continue;
+    }
+    add_arc(sw, d, plans);
+  }
+  return sw;
+}
+
+void print_table(const Options& o, const Sweep& sw) {
   ArcSpec paper;
   paper.a = 10;
   paper.b = 6;
@@ -148,21 +187,29 @@ int main(int argc, char** argv) {
       "centre, start and end angles, both directions, half of them turned by a uniform angle, "
       "default width = smallest valid + 4; %ld of %ld drawn arcs were refused by the planner "
       "and skipped).\n\n",
-      arcs, (unsigned long long)seed, (long long)max_axis, rejected, drawn);
+      o.arcs, (unsigned long long)o.seed, (long long)o.max_axis, sw.rejected, sw.drawn);
   std::printf("| mode | aspect ratio | arcs | worst distance (steps) | mean distance (steps) | worst arc |\n");
   std::printf("|---|---|---|---|---|---|\n");
   const char* names[5] = {"zero preload (the paper), axis-aligned", "half preload (default mode), axis-aligned",
                           "rotated, zero preload", "rotated, half preload", "rotated, half preload, max(a, b) >= 16"};
   for (int m = 0; m < 5; ++m) {
     for (int k = 0; k < 2; ++k) {
-      const Acc& a = acc[m][k];
+      const Acc& a = sw.acc[m][k];
       std::printf("| %s | %s | %ld | %.3f | %.3f | `%s` |\n", names[m], k == 0 ? "<= 4" : "4 to 1000", a.arcs, a.worst,
                   a.points ? a.sum / double(a.points) : 0.0, a.worst_arc.c_str());
     }
   }
   std::printf(
       "| the paper's example (a = 10, b = 6, n = 4, zero preload) | 1.67 | 1 | %.3f | %.3f | "
-      "`--a 10 --b 6 --bits 4` |\n",
+      "`--a 10 --b 6 --bits 4 --preload zero` |\n",
       pw, ps / double(pp));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (!parse_options(argc, argv, o)) return 2;
+  print_table(o, run_sweep(o));
   return 0;
 }

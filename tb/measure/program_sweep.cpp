@@ -149,6 +149,73 @@ void print_table(const Row (&half)[kNumClasses], const Row (&zero)[kNumClasses])
       arcs.steps ? 100.0 * double(arcs.line_steps) / double(arcs.steps) : 0.0);
 }
 
+// The rows of every class, half and zero preload.
+struct Rows {
+  Row half[kNumClasses], zero[kNumClasses];
+};
+
+// Sums the shards' JSON files (--merge).
+void merge_shards(const std::vector<std::string>& files, Rows& rows) {
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    if (!in) throw std::runtime_error("cannot read " + f);
+    const auto j = nlohmann::json::parse(in);
+    for (int c = 0; c < kNumClasses; ++c) {
+      rows.half[c].add(from_json(j.at("half").at(c)));
+      rows.zero[c].add(from_json(j.at("zero").at(c)));
+    }
+  }
+}
+
+// Draws and measures case i: with half preload, and every fourth case with zero preload
+// too; a planner fault (GuardError) names the case and stops the sweep.
+void run_case(long i, std::uint64_t seed, std::int64_t max_axis, Rows& rows) {
+  RandomArcs gen(case_seed(seed, std::uint64_t(i)), max_axis, 8, ArcKind::Program);
+  std::optional<Plan> drawn;
+  try {
+    drawn = gen.next();
+  } catch (const GuardError& e) {
+    throw std::runtime_error("case " + std::to_string(i) + " (dda path " + gen.drawn_options() + "): " + e.what());
+  }
+  if (!drawn) {  // refused (with the preload drawn): counted in the class drawn, half rows
+    const auto k = gen.drawn();
+    const int c =
+        k == RandomArcs::Drawn::Line ? 0 : (k == RandomArcs::Drawn::Rotated ? 3 : 1) + (gen.drawn_thin() ? 1 : 0);
+    ++rows.half[c].refused;
+    return;
+  }
+  const int c = class_of(*drawn);
+  for (int z = 0; z < (i % 4 == 0 ? 2 : 1); ++z) {
+    Row& row = z ? rows.zero[c] : rows.half[c];
+    try {
+      const Plan p = with_preload(*drawn, z ? Preload::Zero : Preload::Half);
+      ++row.cases;
+      row.full_point += p.full && !p.spec.to_theta;
+      row.full_angle += p.full && bool(p.spec.to_theta);
+      row.exact_ends += measure(p, row);
+    } catch (const InputError&) {
+      ++row.refused;
+    } catch (const GuardError& e) {
+      throw std::runtime_error("case " + std::to_string(i) + " (dda path " + describe(*drawn) + ", preload " +
+                               (z ? "zero" : "half") + "): " + e.what());
+    }
+  }
+}
+
+// Writes the shard's totals (--json), for --merge.
+void write_json(const std::string& file, const Rows& rows) {
+  nlohmann::json j;
+  j["half"] = nlohmann::json::array();
+  j["zero"] = nlohmann::json::array();
+  for (int c = 0; c < kNumClasses; ++c) {
+    j["half"].push_back(to_json(rows.half[c]));
+    j["zero"].push_back(to_json(rows.zero[c]));
+  }
+  std::ofstream out(file);
+  out << j.dump(1) << '\n';
+  if (!out) throw std::runtime_error("cannot write " + file);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -165,68 +232,21 @@ int main(int argc, char** argv) {
   app.add_option("--json", json, "write the shard's totals as JSON to FILE");
   app.add_option("--merge", merge, "sum the shards' JSON files and print the table");
   CLI11_PARSE(app, argc, argv);
-  Row half[kNumClasses], zero[kNumClasses];
+  Rows rows;
   try {
     if (!merge.empty()) {
-      for (const auto& f : merge) {
-        std::ifstream in(f);
-        if (!in) throw std::runtime_error("cannot read " + f);
-        const auto j = nlohmann::json::parse(in);
-        for (int c = 0; c < kNumClasses; ++c) {
-          half[c].add(from_json(j.at("half").at(c)));
-          zero[c].add(from_json(j.at("zero").at(c)));
-        }
-      }
-      print_table(half, zero);
+      merge_shards(merge, rows);
+      print_table(rows.half, rows.zero);
       return 0;
     }
     const Shard shard = parse_shard(shard_text);
     for (long i = 0; i < cases; ++i) {
-      if (!shard.has(std::uint64_t(i))) continue;
-      RandomArcs gen(case_seed(seed, std::uint64_t(i)), max_axis, 8, ArcKind::Program);
-      std::optional<Plan> drawn;
-      try {
-        drawn = gen.next();
-      } catch (const GuardError& e) {  // a planner fault: name the case and stop
-        throw std::runtime_error("case " + std::to_string(i) + " (dda path " + gen.drawn_options() + "): " + e.what());
-      }
-      if (!drawn) {  // refused (with the preload drawn): counted in the class drawn, half rows
-        const auto k = gen.drawn();
-        ++half[k == RandomArcs::Drawn::Line ? 0
-                                            : (k == RandomArcs::Drawn::Rotated ? 3 : 1) + (gen.drawn_thin() ? 1 : 0)]
-              .refused;
-        continue;
-      }
-      const int c = class_of(*drawn);
-      for (int z = 0; z < (i % 4 == 0 ? 2 : 1); ++z) {
-        Row& row = z ? zero[c] : half[c];
-        try {
-          const Plan p = with_preload(*drawn, z ? Preload::Zero : Preload::Half);
-          ++row.cases;
-          row.full_point += p.full && !p.spec.to_theta;
-          row.full_angle += p.full && bool(p.spec.to_theta);
-          row.exact_ends += measure(p, row);
-        } catch (const InputError&) {
-          ++row.refused;
-        } catch (const GuardError& e) {
-          throw std::runtime_error("case " + std::to_string(i) + " (dda path " + describe(*drawn) + ", preload " +
-                                   (z ? "zero" : "half") + "): " + e.what());
-        }
-      }
+      if (shard.has(std::uint64_t(i))) run_case(i, seed, max_axis, rows);
     }
     if (!json.empty()) {
-      nlohmann::json j;
-      j["half"] = nlohmann::json::array();
-      j["zero"] = nlohmann::json::array();
-      for (int c = 0; c < kNumClasses; ++c) {
-        j["half"].push_back(to_json(half[c]));
-        j["zero"].push_back(to_json(zero[c]));
-      }
-      std::ofstream out(json);
-      out << j.dump(1) << '\n';
-      if (!out) throw std::runtime_error("cannot write " + json);
+      write_json(json, rows);
     } else {
-      print_table(half, zero);
+      print_table(rows.half, rows.zero);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "program_sweep: %s\n", e.what());

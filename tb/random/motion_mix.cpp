@@ -14,124 +14,207 @@ namespace dda::motion {
 
 namespace {
 constexpr std::uint32_t kTimingMax = (1u << kTimingWidth) - 1;
-}
 
-MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bool pipelined, std::int64_t max_axis) {
-  MixStats st;
-  std::mt19937_64 rng(seed);
-  RandomArcs gen(seed, max_axis, 4, ArcKind::Program);
-  RandomArcs short_arcs(seed + 3, std::min<std::int64_t>(max_axis, 8), 4, ArcKind::Program);
-  StepDirMonitor timing(t);
-  PieceMonitor mon(timing);
-  WishboneMaster m(mon, seed + 1, pipelined, 20);
-  m.each_cycle = [&] { mon.set_ce(rng() % 10 != 0); };
-  MotionDriver d(m, seed + 2);
-  const auto ctrl = [&](std::string_view bit) { m.write(reg_offset("CTRL"), field_bit("CTRL", bit)); };
-  mon.set_reset(false);
-  m.idle(2);
-  mon.set_reset(true);
-  while (st.arcs < arcs) {
-    ++st.batches;
+// One run of the mix: the bench on the target (the timing and piece monitors, the bus
+// master, the firmware driver), the arc generators, and the stream every other random
+// choice (batch kinds, timings, feeds, ce_i, how a batch ends) is drawn from.
+class Mix {
+ public:
+  Mix(BusTarget& t, std::uint64_t seed, bool pipelined, std::int64_t max_axis)
+      : rng_(seed),
+        gen_(seed, max_axis, 4, ArcKind::Program),
+        short_arcs_(seed + 3, std::min<std::int64_t>(max_axis, 8), 4, ArcKind::Program),
+        timing_(t),
+        mon_(timing_),
+        m_(mon_, seed + 1, pipelined, 20),
+        d_(m_, seed + 2) {
+    m_.each_cycle = [this] { mon_.set_ce(rng_() % 10 != 0); };
+  }
+  Mix(const Mix&) = delete;
+  Mix& operator=(const Mix&) = delete;
+
+  MixStats run(std::uint64_t arcs);
+
+ private:
+  void ctrl(std::string_view bit) { m_.write(reg_offset("CTRL"), field_bit("CTRL", bit)); }
+  std::vector<Plan> draw_batch(bool large, std::uint64_t arcs);
+  void set_outputs(unsigned kind, bool large);
+  void partial_commit();
+  Point queue_batch(const std::vector<Plan>& batch);
+  bool cut_short(const Plan& first);
+  void abort_batch();
+  void reset_batch();
+  void overflow(const Plan& first);
+  void check_position(Point want);
+
+  MixStats st_;
+  std::mt19937_64 rng_;
+  RandomArcs gen_, short_arcs_;
+  StepDirMonitor timing_;
+  PieceMonitor mon_;
+  WishboneMaster m_;
+  MotionDriver d_;
+};
+
+MixStats Mix::run(std::uint64_t arcs) {
+  mon_.set_reset(false);
+  m_.idle(2);
+  mon_.set_reset(true);
+  while (st_.arcs < arcs) {
+    ++st_.batches;
     // One to four arcs back to back from a preset position; a twentieth of the batches
     // are one short arc with large timings.
-    const unsigned kind = unsigned(rng() % 20);
+    const unsigned kind = unsigned(rng_() % 20);
     const bool large = kind == 0;
-    std::vector<Plan> batch;
-    const std::uint64_t n = large ? 1 : 1 + rng() % 4;
-    while (batch.size() < n && st.arcs + batch.size() < arcs) {
-      if (auto p = (large ? short_arcs : gen).next()) batch.push_back(std::move(*p));
-    }
+    const std::vector<Plan> batch = draw_batch(large, arcs);
     if (batch.empty()) break;
-    d.drain();
-    for (const char axis : {'x', 'y'}) {
-      const auto draw = [&]() -> std::uint32_t {
-        if (large) return rng() % 8 == 0 ? kTimingMax : std::uint32_t(rng() % 1024);
-        return std::uint32_t(rng() % 9);
-      };
-      StageTimings tm;
-      if (large || kind % 2 == 1) tm = StageTimings{draw(), draw(), draw(), draw()};
-      d.set_timings(axis, tm);
-    }
-    st.timed_batches += large || kind % 2 == 1;
-    st.large_timing_batches += large;
-    d.set_polarity(std::uint32_t(rng() % 16));
-    d.preset(batch.front().from);
-    Point want = batch.front().from;
-    if (rng() % 10 == 0) {  // a partial entry committed: refused
-      m.write(reg_offset("ENTRY"), std::uint32_t(rng()));
-      ctrl("commit");
-      ++st.partial;
-      if (!get_field("STATUS", "err_partial", m.read(reg_offset("STATUS")))) {
-        throw GuardError("motion mix: a partial commit was not reported");
-      }
-      ctrl("clear");
-    }
-    Point at = batch.front().from;
-    for (const auto& p : batch) {
-      for (const auto& piece : p.pieces) {
-        at = Point{at.x + (piece.to.x - piece.from.x), at.y + (piece.to.y - piece.from.y)};
-        mon.expect(at);
-        const std::uint32_t feed = rng() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng() % 0xE000);
-        st.fed_pieces += feed != 0;
-        d.queue(piece.cmd, feed);
-      }
-      want = Point{want.x + (p.to.x - p.from.x), want.y + (p.to.y - p.from.y)};
-      st.pieces += p.pieces.size();
-    }
-    st.arcs += batch.size();
-    const unsigned end = unsigned(rng() % 16);
-    if (end == 0) {  // abort in the middle
-      m.idle(int(rng() % 300));
-      ctrl("abort");
-      mon.flush();
-      ++st.aborts;
-      const std::uint32_t s = m.read(reg_offset("STATUS"));
-      if (!get_field("STATUS", "aborted", s) || get_field("STATUS", "level", s) != 0) {
-        throw GuardError("motion mix: an abort left the queue non-empty or was not reported");
-      }
-      ctrl("clear");
-      continue;
-    }
-    if (end == 1) {  // reset in the middle of the queue
-      m.idle(int(rng() % 300));
-      mon.set_reset(false);
-      m.idle(1 + int(rng() % 3));
-      mon.set_reset(true);
-      ++st.resets;
-      continue;
-    }
-    if (end == 2) {  // fill past the depth with ce_i low: overflow
-      const auto save = m.each_cycle;
-      m.each_cycle = [&] { mon.set_ce(false); };
-      const std::uint32_t cfg = m.read(reg_offset("CONFIG"));
-      const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", cfg);
-      const std::vector<std::uint32_t> w = entry_words(batch.front().pieces.front().cmd);
-      for (std::uint32_t k = 0; k <= depth + 1; ++k) {
-        for (std::size_t j = 0; j < w.size(); ++j) m.write(reg_offset("ENTRY") + 4 * std::uint32_t(j), w[j]);
-        ctrl("commit");
-      }
-      ++st.overflow;
-      if (!get_field("STATUS", "err_overflow", m.read(reg_offset("STATUS")))) {
-        throw GuardError("motion mix: a full queue took a commit");
-      }
-      m.each_cycle = save;
-      ctrl("abort");
-      mon.flush();
-      ctrl("clear");
-      continue;
-    }
-    d.drain();
-    const Point got = d.position();
-    ++st.position_checks;
-    if (got.x != want.x || got.y != want.y) {
-      throw GuardError("motion mix: the position counters read (" + std::to_string(got.x) + ", " +
-                       std::to_string(got.y) + "), the batch ends at (" + std::to_string(want.x) + ", " +
-                       std::to_string(want.y) + "); last arc: " + gen.drawn_options());
-    }
+    d_.drain();
+    set_outputs(kind, large);
+    d_.preset(batch.front().from);
+    if (rng_() % 10 == 0) partial_commit();
+    const Point want = queue_batch(batch);
+    st_.arcs += batch.size();
+    if (cut_short(batch.front())) continue;
+    d_.drain();
+    check_position(want);
   }
-  st.piece_checks = mon.checked();
-  st.pulses = timing.pulses(0) + timing.pulses(1);
-  return st;
+  st_.piece_checks = mon_.checked();
+  st_.pulses = timing_.pulses(0) + timing_.pulses(1);
+  return st_;
+}
+
+// The arcs of a batch: one short arc if large, else one to four, no more than the run
+// still needs.
+std::vector<Plan> Mix::draw_batch(bool large, std::uint64_t arcs) {
+  std::vector<Plan> batch;
+  const std::uint64_t n = large ? 1 : 1 + rng_() % 4;
+  while (batch.size() < n && st_.arcs + batch.size() < arcs) {
+    if (auto p = (large ? short_arcs_ : gen_).next()) batch.push_back(std::move(*p));
+  }
+  return batch;
+}
+
+// The batch's step/dir timings (all 0 on an even kind) and output polarity.
+void Mix::set_outputs(unsigned kind, bool large) {
+  for (const char axis : {'x', 'y'}) {
+    const auto draw = [&]() -> std::uint32_t {
+      if (large) return rng_() % 8 == 0 ? kTimingMax : std::uint32_t(rng_() % 1024);
+      return std::uint32_t(rng_() % 9);
+    };
+    StageTimings tm;
+    if (large || kind % 2 == 1) tm = StageTimings{draw(), draw(), draw(), draw()};
+    d_.set_timings(axis, tm);
+  }
+  st_.timed_batches += large || kind % 2 == 1;
+  st_.large_timing_batches += large;
+  d_.set_polarity(std::uint32_t(rng_() % 16));
+}
+
+// A partial entry committed: refused, with err_partial.
+void Mix::partial_commit() {
+  m_.write(reg_offset("ENTRY"), std::uint32_t(rng_()));
+  ctrl("commit");
+  ++st_.partial;
+  if (!get_field("STATUS", "err_partial", m_.read(reg_offset("STATUS")))) {
+    throw GuardError("motion mix: a partial commit was not reported");
+  }
+  ctrl("clear");
+}
+
+// Queues every piece of the batch (a random feed on half of them), each expected to end
+// on its point; returns where the batch ends.
+Point Mix::queue_batch(const std::vector<Plan>& batch) {
+  Point want = batch.front().from;
+  Point at = batch.front().from;
+  for (const auto& p : batch) {
+    for (const auto& piece : p.pieces) {
+      at = Point{at.x + (piece.to.x - piece.from.x), at.y + (piece.to.y - piece.from.y)};
+      mon_.expect(at);
+      const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng_() % 0xE000);
+      st_.fed_pieces += feed != 0;
+      d_.queue(piece.cmd, feed);
+    }
+    want = Point{want.x + (p.to.x - p.from.x), want.y + (p.to.y - p.from.y)};
+    st_.pieces += p.pieces.size();
+  }
+  return want;
+}
+
+// Ends three sixteenths of the batches early (an abort, a reset, an overflow); true if
+// this one was.
+bool Mix::cut_short(const Plan& first) {
+  const unsigned end = unsigned(rng_() % 16);
+  if (end == 0) {
+    abort_batch();
+  } else if (end == 1) {
+    reset_batch();
+  } else if (end == 2) {
+    overflow(first);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// An abort in the middle: the queue flushed, STATUS.aborted set.
+void Mix::abort_batch() {
+  m_.idle(int(rng_() % 300));
+  ctrl("abort");
+  mon_.flush();
+  ++st_.aborts;
+  const std::uint32_t s = m_.read(reg_offset("STATUS"));
+  if (!get_field("STATUS", "aborted", s) || get_field("STATUS", "level", s) != 0) {
+    throw GuardError("motion mix: an abort left the queue non-empty or was not reported");
+  }
+  ctrl("clear");
+}
+
+// A reset in the middle of the queue.
+void Mix::reset_batch() {
+  m_.idle(int(rng_() % 300));
+  mon_.set_reset(false);
+  m_.idle(1 + int(rng_() % 3));
+  mon_.set_reset(true);
+  ++st_.resets;
+}
+
+// Fills the queue past its depth with ce_i low: err_overflow; then aborts.
+void Mix::overflow(const Plan& first) {
+  const auto save = m_.each_cycle;
+  m_.each_cycle = [this] { mon_.set_ce(false); };
+  const std::uint32_t cfg = m_.read(reg_offset("CONFIG"));
+  const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", cfg);
+  const std::vector<std::uint32_t> w = entry_words(first.pieces.front().cmd);
+  for (std::uint32_t k = 0; k <= depth + 1; ++k) {
+    for (std::size_t j = 0; j < w.size(); ++j) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(j), w[j]);
+    ctrl("commit");
+  }
+  ++st_.overflow;
+  if (!get_field("STATUS", "err_overflow", m_.read(reg_offset("STATUS")))) {
+    throw GuardError("motion mix: a full queue took a commit");
+  }
+  m_.each_cycle = save;
+  ctrl("abort");
+  mon_.flush();
+  ctrl("clear");
+}
+
+// After a batch that ran to its end: the position counters on the batch's end.
+void Mix::check_position(Point want) {
+  const Point got = d_.position();
+  ++st_.position_checks;
+  if (got.x != want.x || got.y != want.y) {
+    throw GuardError("motion mix: the position counters read (" + std::to_string(got.x) + ", " + std::to_string(got.y) +
+                     "), the batch ends at (" + std::to_string(want.x) + ", " + std::to_string(want.y) +
+                     "); last arc: " + gen_.drawn_options());
+  }
+}
+
+}  // namespace
+
+MixStats run_motion_mix(BusTarget& t, std::uint64_t seed, std::uint64_t arcs, bool pipelined, std::int64_t max_axis) {
+  Mix mix(t, seed, pipelined, max_axis);
+  return mix.run(arcs);
 }
 
 }  // namespace dda::motion

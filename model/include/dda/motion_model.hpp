@@ -136,6 +136,21 @@ class MotionModel {
   StageTimings timings(char axis) const;
   bool busy() const;  // busy_o: the core runs or a stage holds a step
 
+  // One edge in parts, in the order edge() runs them: the wires (the bus request and the
+  // queue; the core's outputs, the stages and the feed), the core's edge, then the
+  // registers group by group as rtl/dda_motion.v's always blocks hold them.
+  struct Wires;
+  Wires bus_wires(const BusIn& b) const;
+  void core_wires(bool ce, Wires& w) const;
+  void step_core(bool rst_n, const Wires& w);
+  void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_
+  void load_bus(const BusIn& b, const Wires& w);
+  void load_queue(const Wires& w);
+  void load_status(const BusIn& b, const Wires& w);  // status, interrupts, counters
+  void load_positions(const BusIn& b, const Wires& w);
+  void load_feed(const Wires& w);
+  void load_settings(const BusIn& b, const Wires& w);  // the timings and the polarity
+
   int depth_log2_;
   CoreModel core_;
   std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
