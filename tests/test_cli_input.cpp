@@ -188,3 +188,23 @@ TEST_CASE("cli input: an option that does not apply is refused, not ignored", "[
   CHECK(r.out.empty());
   CHECK(slurp(out).rfind("| piece |", 0) == 0);
 }
+
+TEST_CASE("cli input: characters named as characters; a refused program prints nothing", "[cli][program][errors]") {
+  Scratch s;
+  const std::pair<std::string, std::string> cases[] = {
+      {"G01 X1\nG01 Y2 \xc3\xa9\n", ":2:8: unexpected character '\xc3\xa9' (U+00E9)\n"},
+      {"G01 X1\nG01 Y2 \xff\n", ":2:8: unexpected byte 0xFF (not UTF-8 text)\n"},
+      {"G01 X1\x07\n", ":1:7: unexpected control character 0x07\n"},
+  };
+  for (const auto& [text, want] : cases) {
+    const fs::path prog = s.dir / "p.ngc";
+    write_file(prog, text);
+    for (const std::string cmd : {"stats", "path", "trace"}) {
+      const Result r = run_dda(s, cmd + " --program " + prog.string());
+      INFO("dda " << cmd << " on: " << text);
+      CHECK(r.status == 2);
+      CHECK(r.out.empty());
+      CHECK(r.err == prog.string() + want);
+    }
+  }
+}

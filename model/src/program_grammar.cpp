@@ -10,6 +10,7 @@
 #include <cctype>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "program_detail.hpp"
 
@@ -102,9 +103,39 @@ struct statement_line
 struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, word>>, tail> {};
 struct line : pg::sor<statement_line, words_line> {};
 
-// The message of each rule that must match.
+// A character as a user reads it: printable ASCII in quotes, a UTF-8 sequence as the
+// character and its code point, a control character or a byte that is not UTF-8 text
+// by its value.
+std::string describe_char(std::string_view rest) {
+  const auto hex = [](unsigned v, int digits) {
+    static const char* kDigits = "0123456789ABCDEF";
+    std::string h;
+    for (int k = digits - 1; k >= 0; --k) h += kDigits[(v >> (4 * k)) & 0xF];
+    return h;
+  };
+  const unsigned char c0 = rest.empty() ? 0 : static_cast<unsigned char>(rest[0]);
+  if (c0 < 0x80) {
+    if (std::isprint(c0) != 0) return std::string("'") + char(c0) + "'";
+    return "control character 0x" + hex(c0, 2);
+  }
+  const std::size_t len = c0 >= 0xF0 && c0 < 0xF5 ? 4 : c0 >= 0xE0 && c0 < 0xF0 ? 3 : c0 >= 0xC2 && c0 < 0xE0 ? 2 : 0;
+  unsigned cp = len == 4 ? c0 & 0x07u : len == 3 ? c0 & 0x0Fu : c0 & 0x1Fu;
+  bool ok = len != 0 && rest.size() >= len;
+  for (std::size_t k = 1; ok && k < len; ++k) {
+    const unsigned char ck = static_cast<unsigned char>(rest[k]);
+    ok = (ck & 0xC0u) == 0x80u;
+    cp = (cp << 6) | (ck & 0x3Fu);
+  }
+  ok = ok && !(len == 3 && cp < 0x800) && !(len == 4 && (cp < 0x10000 || cp > 0x10FFFF)) &&
+       !(cp >= 0xD800 && cp <= 0xDFFF);
+  if (!ok) return "byte 0x" + hex(c0, 2) + " (not UTF-8 text)";
+  return "character '" + std::string(rest.substr(0, len)) + "' (U+" + hex(cp, cp > 0xFFFF ? 6 : 4) + ")";
+}
+
+// The message of each rule that must match; `rest` is the input from where it failed.
 template <typename Rule>
-std::string message(char c) {
+std::string message(std::string_view rest) {
+  const char c = rest.empty() ? '\0' : rest[0];
   if constexpr (std::is_same_v<Rule, word_value>) {
     return "a number must follow the letter";
   } else if constexpr (std::is_same_v<Rule, comment_body>) {
@@ -120,9 +151,7 @@ std::string message(char c) {
     return "an expression expected (a number, #n, [..], PI or a function)";
   } else {
     if (c == ')') return "')' closes no comment";
-    const bool print = std::isprint(static_cast<unsigned char>(c)) != 0;
-    return print ? std::string("unexpected '") + c + "'"
-                 : "unexpected character " + std::to_string(static_cast<unsigned char>(c));
+    return "unexpected " + describe_char(rest);
   }
 }
 
@@ -130,7 +159,7 @@ template <typename Rule>
 struct control : pg::normal<Rule> {
   template <typename Input, typename... States>
   [[noreturn]] static void raise(const Input& in, States&&... /*unused*/) {
-    throw pg::parse_error(message<Rule>(in.empty() ? '\0' : in.peek_char()), in);
+    throw pg::parse_error(message<Rule>(std::string_view(in.current(), in.size(4))), in);
   }
 };
 

@@ -94,7 +94,12 @@ BlockStatsSink::BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, 
       start_(on_lattice(start, lattice.step)),
       fmt_(fmt),
       targeted_(lattice.preload == Preload::Half),
-      prev_rounding_(rounding(start_, start, lattice.step)) {
+      prev_rounding_(rounding(start_, start, lattice.step)) {}
+
+// The header, with the first block: a program the reader refuses prints nothing.
+void BlockStatsSink::header() {
+  if (started_) return;
+  started_ = true;
   if (fmt_ == BlockStatsFormat::Json) {
     nlohmann::ordered_json j;
     j["step_mm"] = mm(lattice_.step);
@@ -118,13 +123,17 @@ BlockStatsSink::BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, 
   }
 }
 
-void BlockStatsSink::block(const BlockPlan& b) { window_.push(b); }
+void BlockStatsSink::block(const BlockPlan& b) {
+  header();
+  window_.push(b);
+}
 
 void BlockStatsSink::record(const Iteration& it) {
   add_record(window_.of_piece(it.piece, [&](const BlockWindow::Entry& e) { row(e); }), it, lattice_.step);
 }
 
 void BlockStatsSink::finish() {
+  header();
   window_.drain([&](const BlockWindow::Entry& e) { row(e); });
   const double mean_all = points_ ? dev_sum_ / double(points_) : 0.0;
   const std::string verdict = !targeted_   ? "not targeted (zero preload: reported only)"

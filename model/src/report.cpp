@@ -259,10 +259,14 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
   t.finish();
 }
 
-PathSink::PathSink(std::ostream& os, Point from, PathFormat fmt) : os_(os), fmt_(fmt) {
+PathSink::PathSink(std::ostream& os, Point from, PathFormat fmt) : os_(os), fmt_(fmt), from_(from) {}
+
+void PathSink::start() {
+  if (started_) return;
+  started_ = true;
   if (fmt_ == PathFormat::Csv) os_ << "point,x,y\n";
   if (fmt_ == PathFormat::Json) os_ << '[';
-  point(from);
+  point(from_);
 }
 
 void PathSink::point(Point p) {
@@ -275,10 +279,12 @@ void PathSink::point(Point p) {
 }
 
 void PathSink::record(const Iteration& it) {
+  start();
   if (it.step_x || it.step_y) point(it.pos);
 }
 
 void PathSink::finish() {
+  start();
   if (fmt_ == PathFormat::Json) os_ << "]\n";
 }
 

@@ -66,11 +66,13 @@ class BlockStatsSink : public RunSink {
   void finish() override;
 
  private:
+  void header();
   void row(const BlockWindow::Entry& e);
   std::ostream& os_;
   LatticeOptions lattice_;
   Point start_;
   BlockStatsFormat fmt_;
+  bool started_ = false;
   BlockWindow window_;
   bool targeted_;
   double prev_rounding_ = 0;

@@ -76,16 +76,21 @@ class TraceSink : public RunSink {
 };
 
 // The path as a stream: the start, then the position after every move.
+// (Written from the first piece on: a program the reader refuses prints nothing.)
 class PathSink : public RunSink {
  public:
   PathSink(std::ostream& os, Point from, PathFormat fmt);
+  void piece(const Piece&) override { start(); }
   void record(const Iteration& it) override;
   void finish() override;
 
  private:
+  void start();
   void point(Point p);
   std::ostream& os_;
   PathFormat fmt_;
+  Point from_;
+  bool started_ = false;
   std::uint64_t n_ = 0;
 };
 
