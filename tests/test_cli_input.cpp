@@ -189,7 +189,7 @@ TEST_CASE("cli input: an option that does not apply is refused, not ignored", "[
   CHECK(slurp(out).rfind("| piece |", 0) == 0);
 }
 
-TEST_CASE("cli input: characters named as characters; a refused program prints nothing", "[cli][program][errors]") {
+TEST_CASE("cli input: characters named as characters, and a refused program prints nothing", "[cli][program][errors]") {
   Scratch s;
   const std::pair<std::string, std::string> cases[] = {
       {"G01 X1\nG01 Y2 \xc3\xa9\n", ":2:8: unexpected character '\xc3\xa9' (U+00E9)\n"},
