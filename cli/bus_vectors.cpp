@@ -11,8 +11,8 @@
 #include <random>
 #include <sstream>
 
-#include "dda/feed.hpp"
-#include "dda/motion_bus.hpp"
+#include "motion/feed.hpp"
+#include "motion/motion_bus.hpp"
 #include "motion_harness.hpp"
 #include "vectors.hpp"
 
@@ -241,7 +241,7 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   }
 
   nlohmann::ordered_json j;
-  j["generator"] = "dda vectors --bus (the motion block's reference model, model/include/dda/motion_model.hpp)";
+  j["generator"] = "dda vectors --bus (the motion block's reference model, model/motion/motion_model.hpp)";
   j["command_line"] = opt.command_line;
   j["cycles"] = ncycles;
   j["queue_depth_log2"] = motion::kMaxDepthLog2;

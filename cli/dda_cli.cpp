@@ -26,19 +26,19 @@
 #include <string>
 #include <vector>
 
-#include "dda/golden.hpp"
-#include "dda/hw_command.hpp"
-#include "dda/hw_params.hpp"
-#include "dda/motion_map.hpp"
-#include "dda/motion_model.hpp"
-#include "dda/pipeline.hpp"
-#include "dda/program.hpp"
-#include "dda/program_report.hpp"
-#include "dda/report.hpp"
+#include "accuracy/golden.hpp"
+#include "datapath/hw_command.hpp"
+#include "datapath/hw_params.hpp"
 #include "engines.hpp"
 #include "feed_report.hpp"
+#include "motion/motion_map.hpp"
+#include "motion/motion_model.hpp"
 #include "output.hpp"
+#include "pipeline/pipeline.hpp"
+#include "program/program.hpp"
 #include "program_cmd.hpp"
+#include "report/program_report.hpp"
+#include "report/report.hpp"
 #include "temp_files.hpp"
 #include "vectors.hpp"
 

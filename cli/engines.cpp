@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "core_driver.hpp"
-#include "dda/hw_command.hpp"
+#include "datapath/hw_command.hpp"
 #include "rtl_harness.hpp"
 #include "sc_harness.hpp"
 

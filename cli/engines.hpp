@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "dda/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 
 namespace dda::cli {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "dda/feed.hpp"
+#include "motion/feed.hpp"
 
 namespace dda::cli {
 

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include "dda/plan.hpp"
+#include "planner/plan.hpp"
 
 namespace dda::cli {
 

@@ -13,7 +13,7 @@
 #include <ostream>
 #include <string>
 
-#include "dda/errors.hpp"
+#include "datapath/errors.hpp"
 #include "temp_files.hpp"
 
 namespace dda::cli {

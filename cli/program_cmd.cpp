@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include "dda/program.hpp"
+#include "program/program.hpp"
 
 namespace dda::cli {
 

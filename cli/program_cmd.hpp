@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "dda/golden.hpp"
-#include "dda/pipeline.hpp"
-#include "dda/program_plan.hpp"
+#include "accuracy/golden.hpp"
+#include "pipeline/pipeline.hpp"
+#include "program_plan/program_plan.hpp"
 
 namespace CLI {
 class App;

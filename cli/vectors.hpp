@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "dda/golden.hpp"
-#include "dda/hw_params.hpp"
-#include "dda/motion_model.hpp"
+#include "accuracy/golden.hpp"
+#include "datapath/hw_params.hpp"
+#include "motion/motion_model.hpp"
 
 namespace CLI {
 class App;

@@ -36,19 +36,21 @@ dda_rtl_sources(${DDA_RTL_DIR}/dda_core.f DDA_RTL_SOURCES)
 find_package(verilator REQUIRED)
 
 # A harness library around a verilated copy of the RTL in `rtl_dir` (tests verilate a
-# mutated copy too): `cc` is the C++ model and RtlHarness, `sc` the SystemC model and the
-# co-simulation harness. Immediate assertions in the RTL are on (--assert). Extra
-# arguments go to verilator.
+# mutated copy too): `cc` is the C++ model and RtlHarness (engines/, shipped), `sc` the
+# SystemC model and the co-simulation harness (tb/cosim/, verification only). Immediate
+# assertions in the RTL are on (--assert). Extra arguments go to verilator.
 function(dda_verilated_harness target mode rtl_dir)
-  set(eng ${PROJECT_SOURCE_DIR}/tb/engines)
+  set(eng ${PROJECT_SOURCE_DIR}/engines)
   if(mode STREQUAL "cc")
     set(src ${eng}/rtl_harness.cpp ${eng}/vl_sampler.cpp)
+    set(dirs ${eng})
     set(prefix Vdda_core)
     set(kind TRACE)
     set(extra --timescale 1ns/1ns)  # the harness counts time in ns, like the SystemC clock
     set(base dda_engine)
   else()
-    set(src ${eng}/cosim_harness.cpp ${eng}/vl_sampler.cpp)
+    set(src ${PROJECT_SOURCE_DIR}/tb/cosim/cosim_harness.cpp ${eng}/vl_sampler.cpp)
+    set(dirs ${PROJECT_SOURCE_DIR}/tb/cosim ${eng})
     set(prefix Vdda_core_sc)
     set(kind SYSTEMC)
     set(extra "")
@@ -56,7 +58,7 @@ function(dda_verilated_harness target mode rtl_dir)
   endif()
   add_library(${target} STATIC ${src})
   set_source_files_properties(${src} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS "${DDA_WARNINGS}")
-  target_include_directories(${target} PUBLIC ${eng})
+  target_include_directories(${target} PUBLIC ${dirs})
   # Verilator's runtime headers are not ours: include them as system headers.
   target_include_directories(${target} SYSTEM PRIVATE ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
   target_link_libraries(${target} PUBLIC ${base})
@@ -71,4 +73,37 @@ function(dda_verilated_harness target mode rtl_dir)
     TOP_MODULE dda_core PREFIX ${prefix}
     INCLUDE_DIRS ${params_dir} ${rtl_dir} ${DDA_RTL_DIR}
     VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast ${extra} ${ARGN})
+endfunction()
+
+# The motion block's sources, and the generated register header at other widths.
+dda_rtl_sources(${DDA_RTL_DIR}/dda_motion.f DDA_MOTION_SOURCES)
+set(DDA_MOTION_PARAMS "")
+if(NOT DDA_WIDTHS_DEFAULT)
+  set(DDA_MOTION_PARAMS ${DDA_RTL_PARAMS_DIR})
+endif()
+
+# dda_motion_harness_lib(TARGET DEPTH_LOG2): the motion block's harness (engines/) around
+# the RTL verilated with that queue depth (MotionHarness compiled with the same depth);
+# "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the generated
+# header).
+function(dda_motion_harness_lib target depth_log2)
+  set(eng ${PROJECT_SOURCE_DIR}/engines)
+  set(src ${eng}/motion_harness.cpp ${eng}/vl_sampler.cpp)
+  add_library(${target} STATIC ${src})
+  set_source_files_properties(${src} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS "${DDA_WARNINGS}")
+  target_include_directories(${target} PUBLIC ${eng})
+  target_include_directories(${target} SYSTEM PRIVATE ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
+  target_link_libraries(${target} PUBLIC dda_motion_map dda_golden)
+  if(depth_log2 STREQUAL "default")
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_DEPTH_LOG2=dda::motion::kMaxDepthLog2)
+    set(gparam "")
+  else()
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_DEPTH_LOG2=${depth_log2})
+    set(gparam -GDepthLog2=${depth_log2})
+  endif()
+  verilate(${target} TRACE
+    SOURCES ${DDA_MOTION_SOURCES} ${DDA_RTL_DIR}/lint.vlt
+    TOP_MODULE dda_motion PREFIX Vdda_motion
+    INCLUDE_DIRS ${DDA_MOTION_PARAMS} ${DDA_RTL_DIR}
+    VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast --timescale 1ns/1ns ${gparam})
 endfunction()

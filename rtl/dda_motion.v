@@ -2,7 +2,7 @@
 // The motion block (docs/design.md, "Motion block"): the DDA core behind a Wishbone B4
 // slave, with a command queue in block RAM, status, interrupts, abort and a position
 // counter per axis. The register map is rtl/dda_motion_regs.vh, generated from
-// model/include/dda/motion_map.hpp (the one definition; docs/design.md and the firmware
+// model/motion/motion_map.hpp (the one definition; docs/design.md and the firmware
 // header fw/dda_motion_regs.h come from it too).
 //
 // Bus: 32-bit data, byte addresses (wb_adr_i[1:0] ignored), wb_sel_i ignored (every

@@ -14,9 +14,9 @@
 #include <string>
 
 #include "core_driver.hpp"
-#include "dda/hw_command.hpp"
-#include "dda/report.hpp"
+#include "datapath/hw_command.hpp"
 #include "dda_random.hpp"
+#include "report/report.hpp"
 
 namespace dda::checks {
 

@@ -4,8 +4,8 @@
 // follows docs/design.md (load on the finishing edge, idle after the last piece).
 #include <catch2/catch.hpp>
 
-#include "dda/core_model.hpp"
-#include "dda/hw_command.hpp"
+#include "datapath/core_model.hpp"
+#include "datapath/hw_command.hpp"
 #include "dda_random.hpp"
 
 using namespace dda;

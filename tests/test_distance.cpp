@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "dda/golden.hpp"
+#include "accuracy/golden.hpp"
 
 namespace {
 

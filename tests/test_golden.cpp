@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "dda/golden.hpp"
-#include "dda/report.hpp"
+#include "accuracy/golden.hpp"
+#include "report/report.hpp"
 
 using namespace dda;
 

@@ -11,9 +11,9 @@
 #include <random>
 #include <sstream>
 
-#include "dda/golden.hpp"
-#include "dda/motion_map.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
+#include "motion/motion_map.hpp"
 #include "motion_harness.hpp"
 #include "motion_mix.hpp"
 

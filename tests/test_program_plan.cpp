@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Part programs onto the lattice (model/include/dda/program_plan.hpp, docs/programs.md):
+// Part programs onto the lattice (model/program_plan/program_plan.hpp, docs/programs.md):
 // geometry between lattice points through the planner, and the programs of examples/
 // on the golden model: every block on its rounded end, a continuous path, and each
 // block within the accuracy targets of docs/results.md against the programmed geometry.
@@ -13,9 +13,9 @@
 #include <random>
 #include <sstream>
 
-#include "dda/planner.hpp"
-#include "dda/program_plan.hpp"
-#include "dda/runner.hpp"
+#include "planner/planner.hpp"
+#include "program_plan/program_plan.hpp"
+#include "runner/runner.hpp"
 
 using namespace dda;
 using namespace dda::program;

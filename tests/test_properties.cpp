@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "dda/golden.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
 
 using namespace dda;

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cosim_harness.hpp"
-#include "dda/hw_params.hpp"
+#include "datapath/hw_params.hpp"
 #include "vectors.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }

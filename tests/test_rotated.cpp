@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "dda/golden.hpp"
+#include "accuracy/golden.hpp"
 
 using namespace dda;
 

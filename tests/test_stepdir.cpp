@@ -16,9 +16,9 @@
 #include <sstream>
 #include <vector>
 
-#include "dda/golden.hpp"
-#include "dda/stepdir_monitor.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
+#include "motion/stepdir_monitor.hpp"
 #include "motion_harness.hpp"
 
 using namespace dda;

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "dda/motion_map.hpp"
 #include "dda_core.hpp"
 #include "dda_stepdir.hpp"
+#include "motion/motion_map.hpp"
 
 namespace dda::sc {
 

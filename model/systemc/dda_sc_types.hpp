@@ -4,7 +4,7 @@
 
 #include <systemc>
 
-#include "dda/hw_params.hpp"
+#include "datapath/hw_params.hpp"
 
 namespace dda::sc {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "dda_stepdir.hpp"
 
-#include "dda/motion_map.hpp"
+#include "motion/motion_map.hpp"
 
 namespace dda::sc {
 

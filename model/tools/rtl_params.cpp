@@ -12,8 +12,8 @@
 #include <iostream>
 #include <string>
 
-#include "dda/hw_params.hpp"
-#include "dda/motion_map.hpp"
+#include "datapath/hw_params.hpp"
+#include "motion/motion_map.hpp"
 
 namespace {
 

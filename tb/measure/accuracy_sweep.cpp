@@ -16,7 +16,7 @@
 #include <random>
 #include <string>
 
-#include "dda/golden.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
 
 using namespace dda;

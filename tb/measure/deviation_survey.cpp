@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "dda/golden.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
 
 using namespace dda;

@@ -19,11 +19,11 @@
 
 #include <fmt/format.h>
 
-#include "dda/fixed_trig.hpp"
-#include "dda/geometry.hpp"
-#include "dda/program_plan.hpp"
-#include "dda/report.hpp"
-#include "dda/runner.hpp"
+#include "geometry/fixed_trig.hpp"
+#include "geometry/geometry.hpp"
+#include "program_plan/program_plan.hpp"
+#include "report/report.hpp"
+#include "runner/runner.hpp"
 
 using namespace dda;
 using namespace dda::program;

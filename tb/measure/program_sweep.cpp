@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "dda/accuracy.hpp"
-#include "dda/golden.hpp"
+#include "accuracy/accuracy.hpp"
+#include "accuracy/golden.hpp"
 #include "dda_random.hpp"
 
 using namespace dda;

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dda/hw_command.hpp"
+#include "datapath/hw_command.hpp"
 
 namespace dda {
 

@@ -11,8 +11,8 @@
 #include <random>
 #include <string>
 
-#include "dda/golden.hpp"
-#include "dda/report.hpp"
+#include "accuracy/golden.hpp"
+#include "report/report.hpp"
 
 namespace dda {
 

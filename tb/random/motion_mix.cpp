@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "dda/errors.hpp"
-#include "dda/stepdir_monitor.hpp"
+#include "datapath/errors.hpp"
 #include "dda_random.hpp"
+#include "motion/stepdir_monitor.hpp"
 
 namespace dda::motion {
 

@@ -16,7 +16,7 @@
 
 #include <cstdint>
 
-#include "dda/motion_bus.hpp"
+#include "motion/motion_bus.hpp"
 
 namespace dda::motion {
 

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <systemc>
 
-#include "dda/errors.hpp"
+#include "datapath/errors.hpp"
 #include "motion_cosim.hpp"
 #include "motion_mix.hpp"
 

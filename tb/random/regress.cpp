@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/hw_params.hpp"
+#include "datapath/hw_params.hpp"
 #include "dda_random.hpp"
 
 namespace dda {

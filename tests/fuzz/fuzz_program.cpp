@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// libFuzzer target of the part-program reader (model/include/dda/program.hpp): any bytes,
+// libFuzzer target of the part-program reader (model/program/program.hpp): any bytes,
 // read on a mill and on a lathe. Bad input must end in ProgramError (an InputError);
 // any other exception, a crash or a sanitizer report is a bug. Macro loops stop after
 // 100,000 executed lines (not the default 10,000,000) so that each input runs fast; the
@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "dda/program.hpp"
+#include "program/program.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

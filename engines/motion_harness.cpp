@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "motion_harness.hpp"
+
+#include <verilated.h>
+#include <verilated_syms.h>
+#include <verilated_vcd_c.h>
+
+#include "Vdda_motion.h"
+#include "datapath/errors.hpp"
+#include "vl_sampler.hpp"
+
+namespace dda::motion {
+
+namespace {
+
+const char* kTop = "dut.dda_motion";
+
+std::uint64_t read_var(const void* p, int bytes) {
+  switch (bytes) {
+    case 1:
+      return *static_cast<const std::uint8_t*>(p);
+    case 2:
+      return *static_cast<const std::uint16_t*>(p);
+    case 4:
+      return *static_cast<const std::uint32_t*>(p);
+    default:
+      return *static_cast<const std::uint64_t*>(p);
+  }
+}
+
+}  // namespace
+
+static int bytes_of(const VerilatedVar& v) {
+  return v.vltype() == VLVT_UINT8 ? 1 : v.vltype() == VLVT_UINT16 ? 2 : v.vltype() == VLVT_UINT32 ? 4 : 8;
+}
+
+VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& scope, int depth_log2) {
+  const VerilatedScope* s = ctx.scopeFind(scope.c_str());
+  if (!s) throw GuardError("motion sampler: no scope " + scope);
+  for (const auto& r : kBlockRegs) {
+    // "u_sx.step_q": a register of a submodule, in the submodule's scope.
+    const std::size_t dot = r.name.find('.');
+    const VerilatedScope* rs = s;
+    if (dot != std::string_view::npos) {
+      const std::string sub = scope + "." + std::string(r.name.substr(0, dot));
+      rs = ctx.scopeFind(sub.c_str());
+      if (!rs) throw GuardError("motion sampler: no scope " + sub);
+    }
+    const std::string var(dot == std::string_view::npos ? r.name : r.name.substr(dot + 1));
+    VerilatedVar* v = rs->varFind(var.c_str());
+    if (!v) throw GuardError("motion sampler: the RTL has no public register " + std::string(r.name));
+    const int width = v->dims() == 0 ? 1 : v->packed().elements();
+    if (width != width_bits(r.width, depth_log2)) {
+      throw GuardError("motion sampler: the RTL's " + std::string(r.name) + " is " + std::to_string(width) +
+                       " bits wide, the model says " + std::to_string(width_bits(r.width, depth_log2)));
+    }
+    block_.push_back(Var{v->datap(), bytes_of(*v), width});
+  }
+  // The core's register table, read below the block's instance by the core's sampler.
+  core_ = std::make_unique<rtl::VlSampler>(ctx, scope + ".u_core", hw::signal_table());
+}
+
+BlockRegs VlBlockSampler::block() const {
+  BlockRegs r{};
+  for (std::size_t i = 0; i < block_.size(); ++i) {
+    const auto& v = block_[i];
+    r[i] = read_var(v.p, v.bytes) & ((v.width >= 64 ? 0 : std::uint64_t{1} << v.width) - 1);
+  }
+  return r;
+}
+
+Signals VlBlockSampler::core() const { return core_->read(); }
+
+std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m) {
+  for (std::size_t i = 0; i < kBlockRegs.size(); ++i) {
+    if (got[i] != m.regs()[i]) {
+      return std::string(kBlockRegs[i].name) + " is " + std::to_string(got[i]) + ", the reference model says " +
+             std::to_string(m.regs()[i]);
+    }
+  }
+  for (std::size_t i = 0; i < hw::kSignals.size(); ++i) {
+    if (got_core[i] != m.core()[i]) {
+      return "u_core." + std::string(hw::kSignals[i].name) + " is " + std::to_string(got_core[i]) +
+             ", the reference model says " + std::to_string(m.core()[i]);
+    }
+  }
+  return "";
+}
+
+MotionHarness::MotionHarness(const std::string& vcd)
+    : ctx_(std::make_unique<VerilatedContext>()), model_(kHarnessDepthLog2) {
+  ctx_->traceEverOn(!vcd.empty());
+  top_ = std::make_unique<Vdda_motion>(ctx_.get(), "dut");
+  top_->clk_i = 0;
+  top_->rst_ni = 0;
+  top_->ce_i = 0;
+  top_->wb_cyc_i = top_->wb_stb_i = top_->wb_we_i = 0;
+  top_->eval();
+  sampler_ = std::make_unique<VlBlockSampler>(*ctx_, kTop, kHarnessDepthLog2);
+  if (!vcd.empty()) {
+    vcd_ = std::make_unique<VerilatedVcdC>();
+    top_->trace(vcd_.get(), 99);
+    vcd_->open(vcd.c_str());
+    if (!vcd_->isOpen()) throw GuardError("cannot write the waveform '" + vcd + "'");
+    vcd_->dump(ctx_->time());
+  }
+}
+
+MotionHarness::~MotionHarness() {
+  if (vcd_) vcd_->close();
+  if (top_) top_->final();
+}
+
+void MotionHarness::tick(const BusIn& bus) {
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
+  top_->rst_ni = rst_n_;
+  top_->ce_i = ce_;
+  top_->wb_cyc_i = bus.cyc;
+  top_->wb_stb_i = bus.stb;
+  top_->wb_we_i = bus.we;
+  top_->wb_adr_i = in.bus.adr;
+  top_->wb_dat_i = bus.dat;
+  top_->wb_sel_i = bus.sel;
+  top_->clk_i = 0;
+  top_->eval();
+  ctx_->timeInc(5);
+  if (vcd_) vcd_->dump(ctx_->time());
+  top_->clk_i = 1;
+  top_->eval();
+  ctx_->timeInc(5);
+  if (vcd_) vcd_->dump(ctx_->time());
+  model_.edge(in);
+  ++cycle_;
+
+  out_.ack = top_->wb_ack_o;
+  out_.stall = top_->wb_stall_o;
+  out_.dat = top_->wb_dat_o;
+  out_.step_x = top_->step_x_o;
+  out_.step_y = top_->step_y_o;
+  out_.dir_x = top_->dir_x_o;
+  out_.dir_y = top_->dir_y_o;
+  out_.busy = top_->busy_o;
+  out_.irq = top_->irq_o;
+  const std::string at = "motion block, cycle " + std::to_string(cycle_) + ": ";
+  const BlockOutputs want = model_.outputs();
+  if (!(out_ == want)) throw GuardError(at + "output ports " + out_.diff(want) + " (rtl/reference model)");
+  const std::string diff = compare_block(sampler_->block(), sampler_->core(), model_);
+  if (!diff.empty()) throw GuardError(at + diff);
+  timing_.edge(in.bus, rst_n_, out_, model_.regs());
+}
+
+}  // namespace dda::motion

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block (rtl/dda_motion.v) under Verilator, in lockstep with its reference
+// model (MotionModel) after every edge: the output ports, the block's registers
+// (kBlockRegs) and the core's register table. A Wishbone master (dda/motion_bus.hpp)
+// drives it: classic or pipelined cycles, random idle cycles between requests.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "motion/motion_bus.hpp"
+#include "motion/stepdir_monitor.hpp"
+#include "vl_sampler.hpp"
+
+class VerilatedContext;
+class VerilatedVcdC;
+class Vdda_motion;
+
+namespace dda::motion {
+
+// The queue depth the harness' RTL is verilated with (-GDepthLog2, set once in
+// tb/CMakeLists.txt): small in the tests' harness, so that they fill it; the RTL's
+// default in the dda command's.
+inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
+
+// The block's registers (kBlockRegs) and the core's register table of a Verilated
+// dda_motion, by name below `scope` (e.g. "dut.dda_motion"). Throws GuardError naming a
+// register the RTL lacks or holds at another width.
+class VlBlockSampler {
+ public:
+  VlBlockSampler(const VerilatedContext& ctx, const std::string& scope, int depth_log2);
+  BlockRegs block() const;
+  Signals core() const;
+
+ private:
+  struct Var {
+    const void* p;
+    int bytes;
+    int width;
+  };
+  std::vector<Var> block_;
+  std::unique_ptr<rtl::VlSampler> core_;
+};
+
+// Compares what a block holds with what the reference model holds; "" when equal, else
+// the first difference ("<register> is A, the reference model says B").
+std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m);
+
+class MotionHarness : public BusTarget {
+ public:
+  explicit MotionHarness(const std::string& vcd = "");
+  ~MotionHarness();
+
+  // Inputs of the next edge besides the bus (which the master drives).
+  void set_reset(bool rst_n) override { rst_n_ = rst_n; }
+  void set_ce(bool ce) override { ce_ = ce; }
+  // One edge of both: the RTL and the model; then compares them and throws GuardError
+  // naming the cycle and the first signal that differs.
+  void tick(const BusIn& bus) override;
+  // The outputs after the last edge (the RTL's; equal to the model's).
+  const BlockOutputs& outputs() const override { return out_; }
+  const MotionModel& model() const override { return model_; }
+  std::uint64_t cycle() const { return cycle_; }
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vdda_motion> top_;
+  std::unique_ptr<VerilatedVcdC> vcd_;
+  std::unique_ptr<VlBlockSampler> sampler_;
+  MotionModel model_;
+  StepDirChecker timing_;
+  BlockOutputs out_;
+  bool rst_n_ = true, ce_ = true;
+  std::uint64_t cycle_ = 0;
+};
+
+}  // namespace dda::motion

@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: Apache-2.0
+// The cycle-level reference model: the next-state code of every register of the table.
+#include "datapath/core_model.hpp"
+
+#include <iterator>
+
+namespace dda {
+
+namespace {
+
+using hw::sig;
+
+// Register indices (a name missing from hw::kSignals does not compile).
+constexpr std::size_t kJvX = sig("u_int_x.jv_q"), kJrX = sig("u_int_x.jr_q");
+constexpr std::size_t kIncXX = sig("u_int_x.inc_on_x_q"), kIncXY = sig("u_int_x.inc_on_y_q");
+constexpr std::size_t kJvY = sig("u_int_y.jv_q"), kJrY = sig("u_int_y.jr_q");
+constexpr std::size_t kIncYX = sig("u_int_y.inc_on_x_q"), kIncYY = sig("u_int_y.inc_on_y_q");
+constexpr std::size_t kCntX = sig("u_cnt_x.cnt_q"), kCntY = sig("u_cnt_y.cnt_q");
+constexpr std::size_t kCap = sig("cap_q");
+constexpr std::size_t kCdirX = sig("cdir_x_q"), kCdirY = sig("cdir_y_q");
+constexpr std::size_t kDirX = sig("dir_x_q"), kDirY = sig("dir_y_q");
+constexpr std::size_t kStepX = sig("step_x_q"), kStepY = sig("step_y_q");
+constexpr std::size_t kState = sig("u_ctrl.state_q"), kDone = sig("u_ctrl.done_q");
+constexpr std::size_t kErr = sig("u_ctrl.err_q"), kIter = sig("u_ctrl.iter_q");
+constexpr std::size_t kSumX = sig("u_int_x.sum"), kSumY = sig("u_int_y.sum");
+
+// What a load takes from the command word: register <- field.
+struct Load {
+  std::size_t reg, field;
+};
+constexpr Load kLoads[] = {
+    {kJvX, hw::field("jv_x")},         {kJvY, hw::field("jv_y")},         {kJrX, hw::field("jr_x")},
+    {kJrY, hw::field("jr_y")},         {kCap, hw::field("cap")},          {kCntX, hw::field("cnt_x")},
+    {kCntY, hw::field("cnt_y")},       {kCdirX, hw::field("dir_x")},      {kCdirY, hw::field("dir_y")},
+    {kIncXX, hw::field("inc_x_on_x")}, {kIncXY, hw::field("inc_x_on_y")}, {kIncYX, hw::field("inc_y_on_x")},
+    {kIncYY, hw::field("inc_y_on_y")},
+};
+static_assert(std::size(kLoads) == hw::kCmdFields.size(), "core_model.cpp: a command field is not loaded");
+
+constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJrY,  kIncYX, kIncYY,
+                                    kCntX,  kCntY,  kCap,   kCdirX, kCdirY, kDirX, kDirY,  kStepX,
+                                    kStepY, kState, kDone,  kErr,   kIter,  kSumX, kSumY};
+// Every signal of the table has its next-state code here.
+constexpr bool covers_table() {
+  for (std::size_t i = 0; i < hw::kNumSignals; ++i) {
+    bool found = false;
+    for (const std::size_t w : kWritten) found = found || w == i;
+    if (!found) return false;
+  }
+  return true;
+}
+static_assert(covers_table(), "core_model.cpp: a signal of hw::kSignals has no next-state code");
+
+std::uint64_t mask(std::int64_t v, int width) {
+  return width >= 64 ? std::uint64_t(v) : std::uint64_t(v) & ((std::uint64_t{1} << width) - 1);
+}
+std::uint64_t put(std::size_t i, std::int64_t v) { return mask(v, hw::kSignals[i].width); }
+// A two's complement register as a signed value.
+std::int64_t sext(std::uint64_t v, int width) {
+  const std::uint64_t neg = std::uint64_t{1} << (width - 1);
+  return std::int64_t(v & ((neg << 1) - 1)) - std::int64_t((v & neg) << 1);
+}
+std::int64_t sval(const Signals& s, std::size_t i) { return sext(s[i], hw::kSignals[i].width); }
+std::int64_t uval(const Signals& s, std::size_t i) { return std::int64_t(s[i]); }
+
+constexpr std::uint64_t kRun = unsigned(hw::State::Run), kIdle = unsigned(hw::State::Idle);
+
+// The command the registers hold (for the datapath's next-state function).
+Command held_command(const Signals& s) {
+  Command c;
+  c.cap = uval(s, kCap);
+  c.inc_x_on_x = sval(s, kIncXX);
+  c.inc_x_on_y = sval(s, kIncXY);
+  c.inc_y_on_x = sval(s, kIncYX);
+  c.inc_y_on_y = sval(s, kIncYY);
+  c.dir_x_neg = s[kCdirX] != 0;
+  c.dir_y_neg = s[kCdirY] != 0;
+  return c;
+}
+
+struct Decision {
+  bool run_ce, finished, stalled, iterate;
+};
+Decision decide(const Signals& s, bool ce) {
+  Decision d{};
+  d.run_ce = s[kState] == kRun && ce;
+  const RegState r = CoreModel::datapath_regs(s);
+  d.finished = d.run_ce && r.cnt_x == 0 && r.cnt_y == 0;
+  d.stalled = d.run_ce && !d.finished && dda::stalled(r);
+  d.iterate = d.run_ce && !d.finished && !d.stalled;
+  return d;
+}
+
+}  // namespace
+
+RegState CoreModel::datapath_regs(const Signals& s) {
+  RegState r;
+  r.jv_x = sval(s, kJvX);
+  r.jv_y = sval(s, kJvY);
+  r.jr_x = uval(s, kJrX);
+  r.jr_y = uval(s, kJrY);
+  r.cnt_x = uval(s, kCntX);
+  r.cnt_y = uval(s, kCntY);
+  return r;
+}
+
+void CoreModel::settle() {
+  s_[kSumX] = s_[kJrX] + s_[kJvX];  // AccWidth + 1 bits: no wrap
+  s_[kSumY] = s_[kJrY] + s_[kJvY];
+}
+
+bool CoreModel::cmd_ready(bool ce) const {
+  const Decision d = decide(s_, ce);
+  bool last = false;
+  if (d.iterate) {
+    RegState r = datapath_regs(s_);
+    next_state(held_command(s_), r);
+    last = r.cnt_x == 0 && r.cnt_y == 0;
+  }
+  return s_[kState] == kIdle || d.finished || last;
+}
+
+CoreEdge CoreModel::edge(const CoreInputs& in) {
+  CoreEdge e;
+  if (!in.rst_n) {
+    s_.fill(0);
+    s_[kState] = kIdle;
+    settle();
+    return e;
+  }
+  const Decision d = decide(s_, in.ce);
+  Signals n = s_;
+  StepOut o;
+  if (d.iterate) {
+    RegState r = datapath_regs(s_);
+    o = next_state(held_command(s_), r);
+    n[kJvX] = put(kJvX, r.jv_x);
+    n[kJvY] = put(kJvY, r.jv_y);
+    n[kJrX] = put(kJrX, r.jr_x);
+    n[kJrY] = put(kJrY, r.jr_y);
+    n[kCntX] = put(kCntX, r.cnt_x);
+    n[kCntY] = put(kCntY, r.cnt_y);
+  }
+  e.iterate = d.iterate;
+  e.stalled = d.stalled;
+  e.finishing = d.finished || (d.iterate && n[kCntX] == 0 && n[kCntY] == 0);
+  e.ready = s_[kState] == kIdle || e.finishing;
+  e.load = e.ready && in.cmd_valid;
+  n[kStepX] = d.iterate && o.step_x;
+  n[kStepY] = d.iterate && o.step_y;
+  n[kDirX] = n[kStepX] ? s_[kCdirX] : s_[kDirX];  // a direction changes only with a step
+  n[kDirY] = n[kStepY] ? s_[kCdirY] : s_[kDirY];
+  n[kDone] = e.finishing;
+  n[kErr] = e.stalled;
+  n[kIter] = e.iterate;
+  n[kState] = e.load ? kRun : (e.finishing || e.stalled) ? kIdle : s_[kState];
+  if (e.load) {  // the load wins over the last iteration's register updates
+    for (const auto& l : kLoads) n[l.reg] = in.cmd[l.field];
+  }
+  s_ = n;
+  settle();
+  return e;
+}
+
+PortValues CoreModel::outputs(const Signals& s, bool ready) {
+  PortValues p{};
+  const auto set = [&](std::string_view name, std::uint64_t v) {
+    std::size_t k = 0;  // index among the outputs
+    for (std::size_t i = 0; i < hw::port(name); ++i) k += hw::kPorts[i].dir == hw::PortDir::Out;
+    p[k] = v;
+  };
+  set("cmd_ready_o", ready);
+  set("step_x_o", s[kStepX]);
+  set("step_y_o", s[kStepY]);
+  set("dir_x_o", s[kDirX]);
+  set("dir_y_o", s[kDirY]);
+  set("busy_o", s[kState] == kRun);
+  set("done_o", s[kDone]);
+  set("err_o", s[kErr]);
+  set("iter_o", s[kIter]);
+  return p;
+}
+
+Iteration CoreModel::iteration_record(const Signals& pre, const Signals& post) {
+  Iteration rec;
+  rec.dir_x_neg = pre[kCdirX] != 0;  // the command running in this iteration
+  rec.dir_y_neg = pre[kCdirY] != 0;
+  rec.active_x = pre[kCntX] != 0;
+  rec.active_y = pre[kCntY] != 0;
+  rec.jv_x = sval(pre, kJvX);
+  rec.jv_y = sval(pre, kJvY);
+  // The adder's output counts where the axis adds: active, integrand not negative.
+  rec.sum_x = rec.active_x && rec.jv_x >= 0 ? std::int64_t(pre[kSumX]) : uval(pre, kJrX);
+  rec.sum_y = rec.active_y && rec.jv_y >= 0 ? std::int64_t(pre[kSumY]) : uval(pre, kJrY);
+  rec.step_x = post[kStepX] != 0;
+  rec.step_y = post[kStepY] != 0;
+  rec.after = datapath_regs(post);
+  return rec;
+}
+
+bool CoreModel::iterated(const Signals& post) { return post[kIter] != 0; }
+bool CoreModel::done(const Signals& post) { return post[kDone] != 0; }
+bool CoreModel::err(const Signals& post) { return post[kErr] != 0; }
+bool CoreModel::busy(const Signals& s) { return s[kState] == kRun; }
+
+Point CoreModel::step_of(const Signals& post) {
+  Point d;
+  if (post[kStepX]) d.x = post[kDirX] ? -1 : 1;
+  if (post[kStepY]) d.y = post[kDirY] ? -1 : 1;
+  return d;
+}
+
+CmdFields command_fields_unchecked(const Command& c) {
+  CmdFields f{};
+  const auto set = [&](std::string_view name, std::int64_t v) {
+    const std::size_t i = hw::field(name);
+    f[i] = mask(v, hw::kCmdFields[i].width);
+  };
+  set("jv_x", c.jv_x);
+  set("jv_y", c.jv_y);
+  set("jr_x", c.jr_x);
+  set("jr_y", c.jr_y);
+  set("cap", c.cap);
+  set("cnt_x", c.cnt_x);
+  set("cnt_y", c.cnt_y);
+  set("dir_x", c.dir_x_neg ? hw::kDirNeg : hw::kDirPos);
+  set("dir_y", c.dir_y_neg ? hw::kDirNeg : hw::kDirPos);
+  set("inc_x_on_x", c.inc_x_on_x);
+  set("inc_x_on_y", c.inc_x_on_y);
+  set("inc_y_on_x", c.inc_y_on_x);
+  set("inc_y_on_y", c.inc_y_on_y);
+  return f;
+}
+
+}  // namespace dda

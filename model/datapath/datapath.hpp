@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: Apache-2.0
+// The hardware reference: one DDA command and the datapath's next-state function.
+//
+// Exact integer arithmetic only (no floating point). Independent of SystemC, Verilator
+// and the planner; docs/design.md is the architecture it defines. next_state() is the
+// single definition of one iteration: Datapath::iterate(), Datapath::step() and the
+// cycle-level model (core_model.hpp) all call it.
+#pragma once
+
+#include <cstdint>
+
+#include "datapath/errors.hpp"
+
+namespace dda {
+
+struct Point {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  friend bool operator==(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
+  friend bool operator!=(const Point& p, const Point& q) { return !(p == q); }
+  friend Point operator+(const Point& p, const Point& q) { return Point{p.x + q.x, p.y + q.y}; }
+};
+
+// One hardware command: everything the datapath needs to run one piece.
+// All values are the exact (scaled) integers the registers hold.
+struct Command {
+  std::int64_t jv_x = 0, jv_y = 0;  // initial integrands
+  std::int64_t jr_x = 0, jr_y = 0;  // accumulator preloads, 0 <= jr < cap
+  std::int64_t cap = 1;             // capacity' (2^n * a * b)
+  std::int64_t cnt_x = 0, cnt_y = 0;
+  bool dir_x_neg = false, dir_y_neg = false;
+  // Integrand corrections after a step: jv_<i> += inc_<i>_on_<axis>.
+  std::int64_t inc_x_on_x = 0, inc_x_on_y = 0, inc_y_on_x = 0, inc_y_on_y = 0;
+};
+
+// The datapath registers between iterations (what the hardware holds).
+struct RegState {
+  std::int64_t jv_x = 0, jv_y = 0;
+  std::int64_t jr_x = 0, jr_y = 0;
+  std::int64_t cnt_x = 0, cnt_y = 0;
+  friend bool operator==(const RegState& p, const RegState& q) {
+    return p.jv_x == q.jv_x && p.jv_y == q.jv_y && p.jr_x == q.jr_x && p.jr_y == q.jr_y && p.cnt_x == q.cnt_x &&
+           p.cnt_y == q.cnt_y;
+  }
+};
+
+// The registers right after a command is loaded.
+RegState initial_regs(const Command& c);
+
+// What one iteration computes besides the next registers.
+struct StepOut {
+  bool active_x = false, active_y = false;  // counter was non-zero: the axis may add
+  std::int64_t sum_x = 0, sum_y = 0;        // accumulator sums before overflow removal
+  bool step_x = false, step_y = false;      // carries: one step each
+};
+
+// One iteration of the datapath (one clock with ce high): the single definition.
+// Both accumulators add their integrands; an axis adds while active with a positive
+// integrand (a negative one holds); a carry (sum >= cap) is a step and the accumulator
+// keeps sum - cap. Corrections apply after the iteration, from its steps.
+inline StepOut next_state(const Command& cmd, RegState& r) {
+  StepOut o;
+  o.active_x = r.cnt_x != 0;
+  o.active_y = r.cnt_y != 0;
+  o.sum_x = o.active_x && r.jv_x > 0 ? r.jr_x + r.jv_x : r.jr_x;
+  o.sum_y = o.active_y && r.jv_y > 0 ? r.jr_y + r.jv_y : r.jr_y;
+  // (A negative integrand neither adds nor carries, as in the RTL, even for a command
+  // whose preload breaks jr < cap.)
+  o.step_x = o.active_x && r.jv_x >= 0 && o.sum_x >= cmd.cap;
+  o.step_y = o.active_y && r.jv_y >= 0 && o.sum_y >= cmd.cap;
+  r.jr_x = o.step_x ? o.sum_x - cmd.cap : o.sum_x;
+  r.jr_y = o.step_y ? o.sum_y - cmd.cap : o.sum_y;
+  r.cnt_x -= o.step_x ? 1 : 0;
+  r.cnt_y -= o.step_y ? 1 : 0;
+  r.jv_x += (o.step_x ? cmd.inc_x_on_x : 0) + (o.step_y ? cmd.inc_x_on_y : 0);
+  r.jv_y += (o.step_x ? cmd.inc_y_on_x : 0) + (o.step_y ? cmd.inc_y_on_y : 0);
+  return o;
+}
+
+// An active axis whose integrand is 0 or negative cannot carry; when no active axis
+// can, the command never ends (the hardware raises err_o).
+inline bool stalled(const RegState& r) {
+  if (r.cnt_x == 0 && r.cnt_y == 0) return false;
+  const bool x_can = r.cnt_x != 0 && r.jv_x > 0;
+  const bool y_can = r.cnt_y != 0 && r.jv_y > 0;
+  return !x_can && !y_can;
+}
+
+// One iteration: the datapath's inputs, intermediate sums and the registers after it.
+struct Iteration {
+  std::uint64_t iter = 0;                     // 1-based, counted across the pieces of an arc
+  std::uint32_t piece = 0;                    // index of the piece (command) it belongs to
+  bool piece_end = false;                     // the piece's last iteration (set by the runner)
+  bool dir_x_neg = false, dir_y_neg = false;  // step directions of that piece
+  bool active_x = false, active_y = false;    // counter was non-zero: the axis added
+  std::int64_t jv_x = 0, jv_y = 0;            // integrands used in this iteration
+  std::int64_t sum_x = 0, sum_y = 0;          // accumulator sums before overflow removal
+  bool step_x = false, step_y = false;        // overflow pulses
+  RegState after;                             // registers after the iteration (jv corrected); after a
+                                              // piece's last one, the next piece's loaded command
+  Point pos;                                  // position after the iteration
+};
+
+// The datapath running one command: one call of iterate() is one iteration.
+class Datapath {
+ public:
+  Datapath(const Command& cmd, Point start);
+  const RegState& regs() const { return regs_; }
+  const Command& command() const { return cmd_; }
+  Point pos() const { return pos_; }
+  std::uint64_t iterations() const { return iter_; }
+  bool done() const { return regs_.cnt_x == 0 && regs_.cnt_y == 0; }
+  // An active axis whose integrand is 0 and can no longer change: the piece never ends.
+  bool stalled() const { return dda::stalled(regs_); }
+  Iteration iterate();
+  // The same iteration without building its record (the fast path for validation,
+  // cross-checks and benchmarks).
+  void step() {
+    const StepOut o = next_state(cmd_, regs_);
+    move(o);
+  }
+
+ private:
+  void move(const StepOut& o) {
+    if (o.step_x) pos_.x += cmd_.dir_x_neg ? -1 : 1;
+    if (o.step_y) pos_.y += cmd_.dir_y_neg ? -1 : 1;
+    ++iter_;
+  }
+  Command cmd_;
+  RegState regs_;
+  Point pos_;
+  std::uint64_t iter_ = 0;
+};
+
+}  // namespace dda

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+// Geometry for measurement: distance to an ellipse, turning into its frame.
+#include "geometry/geometry.hpp"
+
+#include <cmath>
+
+#include "geometry/fixed_trig.hpp"
+
+namespace dda {
+
+std::pair<double, double> to_frame(std::int64_t angle_udeg, double x, double y) {
+  const SinCos f = sincos_udeg(angle_udeg);
+  const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
+  return {x * c + y * s, -x * s + y * c};
+}
+
+// ---------------------------------------------------------------------------------
+// Distance from a point to an ellipse: D. Eberly, "Distance from a Point to an Ellipse,
+// an Ellipsoid, or a Hyperellipsoid" (Geometric Tools, 2013). The closest point's
+// Lagrange parameter s is the unique root of F(s) = (r0 z0/(s+r0))^2 + (z1/(s+1))^2 - 1
+// in a bracket where F is monotone; bisection runs until the bracket cannot shrink.
+namespace {
+
+double robust_length(double v0, double v1) { return std::sqrt(v0 * v0 + v1 * v1); }
+
+double get_root(double r0, double z0, double z1, double g) {
+  const double n0 = r0 * z0;
+  double s0 = z1 - 1.0;
+  double s1 = g < 0 ? 0.0 : robust_length(n0, z1) - 1.0;
+  double s = 0;
+  for (int i = 0; i < 2200; ++i) {
+    s = 0.5 * (s0 + s1);
+    if (s == s0 || s == s1) break;
+    const double ratio0 = n0 / (s + r0), ratio1 = z1 / (s + 1.0);
+    const double gs = ratio0 * ratio0 + ratio1 * ratio1 - 1.0;
+    if (gs > 0) {
+      s0 = s;
+    } else if (gs < 0) {
+      s1 = s;
+    } else {
+      break;
+    }
+  }
+  return s;
+}
+
+// e0 >= e1 > 0, y0, y1 >= 0.
+double distance_sorted(double e0, double e1, double y0, double y1) {
+  if (y1 > 0) {
+    if (y0 > 0) {
+      const double z0 = y0 / e0, z1 = y1 / e1;
+      const double g = z0 * z0 + z1 * z1 - 1.0;
+      if (g == 0) return 0.0;
+      const double r0 = (e0 / e1) * (e0 / e1);
+      const double sbar = get_root(r0, z0, z1, g);
+      const double x0 = r0 * y0 / (sbar + r0), x1 = y1 / (sbar + 1.0);
+      return robust_length(x0 - y0, x1 - y1);
+    }
+    return std::fabs(y1 - e1);
+  }
+  const double numer0 = e0 * y0, denom0 = e0 * e0 - e1 * e1;
+  if (numer0 < denom0) {
+    const double xde0 = numer0 / denom0;
+    const double x0 = e0 * xde0, x1 = e1 * std::sqrt(1.0 - xde0 * xde0);
+    return robust_length(x0 - y0, x1);
+  }
+  return std::fabs(y0 - e0);
+}
+
+}  // namespace
+
+double ellipse_distance(double a, double b, double px, double py) {
+  px = std::fabs(px);
+  py = std::fabs(py);
+  return a >= b ? distance_sorted(a, b, px, py) : distance_sorted(b, a, py, px);
+}
+
+}  // namespace dda

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "motion/motion_bus.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <numeric>
+#include <string>
+
+#include "datapath/errors.hpp"
+
+namespace dda::motion {
+
+void ModelTarget::tick(const BusIn& bus) {
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
+  model_.edge(in);
+  out_ = model_.outputs();
+  if (on_edge) on_edge(in, model_);
+}
+
+void PieceMonitor::set_reset(bool rst_n) {
+  reset_ = !rst_n;
+  t_.set_reset(rst_n);
+}
+
+void PieceMonitor::tick(const BusIn& bus) {
+  t_.tick(bus);
+  const BlockRegs& r = t_.model().regs();
+  const std::uint64_t done = r[breg("done_count_q")], err = r[breg("err_count_q")];
+  if (reset_) {  // the counters restart from 0, the queue is empty
+    ends_.clear();
+    next_ = 0;
+    done_ = done;
+    err_ = err;
+    return;
+  }
+  if (err != err_) throw GuardError("piece monitor: a queued piece stalled (ERR_COUNT " + std::to_string(err) + ")");
+  if (done == done_) return;
+  // Two pieces can finish on one edge (a piece whose last step leaves as a piece with no
+  // step waiting ends): the position is then the later one's end.
+  const std::uint64_t finished = (done - done_) & 0xFFFFFFFFu;
+  done_ = done;
+  if (next_ + finished > ends_.size()) throw GuardError("piece monitor: a piece finished that was not queued");
+  next_ += std::size_t(finished);
+  const Point want = ends_[next_ - 1];
+  const auto x = std::int32_t(r[breg("pos_x_q")]), y = std::int32_t(r[breg("pos_y_q")]);
+  if (x != want.x || y != want.y) {
+    throw GuardError("piece monitor: piece " + std::to_string(next_) + " finished at (" + std::to_string(x) + ", " +
+                     std::to_string(y) + "), its end point is (" + std::to_string(want.x) + ", " +
+                     std::to_string(want.y) + ")");
+  }
+  ++checked_;
+}
+
+std::uint32_t WishboneMaster::run(const Transfer& t) {
+  std::uniform_int_distribution<int> pct(0, 99);
+  while (pct(rng_) < idle_percent_) idle(1);
+  bool taken = false;
+  for (int guard = 0; guard < 64; ++guard) {
+    if (each_cycle) each_cycle();
+    BusIn b;
+    b.cyc = true;
+    b.stb = pipelined_ ? !taken : true;
+    b.we = t.we;
+    b.adr = t.adr;
+    b.dat = t.dat;
+    const bool stall = t_.outputs().stall;
+    t_.tick(b);
+    if (b.stb && !stall) taken = true;
+    if (taken && t_.outputs().ack) {
+      const std::uint32_t data = t.we ? 0 : t_.outputs().dat;
+      // Classic: the request stays on the bus through the ack cycle (the block stalls
+      // it, so it is not taken twice). Pipelined: the next request may start now.
+      if (!pipelined_) {
+        if (each_cycle) each_cycle();
+        t_.tick(b);
+      }
+      return data;
+    }
+  }
+  throw GuardError("Wishbone master: no ack within 64 cycles");
+}
+
+void WishboneMaster::idle(int cycles) {
+  for (int i = 0; i < cycles; ++i) {
+    if (each_cycle) each_cycle();
+    t_.tick(BusIn{});
+  }
+}
+
+std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value) {
+  const Field& f = field_of(reg, field);
+  return (value >> f.lsb) & std::uint32_t((std::uint64_t{1} << f.width) - 1);
+}
+
+std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
+
+void MotionDriver::queue(const Command& c, std::uint32_t feed) {
+  while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
+  const std::vector<std::uint32_t> w = entry_words(c, feed);
+  std::vector<std::size_t> order(w.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
+  for (const std::size_t k : order) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
+  m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit"));
+}
+
+void MotionDriver::drain(int max_polls) {
+  for (int i = 0; i < max_polls; ++i) {
+    const std::uint32_t st = m_.read(reg_offset("STATUS"));
+    if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st)) return;
+    m_.idle(int(rng_() % 16));
+  }
+  throw GuardError("motion driver: the queue did not drain");
+}
+
+void MotionDriver::preset(Point p) {
+  m_.write(reg_offset("POS_X"), std::uint32_t(p.x));
+  m_.write(reg_offset("POS_Y"), std::uint32_t(p.y));
+}
+
+void MotionDriver::set_timings(char axis, const StageTimings& t) {
+  const std::string a(1, char(std::toupper(static_cast<unsigned char>(axis))));
+  const std::string step = "STEP_" + a, dir = "DIR_" + a;
+  const auto put = [](std::string_view r, std::string_view f, std::uint32_t v) {
+    const Field& fl = field_of(r, f);
+    if (v >> fl.width) throw GuardError("motion driver: " + std::string(r) + "." + std::string(f) + " out of range");
+    return v << fl.lsb;
+  };
+  m_.write(reg_offset(step), put(step, "steplen", t.steplen) | put(step, "stepspace", t.stepspace));
+  m_.write(reg_offset(dir), put(dir, "dirsetup", t.dirsetup) | put(dir, "dirhold", t.dirhold));
+}
+
+void MotionDriver::set_polarity(std::uint32_t bits) { m_.write(reg_offset("POLARITY"), bits); }
+
+Point MotionDriver::position() {
+  const auto x = std::int32_t(m_.read(reg_offset("POS_X")));
+  const auto y = std::int32_t(m_.read(reg_offset("POS_Y")));
+  return Point{x, y};
+}
+
+}  // namespace dda::motion

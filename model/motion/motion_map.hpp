@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: Apache-2.0
+// The register map of the motion block (rtl/dda_motion.v, docs/design.md "Motion block"):
+// the one definition of its bus registers and their fields. Generated from it (and
+// checked against it by "motion_map: ..." tests): the tables of docs/design.md, the
+// firmware header fw/dda_motion_regs.h and the Verilog include rtl/dda_motion_regs.vh
+// the RTL decodes the bus with (`dda gen-params --kind motion-markdown|motion-c|
+// motion-verilog`).
+//
+// Wishbone B4, 32-bit data, byte addresses (word aligned). A command entry is
+// kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
+// (hw::kCmdFields, LSB first) and the entry's spare bits above it (kEntrySpareBits): the
+// top kFeedWidth bits of the last word are the entry's feed increment, the bits between
+// the command and the feed are reserved (written as 0).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "datapath/hw_params.hpp"
+
+namespace dda::motion {
+
+inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
+inline constexpr int kVersionMajor = 1;
+inline constexpr int kVersionMinor = 1;
+// Bits an entry keeps above the command word for per-command fields of later blocks.
+inline constexpr int kEntryReservedBits = 16;
+inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
+inline constexpr int kEntrySpareBits = 32 * kEntryWords - hw::kCmdWidth;
+inline constexpr int kAddrWidth = 8;          // byte address bits the block decodes
+inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
+inline constexpr int kLevelWidth = 9;         // queue level: 0 .. 256 entries
+inline constexpr int kMaxDepthLog2 = kLevelWidth - 1;
+// The feed increment of an entry: bits kFeedLsb .. kFeedLsb + kFeedWidth - 1 of entry word
+// kFeedWord. The phase accumulator of the same width adds it every cycle the core may go
+// on and lets the core iterate on its carry: feed / 2^kFeedWidth iterations per clock
+// (0: one per clock, the core's full rate).
+inline constexpr int kFeedWidth = 16;
+inline constexpr int kFeedWord = kEntryWords - 1;
+inline constexpr int kFeedLsb = 32 - kFeedWidth;
+static_assert(kEntrySpareBits >= kFeedWidth, "the feed increment sits in the entry's spare bits");
+// The step/dir stages' timings (STEP_X/Y, DIR_X/Y fields), in clock cycles: each is
+// field `name` of register `reg`_X / `reg`_Y, held in the block register
+// `name`_x_q / `name`_y_q.
+inline constexpr int kTimingWidth = 12;
+struct TimingField {
+  std::string_view reg, name;
+};
+inline constexpr std::array<TimingField, 4> kTimingFields{
+    {{"STEP", "steplen"}, {"STEP", "stepspace"}, {"DIR", "dirsetup"}, {"DIR", "dirhold"}}};
+static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
+
+enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
+
+struct Register {
+  std::string_view name;
+  unsigned offset;
+  Access access;
+  std::string_view meaning;
+};
+inline constexpr std::array<Register, 19> kRegisters{{
+    {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
+    {"VERSION", 0x04, Access::RO, "register map version"},
+    {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
+    {"CTRL", 0x0C, Access::WO, "commands to the block (each bit acts when written 1)"},
+    {"STATUS", 0x10, Access::RO, "state, queue level, the sticky error and its causes"},
+    {"IRQ_STATUS", 0x14, Access::W1C, "interrupt causes (events), write 1 to clear"},
+    {"IRQ_ENABLE", 0x18, Access::RW, "interrupt mask: irq_o = |(IRQ_STATUS & IRQ_ENABLE)"},
+    {"IRQ_LEVEL", 0x1C, Access::RW, "queue level under which a dequeue raises IRQ_STATUS.low"},
+    {"DONE_COUNT", 0x20, Access::RO, "commands finished (the core's done_o pulses), wraps"},
+    {"ERR_COUNT", 0x24, Access::RO, "commands stalled (the core's err_o pulses), wraps"},
+    {"POS_X", 0x28, Access::RW, "X position in steps, signed; counts the steps sent out; a write presets it"},
+    {"POS_Y", 0x2C, Access::RW, "Y position in steps, signed; counts the steps sent out; a write presets it"},
+    {"ENTRY_MASK", 0x30, Access::RO, "the words of the entry being written since the last commit"},
+    {"STEP_X", 0x34, Access::RW, "X step/dir stage: step pulse length and space (clock cycles)"},
+    {"DIR_X", 0x38, Access::RW, "X step/dir stage: direction setup and hold (clock cycles)"},
+    {"STEP_Y", 0x3C, Access::RW, "Y step/dir stage: step pulse length and space (clock cycles)"},
+    {"DIR_Y", 0x40, Access::RW, "Y step/dir stage: direction setup and hold (clock cycles)"},
+    {"POLARITY", 0x44, Access::RW, "output polarity: a bit set inverts that output"},
+    {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
+}};
+
+struct Field {
+  std::string_view reg;
+  std::string_view name;
+  int lsb;
+  int width;
+  std::string_view meaning;
+};
+inline constexpr std::array<Field, 44> kFields{{
+    {"ID", "id", 0, 32, "0x44444131"},
+    {"VERSION", "minor", 0, 16, "minor version"},
+    {"VERSION", "major", 16, 16, "major version"},
+    {"CONFIG", "entry_words", 0, 6, "words of an entry (kEntryWords)"},
+    {"CONFIG", "depth_log2", 8, 4, "log2 of the queue depth (entries)"},
+    {"CONFIG", "acc_width", 16, 6, "the core's AccWidth"},
+    {"CONFIG", "cnt_width", 24, 5, "the core's CntWidth"},
+    {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},
+    {"CTRL", "abort", 1, 1,
+     "stop the core on this edge, flush the queue, the entry being written and the waiting steps"},
+    {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
+    {"STATUS", "busy", 0, 1, "the core runs a command, or a step is on its way to the pins or a pulse is out"},
+    {"STATUS", "empty", 1, 1, "the queue is empty"},
+    {"STATUS", "full", 2, 1, "the queue is full"},
+    {"STATUS", "err", 3, 1, "sticky error: one of the causes below happened since the last clear"},
+    {"STATUS", "err_overflow", 4, 1, "cause: an entry word or a commit while the queue was full"},
+    {"STATUS", "err_partial", 5, 1, "cause: a commit before every word of the entry was written"},
+    {"STATUS", "err_stall", 6, 1, "cause: the core stopped a command that could not go on (err_o)"},
+    {"STATUS", "aborted", 7, 1, "an abort happened since the last clear"},
+    {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
+    {"IRQ_STATUS", "done", 0, 1, "a command finished"},
+    {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
+    {"IRQ_STATUS", "low", 2, 1, "a dequeue left fewer than IRQ_LEVEL entries"},
+    {"IRQ_ENABLE", "done", 0, 1, "enable IRQ_STATUS.done"},
+    {"IRQ_ENABLE", "err", 1, 1, "enable IRQ_STATUS.err"},
+    {"IRQ_ENABLE", "low", 2, 1, "enable IRQ_STATUS.low"},
+    {"IRQ_LEVEL", "level", 0, kLevelWidth, "threshold of IRQ_STATUS.low"},
+    {"DONE_COUNT", "count", 0, 32, "done pulses"},
+    {"ERR_COUNT", "count", 0, 32, "err pulses"},
+    {"POS_X", "pos", 0, 32, "two's complement"},
+    {"POS_Y", "pos", 0, 32, "two's complement"},
+    {"ENTRY_MASK", "words", 0, kEntryWords, "bit k: word k written"},
+    {"STEP_X", "steplen", 0, kTimingWidth, "step high for max(steplen, 1) cycles"},
+    {"STEP_X", "stepspace", 16, kTimingWidth, "step low for at least max(stepspace, 1) cycles between pulses"},
+    {"DIR_X", "dirsetup", 0, kTimingWidth,
+     "direction stable this many cycles before a rising step edge (0: may change on it)"},
+    {"DIR_X", "dirhold", 16, kTimingWidth,
+     "direction stable this many cycles after a falling step edge (0: may change on it)"},
+    {"STEP_Y", "steplen", 0, kTimingWidth, "as STEP_X.steplen"},
+    {"STEP_Y", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
+    {"DIR_Y", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
+    {"DIR_Y", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
+    {"POLARITY", "step_x", 0, 1, "step_x_o active low"},
+    {"POLARITY", "dir_x", 1, 1, "dir_x_o inverted (low: negative)"},
+    {"POLARITY", "step_y", 2, 1, "step_y_o active low"},
+    {"POLARITY", "dir_y", 3, 1, "dir_y_o inverted (low: negative)"},
+    {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31; the last word's top bits: the feed"},
+}};
+// A register's offset and a field by name (a name not in the map does not compile where
+// the result is a constant expression; at run time it throws).
+constexpr std::uint32_t reg_offset(std::string_view name) {
+  for (const auto& r : kRegisters) {
+    if (r.name == name) return r.offset;
+  }
+  throw "motion_map: no such register";
+}
+constexpr const Field& field_of(std::string_view reg, std::string_view name) {
+  for (const auto& f : kFields) {
+    if (f.reg == reg && f.name == name) return f;
+  }
+  throw "motion_map: no such field";
+}
+
+// Copies the checks take (a drift test hands them a changed copy).
+struct Map {
+  std::vector<Register> regs;
+  std::vector<Field> fields;
+};
+Map map();
+
+std::string markdown(const Map& m = map());        // docs/design.md, "Motion block"
+std::string c_header(const Map& m = map());        // fw/dda_motion_regs.h
+std::string verilog_header(const Map& m = map());  // rtl/dda_motion_regs.vh
+
+// Throws GuardError naming the first register or field that overlaps another, leaves
+// its 32-bit word, or whose register is unknown.
+void check(const Map& m = map());
+
+}  // namespace dda::motion

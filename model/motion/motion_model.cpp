@@ -1,0 +1,527 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "motion/motion_model.hpp"
+
+#include "datapath/errors.hpp"
+#include "datapath/hw_command.hpp"
+
+namespace dda::motion {
+
+namespace {
+
+// The index of an output port in PortValues (the outputs of kPorts, in order).
+constexpr std::size_t out(std::string_view name) {
+  std::size_t i = 0;
+  for (const auto& p : hw::kPorts) {
+    if (p.name == name) return i;
+    if (p.dir == hw::PortDir::Out) ++i;
+  }
+  throw "motion model: no such output";
+}
+
+std::uint64_t mask_of(int bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1; }
+
+}  // namespace
+
+std::string BlockOutputs::diff(const BlockOutputs& o) const {
+  std::string d;
+  const auto one = [&](const char* n, std::uint64_t a, std::uint64_t b) {
+    if (a != b) d += (d.empty() ? "" : ", ") + std::string(n) + " " + std::to_string(a) + "/" + std::to_string(b);
+  };
+  one("wb_ack_o", ack, o.ack);
+  one("wb_stall_o", stall, o.stall);
+  one("wb_dat_o", dat, o.dat);
+  one("step_x_o", step_x, o.step_x);
+  one("step_y_o", step_y, o.step_y);
+  one("dir_x_o", dir_x, o.dir_x);
+  one("dir_y_o", dir_y, o.dir_y);
+  one("busy_o", busy, o.busy);
+  one("irq_o", irq, o.irq);
+  return d;
+}
+
+int width_bits(Width w, int depth_log2) {
+  switch (w) {
+    case Width::One:
+      return 1;
+    case Width::Three:
+      return 3;
+    case Width::Four:
+      return 4;
+    case Width::Timing:
+      return kTimingWidth;
+    case Width::Feed:
+      return kFeedWidth;
+    case Width::Word:
+      return 32;
+    case Width::Level:
+      return kLevelWidth;
+    case Width::Index:
+      return depth_log2;
+    case Width::Entry:
+      return kEntryWords;
+  }
+  return 0;
+}
+
+std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
+  const auto reg = [&](std::string_view name, bool is_signed = false) {
+    return hw::WaveSignal{std::string(name), width_bits(kBlockRegs[breg(name)].width, depth_log2), is_signed};
+  };
+  std::vector<hw::WaveGroup> g;
+  g.push_back({"Bus",
+               {{"wb_cyc_i", 1},
+                {"wb_stb_i", 1},
+                {"wb_we_i", 1},
+                {"wb_adr_i", kAddrWidth},
+                {"wb_dat_i", 32},
+                {"wb_ack_o", 1},
+                {"wb_stall_o", 1},
+                {"wb_dat_o", 32}}});
+  g.push_back({"Queue", {reg("head_q"), reg("tail_q"), reg("level_q"), reg("mask_q"), reg("primed_q")}});
+  g.push_back({"Status",
+               {reg("err_q"),
+                reg("err_overflow_q"),
+                reg("err_partial_q"),
+                reg("err_stall_q"),
+                reg("aborted_q"),
+                reg("irq_status_q"),
+                reg("irq_enable_q"),
+                reg("irq_level_q"),
+                {"irq_o", 1}}});
+  g.push_back({"Axes",
+               {{"step_x_o", 1},
+                {"dir_x_o", 1},
+                {"step_y_o", 1},
+                {"dir_y_o", 1},
+                {"busy_o", 1},
+                reg("pos_x_q", true),
+                reg("pos_y_q", true),
+                reg("done_count_q"),
+                reg("done_wait_q"),
+                reg("err_count_q")}});
+  g.push_back({"Step/dir and feed",
+               {reg("u_sx.step_q"),
+                reg("u_sx.dir_q"),
+                reg("u_sx.pend_q"),
+                reg("u_sx.tf_q"),
+                reg("u_sy.step_q"),
+                reg("u_sy.dir_q"),
+                reg("u_sy.pend_q"),
+                reg("u_sy.tf_q"),
+                reg("feed_q"),
+                reg("acc_q"),
+                {"core_ce", 1}}});
+  hw::WaveGroup core{"Core", {}};
+  for (const auto& r : hw::kSignals) {
+    if (r.kind == hw::SigKind::Reg && (r.group == "Control" || r.group == "Counters")) {
+      core.signals.push_back({"u_core." + std::string(r.name), r.width, r.show_signed});
+    }
+  }
+  g.push_back(std::move(core));
+  return hw::gtkw_file(g, "the DDA motion block", file, top);
+}
+
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed) {
+  if (feed >> kFeedWidth)
+    throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
+  std::vector<std::uint32_t> w = hw::pack_command(c);
+  w.resize(kEntryWords, 0);
+  w[kFeedWord] |= feed << kFeedLsb;
+  return w;
+}
+
+CmdFields entry_fields(const std::vector<std::uint32_t>& words) {
+  CmdFields f{};
+  int off = 0;
+  for (std::size_t i = 0; i < hw::kCmdFields.size(); ++i) {
+    const int width = hw::kCmdFields[i].width;
+    std::uint64_t v = 0;
+    for (int k = 0; k < width; ++k) {
+      const int bit = off + k;
+      if ((words[std::size_t(bit / 32)] >> (bit % 32)) & 1u) v |= std::uint64_t{1} << k;
+    }
+    f[i] = v;
+    off += width;
+  }
+  return f;
+}
+
+StageRegs stage_reset() {
+  StageRegs r;
+  r.tf = r.ts = std::uint32_t(mask_of(kTimingWidth));
+  return r;
+}
+
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool tag_in, bool flush) {
+  const std::uint32_t sat = std::uint32_t(mask_of(kTimingWidth));
+  const std::uint32_t len = t.steplen == 0 ? 1 : t.steplen, space = t.stepspace == 0 ? 1 : t.stepspace;
+  const bool fall = r.step && r.tf >= len;
+  const bool dir_ok = r.step ? (fall && t.dirhold == 0) : r.tf >= t.dirhold;
+  const bool change = r.pend && r.pdir != r.dir && dir_ok;
+  const bool dir_d = change ? r.pdir : r.dir;
+  const std::uint32_t ts_now = change ? 0 : r.ts;
+  const bool rise = r.pend && !r.step && r.tf >= space && dir_d == r.pdir && ts_now >= t.dirsetup;
+  StageEdge e;
+  const bool pend_d = (r.pend && !rise) || step_in;
+  e.rise = rise;
+  e.rise_dir = r.pdir;
+  e.wait = pend_d;
+  e.tag_left = r.tag && !rise;
+  e.busy = step_in || r.pend || r.step;
+  e.next.step = rise || (r.step && !fall);
+  e.next.dir = dir_d;
+  e.next.tf = (rise || fall) ? 1 : r.tf == sat ? sat : r.tf + 1;
+  e.next.ts = change ? 1 : r.ts == sat ? sat : r.ts + 1;
+  e.next.pend = !flush && pend_d;
+  e.next.pdir = step_in ? dir_in : r.pdir;
+  e.next.tag = !flush && (tag_in ? pend_d : r.tag && !rise);
+  // Hold the core unless a step waiting after this edge leaves on the next one.
+  const StageRegs& n = e.next;
+  const bool turn_n = n.pdir != n.dir;
+  const bool rise_n = !n.step && n.tf >= space && (turn_n ? n.tf >= t.dirhold && t.dirsetup == 0 : n.ts >= t.dirsetup);
+  e.hold = pend_d && !rise_n;
+  return e;
+}
+
+std::string stage_diagram() {
+  const StageTimings t{3, 2, 2, 1};
+  const int edges = 12;
+  StageRegs r = stage_reset();
+  // The core's step register after each edge: + set on edge 0, then - on the first edge
+  // whose cycle the stage does not hold (the core iterates only then).
+  std::vector<int> core(edges + 2, 0);  // 0 none, 1 +, -1 -
+  core[0] = 1;
+  bool minus_done = false;
+  std::string row_core = "core step ", row_hold = "core held ", row_pend = "pend_q    ", row_step = "step out  ",
+              row_dir = "dir out   ", row_edge = "edge      ";
+  const auto cell = [](std::string& row, const std::string& v) { row += v + std::string(4 - v.size(), ' '); };
+  cell(row_edge, "0");
+  cell(row_core, "+");
+  cell(row_hold, "");
+  cell(row_pend, "0");
+  cell(row_step, "_");
+  cell(row_dir, "+");
+  for (int e = 1; e <= edges; ++e) {
+    const bool in = core[std::size_t(e - 1)] != 0, in_dir = core[std::size_t(e - 1)] < 0;
+    const StageEdge x = stage_edge(r, t, in, in_dir, false, false);
+    if (!minus_done && !x.hold) {
+      core[std::size_t(e)] = -1;
+      minus_done = true;
+    }
+    r = x.next;
+    cell(row_edge, std::to_string(e));
+    cell(row_core, core[std::size_t(e)] > 0 ? "+" : core[std::size_t(e)] < 0 ? "-" : "");
+    cell(row_hold, x.hold ? "1" : "");
+    cell(row_pend, r.pend ? "1" : "0");
+    cell(row_step, r.step ? "#" : "_");
+    cell(row_dir, r.dir ? "-" : "+");
+  }
+  std::string o;
+  for (std::string* row : {&row_edge, &row_core, &row_hold, &row_pend, &row_step, &row_dir}) {
+    while (!row->empty() && row->back() == ' ') row->pop_back();
+    o += *row + "\n";
+  }
+  return o;
+}
+
+MotionModel::MotionModel(int depth_log2)
+    : depth_log2_(depth_log2), mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
+  if (depth_log2 < 1 || depth_log2 > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");
+}
+
+std::uint64_t MotionModel::get(std::string_view name) const { return r_[breg(name)]; }
+
+StageRegs MotionModel::stage(char axis) const {
+  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  StageRegs s;
+  s.step = get(p + "step_q") != 0;
+  s.dir = get(p + "dir_q") != 0;
+  s.pend = get(p + "pend_q") != 0;
+  s.pdir = get(p + "pdir_q") != 0;
+  s.tf = std::uint32_t(get(p + "tf_q"));
+  s.ts = std::uint32_t(get(p + "ts_q"));
+  s.tag = get(p + "tag_q") != 0;
+  return s;
+}
+
+void MotionModel::set_stage(char axis, const StageRegs& s) {
+  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  reg(p + "step_q") = s.step;
+  reg(p + "dir_q") = s.dir;
+  reg(p + "pend_q") = s.pend;
+  reg(p + "pdir_q") = s.pdir;
+  reg(p + "tf_q") = s.tf;
+  reg(p + "ts_q") = s.ts;
+  reg(p + "tag_q") = s.tag;
+}
+
+StageTimings MotionModel::timings(char axis) const {
+  const auto t = [&](std::size_t i) {
+    return std::uint32_t(get(std::string(kTimingFields[i].name) + "_" + axis + "_q"));
+  };
+  return StageTimings{t(0), t(1), t(2), t(3)};
+}
+
+bool MotionModel::busy() const {
+  // The core runs, or a step is on its way to the pins: the core's step output (it enters
+  // a stage on the next edge), a step waiting in a stage, a pulse out.
+  const StageRegs x = stage('x'), y = stage('y');
+  const PortValues p = CoreModel::outputs(core_.state(), false);
+  return CoreModel::busy(core_.state()) || p[out("step_x_o")] != 0 || p[out("step_y_o")] != 0 || x.pend || x.step ||
+         y.pend || y.step;
+}
+std::uint64_t& MotionModel::reg(std::string_view name) { return r_[breg(name)]; }
+
+std::uint32_t MotionModel::read(std::uint32_t adr) const {
+  const std::uint64_t level = get("level_q");
+  const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
+  if (adr == reg_offset("ID")) return kId;
+  if (adr == reg_offset("VERSION")) return std::uint32_t(kVersionMajor) << 16 | std::uint32_t(kVersionMinor);
+  if (adr == reg_offset("CONFIG")) {
+    return std::uint32_t(kEntryWords) << std::uint32_t(field_of("CONFIG", "entry_words").lsb) |
+           std::uint32_t(depth_log2_) << std::uint32_t(field_of("CONFIG", "depth_log2").lsb) |
+           std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
+           std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb);
+  }
+  if (adr == reg_offset("STATUS")) {
+    const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
+    return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) | bit("err", get("err_q")) |
+           bit("err_overflow", get("err_overflow_q")) | bit("err_partial", get("err_partial_q")) |
+           bit("err_stall", get("err_stall_q")) | bit("aborted", get("aborted_q")) |
+           std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
+  }
+  if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
+  if (adr == reg_offset("IRQ_ENABLE")) return std::uint32_t(get("irq_enable_q"));
+  if (adr == reg_offset("IRQ_LEVEL")) return std::uint32_t(get("irq_level_q"));
+  if (adr == reg_offset("DONE_COUNT")) return std::uint32_t(get("done_count_q"));
+  if (adr == reg_offset("ERR_COUNT")) return std::uint32_t(get("err_count_q"));
+  if (adr == reg_offset("POS_X")) return std::uint32_t(get("pos_x_q"));
+  if (adr == reg_offset("POS_Y")) return std::uint32_t(get("pos_y_q"));
+  if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
+  if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
+  std::uint32_t v = 0;
+  for (const char axis : {'x', 'y'}) {
+    for (const auto& t : kTimingFields) {
+      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
+      if (adr == reg_offset(r))
+        v |= std::uint32_t(get(std::string(t.name) + "_" + axis + "_q")) << field_of(r, t.name).lsb;
+    }
+  }
+  return v;
+}
+
+BlockOutputs MotionModel::outputs() const {
+  const std::uint64_t pol = get("polarity_q");
+  const auto inv = [&](std::string_view f) { return ((pol >> field_of("POLARITY", f).lsb) & 1u) != 0; };
+  BlockOutputs o;
+  o.ack = o.stall = get("ack_q") != 0;
+  o.dat = std::uint32_t(get("dat_q"));
+  o.step_x = (get("u_sx.step_q") != 0) != inv("step_x");
+  o.step_y = (get("u_sy.step_q") != 0) != inv("step_y");
+  o.dir_x = (get("u_sx.dir_q") != 0) != inv("dir_x");
+  o.dir_y = (get("u_sy.dir_q") != 0) != inv("dir_y");
+  o.busy = busy();
+  o.irq = (get("irq_status_q") & get("irq_enable_q")) != 0;
+  return o;
+}
+
+// The combinational side of one edge (the RTL's wires): everything the registers load,
+// decoded from the inputs and the registers before the edge, before anything is written.
+struct MotionModel::Wires {
+  // The bus request.
+  std::uint32_t adr = 0, word = 0;
+  bool req = false, wr = false, commit = false, abort = false, clear = false;
+  // The queue.
+  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0;
+  bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
+  bool cmd_valid = false, take = false;
+  // The core's registered outputs, the stages and the feed.
+  bool core_done = false, core_err = false, running = false, advance = false, core_ce = false;
+  StageEdge ex, ey;
+  std::uint64_t acc_sum = 0;
+  // The read data of a bus read in this cycle.
+  std::uint32_t rd = 0;
+};
+
+MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
+  Wires w;
+  const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
+  const std::uint64_t all_words = mask_of(kEntryWords);
+  w.adr = b.adr & std::uint32_t(mask_of(kAddrWidth)) & ~3u;
+
+  w.req = b.cyc && b.stb && !get("ack_q");
+  w.wr = w.req && b.we;
+  const bool wr_ctrl = w.wr && w.adr == reg_offset("CTRL");
+  w.commit = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
+  w.abort = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
+  w.clear = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
+  const bool in_entry = w.adr >= kEntryBase && w.adr < kEntryBase + 4u * kEntryWords;
+  w.word = (w.adr - kEntryBase) >> 2;
+
+  w.level = get("level_q");
+  const bool full = w.level == depth;
+  w.empty = w.level == 0;
+  const bool mask_all = get("mask_q") == all_words;
+  const bool wr_entry = w.wr && in_entry && !w.abort;
+  w.entry_ok = wr_entry && !full;
+  w.commit_ok = w.commit && !w.abort && !full && mask_all;
+  w.err_overflow = (wr_entry || w.commit) && !w.abort && full;
+  w.err_partial = w.commit && !w.abort && !full && !mask_all;
+  return w;
+}
+
+void MotionModel::core_wires(bool ce, Wires& w) const {
+  // The core's outputs during this cycle (registered): what the stages and counters see.
+  const Signals& pre = core_.state();
+  const PortValues po = CoreModel::outputs(pre, false);
+  w.core_done = CoreModel::done(pre);
+  w.core_err = CoreModel::err(pre);
+  w.running = CoreModel::busy(pre);
+  const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
+  const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
+  w.ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, w.core_done, w.abort);
+  w.ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, w.core_done, w.abort);
+  // The feed: the core may iterate when no stage holds it and the accumulator carries
+  // (a timing written on this edge holds it once: the stages' look-ahead used the old).
+  const bool wr_timing = w.wr && (w.adr == reg_offset("STEP_X") || w.adr == reg_offset("DIR_X") ||
+                                  w.adr == reg_offset("STEP_Y") || w.adr == reg_offset("DIR_Y"));
+  const bool hold = w.ex.hold || w.ey.hold || wr_timing;
+  w.advance = ce && !hold;
+  const std::uint64_t feed = get("feed_q");
+  w.acc_sum = get("acc_q") + feed;
+  w.core_ce = w.advance && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
+
+  w.cmd_valid = get("primed_q") && !w.empty;
+  w.take = w.cmd_valid && core_.cmd_ready(w.core_ce) && !w.abort;
+  w.level_d = w.level + w.commit_ok - w.take;
+  w.rd = read(w.adr);
+  w.head = get("head_q");
+  w.tail = get("tail_q");
+  w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
+}
+
+void MotionModel::step_core(bool rst_n, const Wires& w) {
+  CoreInputs ci;
+  ci.rst_n = rst_n && !w.abort;
+  ci.ce = w.core_ce;
+  ci.cmd_valid = w.cmd_valid;
+  if (w.cmd_valid) ci.cmd = entry_fields(mem_[w.head]);
+  core_.edge(ci);
+}
+
+void MotionModel::note_edge(const Wires& w) {
+  took_ = w.take;
+  core_ce_ = w.core_ce;
+  iterated_ = w.core_ce && !w.abort && w.running;
+  rise_x_ = w.ex.rise ? (w.ex.rise_dir ? -1 : 1) : 0;
+  rise_y_ = w.ey.rise ? (w.ey.rise_dir ? -1 : 1) : 0;
+}
+
+void MotionModel::load_bus(const BusIn& b, const Wires& w) {
+  reg("ack_q") = w.req;
+  if (w.req && !b.we) reg("dat_q") = w.rd;
+}
+
+void MotionModel::load_queue(const Wires& w) {
+  reg("primed_q") = 1;
+  reg("head_q") = w.abort ? w.tail : w.take ? (w.head + 1) & mask_of(depth_log2_) : w.head;
+  if (w.abort) {
+    reg("level_q") = 0;
+    reg("mask_q") = 0;
+  } else {
+    reg("level_q") = w.level_d;
+    if (w.commit_ok) {
+      reg("tail_q") = (w.tail + 1) & mask_of(depth_log2_);
+      reg("mask_q") = 0;
+    } else if (w.entry_ok) {
+      reg("mask_q") |= std::uint64_t{1} << w.word;
+    }
+  }
+}
+
+void MotionModel::load_status(const BusIn& b, const Wires& w) {
+  const bool err_set = w.err_overflow || w.err_partial || w.core_err;
+  const bool low_set = w.take && w.level_d < get("irq_level_q");
+  // A piece is done once its last steps (tagged on the core's done_o) have left.
+  const bool tags_left = w.ex.tag_left || w.ey.tag_left;
+  const bool old_done = get("done_wait_q") && !tags_left;
+  const bool new_wait = w.core_done && (w.ex.wait || w.ey.wait);
+  const bool new_done = w.core_done && !new_wait;
+  reg("done_wait_q") = !w.abort && (new_wait || (get("done_wait_q") && tags_left));
+  const std::uint64_t irq_set =
+      std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  // Sticky bits: a cause on the edge of a clear stays set.
+  reg("err_q") = (get("err_q") && !w.clear) || err_set;
+  reg("err_overflow_q") = (get("err_overflow_q") && !w.clear) || w.err_overflow;
+  reg("err_partial_q") = (get("err_partial_q") && !w.clear) || w.err_partial;
+  reg("err_stall_q") = (get("err_stall_q") && !w.clear) || w.core_err;
+  reg("aborted_q") = (get("aborted_q") && !w.clear) || w.abort;
+  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (b.dat & 7u) : 0;
+  reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
+  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
+  if (w.wr && w.adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
+  reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
+  reg("err_count_q") = (get("err_count_q") + w.core_err) & 0xFFFFFFFFu;
+  load_positions(b, w);
+}
+
+void MotionModel::load_positions(const BusIn& b, const Wires& w) {
+  const std::uint64_t dx = w.ex.rise ? (w.ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint64_t dy = w.ey.rise ? (w.ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+  // A preset is the position before the steps of the same edge: none is lost.
+  const std::uint64_t px = w.wr && w.adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
+  const std::uint64_t py = w.wr && w.adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
+  reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
+  reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
+}
+
+void MotionModel::load_feed(const Wires& w) {
+  if (w.abort) {
+    reg("feed_q") = 0;
+    reg("acc_q") = 0;
+  } else {
+    if (w.take) reg("feed_q") = w.entry_feed;
+    if (w.advance) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+  }
+}
+
+void MotionModel::load_settings(const BusIn& b, const Wires& w) {
+  for (const char axis : {'x', 'y'}) {
+    for (const auto& t : kTimingFields) {
+      const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
+      if (w.wr && w.adr == reg_offset(r)) {
+        reg(std::string(t.name) + "_" + axis + "_q") = (b.dat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
+      }
+    }
+  }
+  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
+}
+
+void MotionModel::edge(const BlockInputs& in) {
+  // Every wire first, from the registers before the edge; then the core's edge, the
+  // RAM's write and the block's registers, in that order.
+  Wires w = bus_wires(in.bus);
+  core_wires(in.ce, w);
+  step_core(in.rst_n, w);
+
+  if (w.entry_ok) mem_[w.tail][w.word] = in.bus.dat;  // the RAM has no reset
+  took_ = false;
+  core_ce_ = iterated_ = false;
+  rise_x_ = rise_y_ = 0;
+  if (!in.rst_n) {
+    r_ = BlockRegs{};
+    set_stage('x', stage_reset());
+    set_stage('y', stage_reset());
+    return;
+  }
+  note_edge(w);
+  load_bus(in.bus, w);
+  load_queue(w);
+  load_status(in.bus, w);
+  load_feed(w);
+  set_stage('x', w.ex.next);
+  set_stage('y', w.ey.next);
+  load_settings(in.bus, w);
+}
+
+}  // namespace dda::motion

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: Apache-2.0
+// The cycle-level reference model of the motion block (rtl/dda_motion.v, docs/design.md
+// "Motion block"): the bus slave, the command queue, status, interrupts, counters and
+// positions, around the core's reference model (CoreModel). The block harnesses compare
+// the RTL (and later the SystemC model) with it after every edge: ports, the block's
+// registers (kBlockRegs) and the core's register table.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "datapath/core_model.hpp"
+#include "motion/motion_map.hpp"
+
+namespace dda::motion {
+
+// The Wishbone inputs of one cycle.
+struct BusIn {
+  bool cyc = false, stb = false, we = false;
+  std::uint32_t adr = 0, dat = 0;
+  std::uint8_t sel = 0xF;
+};
+struct BlockInputs {
+  bool rst_n = true;
+  bool ce = true;
+  BusIn bus;
+};
+// The inputs of one edge as the block sees them: the address cut to the bits it decodes.
+inline BlockInputs block_inputs(bool rst_n, bool ce, const BusIn& bus) {
+  BlockInputs in{rst_n, ce, bus};
+  in.bus.adr &= (1u << kAddrWidth) - 1;
+  return in;
+}
+// The output ports (after an edge; all registered except wb_stall_o = wb_ack_o).
+struct BlockOutputs {
+  bool ack = false, stall = false;
+  std::uint32_t dat = 0;
+  bool step_x = false, step_y = false, dir_x = false, dir_y = false, busy = false, irq = false;
+  // "" when equal, else the ports that differ ("ack 1/0, dat 5/0": this/other).
+  std::string diff(const BlockOutputs& o) const;
+  bool operator==(const BlockOutputs& o) const {
+    return ack == o.ack && stall == o.stall && dat == o.dat && step_x == o.step_x && step_y == o.step_y &&
+           dir_x == o.dir_x && dir_y == o.dir_y && busy == o.busy && irq == o.irq;
+  }
+};
+
+// The block's own registers by their RTL names (below dda_motion), each masked to its
+// width; the harness reads them by these names (public_flat_rd) and compares them with
+// the model's after every edge, beside the core's register table.
+enum class Width { One, Three, Four, Word, Level, Index, Entry, Timing, Feed };
+struct BlockReg {
+  std::string_view name;
+  Width width;
+};
+// Names with a dot are registers of a submodule (u_sx, u_sy: the step/dir stages,
+// rtl/dda_stepdir.v).
+inline constexpr std::array<BlockReg, 45> kBlockRegs{{
+    {"ack_q", Width::One},           {"dat_q", Width::Word},
+    {"head_q", Width::Index},        {"tail_q", Width::Index},
+    {"level_q", Width::Level},       {"mask_q", Width::Entry},
+    {"primed_q", Width::One},        {"err_q", Width::One},
+    {"err_overflow_q", Width::One},  {"err_partial_q", Width::One},
+    {"err_stall_q", Width::One},     {"aborted_q", Width::One},
+    {"irq_status_q", Width::Three},  {"irq_enable_q", Width::Three},
+    {"irq_level_q", Width::Level},   {"done_count_q", Width::Word},
+    {"done_wait_q", Width::One},     {"err_count_q", Width::Word},
+    {"pos_x_q", Width::Word},        {"pos_y_q", Width::Word},
+    {"feed_q", Width::Feed},         {"acc_q", Width::Feed},
+    {"steplen_x_q", Width::Timing},  {"stepspace_x_q", Width::Timing},
+    {"dirsetup_x_q", Width::Timing}, {"dirhold_x_q", Width::Timing},
+    {"steplen_y_q", Width::Timing},  {"stepspace_y_q", Width::Timing},
+    {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing},
+    {"polarity_q", Width::Four},     {"u_sx.step_q", Width::One},
+    {"u_sx.dir_q", Width::One},      {"u_sx.pend_q", Width::One},
+    {"u_sx.pdir_q", Width::One},     {"u_sx.tf_q", Width::Timing},
+    {"u_sx.ts_q", Width::Timing},    {"u_sx.tag_q", Width::One},
+    {"u_sy.tag_q", Width::One},      {"u_sy.step_q", Width::One},
+    {"u_sy.dir_q", Width::One},      {"u_sy.pend_q", Width::One},
+    {"u_sy.pdir_q", Width::One},     {"u_sy.tf_q", Width::Timing},
+    {"u_sy.ts_q", Width::Timing},
+}};
+inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
+constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
+int width_bits(Width w, int depth_log2);
+using BlockRegs = std::array<std::uint64_t, kNumBlockRegs>;
+
+// One step/dir stage (rtl/dda_stepdir.v) for one edge: its registers before the edge,
+// the axis' timings and the core's step of this cycle; after() gives its registers
+// after the edge.
+struct StageRegs {
+  bool step = false, dir = false, pend = false, pdir = false, tag = false;
+  std::uint32_t tf = 0, ts = 0;
+};
+struct StageTimings {
+  std::uint32_t steplen = 0, stepspace = 0, dirsetup = 0, dirhold = 0;
+};
+struct StageEdge {
+  bool hold = false, rise = false, rise_dir = false, wait = false, tag_left = false, busy = false;
+  StageRegs next;
+};
+StageRegs stage_reset();
+// The edge-by-edge diagram of docs/design.md ("Step and direction timing"): one stage
+// with steplen 3, stepspace 2, dirsetup 2, dirhold 1, the core stepping + then - as
+// fast as the stage lets it (`dda gen-params --kind stepdir-diagram`).
+std::string stage_diagram();
+StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bool dir_in, bool tag_in, bool flush);
+
+class MotionModel {
+ public:
+  explicit MotionModel(int depth_log2 = kMaxDepthLog2);
+  // One rising edge with these inputs (wb_stall_o of this cycle is outputs().stall).
+  void edge(const BlockInputs& in);
+  BlockOutputs outputs() const;
+  const BlockRegs& regs() const { return r_; }
+  const Signals& core() const { return core_.state(); }
+  int depth_log2() const { return depth_log2_; }
+  // What the last edge did: the core took a command; a bus read returned (with ack).
+  bool took() const { return took_; }
+  // The core's ce_i on the last edge (the feed and the stages let it go on), and whether
+  // the core iterated on it (ce_i while it ran a command).
+  bool core_ce() const { return core_ce_; }
+  bool iterated() const { return iterated_; }
+  // The pulses the stages started on the last edge (+1, -1 or 0 per axis).
+  int rise_x() const { return rise_x_; }
+  int rise_y() const { return rise_y_; }
+
+ private:
+  std::uint32_t read(std::uint32_t adr) const;
+  std::uint64_t& reg(std::string_view name);
+  std::uint64_t get(std::string_view name) const;
+  StageRegs stage(char axis) const;
+  void set_stage(char axis, const StageRegs& s);
+  StageTimings timings(char axis) const;
+  bool busy() const;  // busy_o: the core runs or a stage holds a step
+
+  // One edge in parts, in the order edge() runs them: the wires (the bus request and the
+  // queue; the core's outputs, the stages and the feed), the core's edge, then the
+  // registers group by group as rtl/dda_motion.v's always blocks hold them.
+  struct Wires;
+  Wires bus_wires(const BusIn& b) const;
+  void core_wires(bool ce, Wires& w) const;
+  void step_core(bool rst_n, const Wires& w);
+  void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_
+  void load_bus(const BusIn& b, const Wires& w);
+  void load_queue(const Wires& w);
+  void load_status(const BusIn& b, const Wires& w);  // status, interrupts, counters
+  void load_positions(const BusIn& b, const Wires& w);
+  void load_feed(const Wires& w);
+  void load_settings(const BusIn& b, const Wires& w);  // the timings and the polarity
+
+  int depth_log2_;
+  CoreModel core_;
+  std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
+  BlockRegs r_{};
+  bool took_ = false, core_ce_ = false, iterated_ = false;
+  int rise_x_ = 0, rise_y_ = 0;
+};
+
+// The GTKWave save file of the motion block (docs/dda_motion.gtkw: `dda gen-params
+// --kind gtkw-motion`): the bus, the queue, status and interrupts, the axes and the
+// core's control, below `top` (the RTL's scope, e.g. "dut.dda_motion"), for a queue of
+// 2^depth_log2 entries.
+std::string gtkw(std::string_view file, std::string_view top, int depth_log2);
+
+// The entry words of a command: the core's command word LSB first, reserved bits 0, the
+// feed increment (0: full rate) in its field.
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0);
+// The core's command fields of entry words (the inverse of entry_words on its bits).
+CmdFields entry_fields(const std::vector<std::uint32_t>& words);
+
+}  // namespace dda::motion

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: Apache-2.0
+// Straight lines through the same core: Bresenham's line (half preload) cut into pieces
+// the counters hold, and plan_line() for `--line`.
+#include <cstdlib>
+#include <utility>
+
+#include "datapath/hw_params.hpp"
+#include "plan_detail.hpp"
+
+namespace dda {
+
+using namespace detail;
+
+std::vector<Piece> line_pieces(Point from, Point to, Preload preload) {
+  const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
+  const std::int64_t ax = std::llabs(dx), ay = std::llabs(dy), m = std::max(ax, ay);
+  const bool x_major = ax >= ay;
+  const std::int64_t minor = x_major ? ay : ax;
+  const std::int64_t cap = m, jr0 = preload == Preload::Half ? cap / 2 : 0;
+  // Minor steps after k major steps: floor((jr0 + k minor) / cap), the accumulator's
+  // carries; a piece starting at k0 takes the remainder as its preload.
+  const auto carries = [&](std::int64_t k) { return std::int64_t((i128(jr0) + i128(k) * minor) / cap); };
+  const auto rest = [&](std::int64_t k) { return std::int64_t((i128(jr0) + i128(k) * minor) % cap); };
+  const auto at = [&](std::int64_t k) {
+    const std::int64_t mj = k, mn = carries(k);
+    return Point{from.x + (dx < 0 ? -1 : 1) * (x_major ? mj : mn), from.y + (dy < 0 ? -1 : 1) * (x_major ? mn : mj)};
+  };
+  std::vector<Piece> v;
+  const std::int64_t chunk = std::int64_t(hw::kCntMax);
+  for (std::int64_t k0 = 0; k0 < m; k0 += chunk) {
+    const std::int64_t k1 = std::min(m, k0 + chunk);
+    Piece pc;
+    pc.kind = PieceKind::Line;
+    pc.from = at(k0);
+    pc.to = at(k1);
+    Command& c = pc.cmd;
+    c.cap = cap;
+    c.jv_x = ax;
+    c.jv_y = ay;
+    c.jr_x = x_major ? jr0 : rest(k0);
+    c.jr_y = x_major ? rest(k0) : jr0;
+    c.cnt_x = std::llabs(pc.to.x - pc.from.x);
+    c.cnt_y = std::llabs(pc.to.y - pc.from.y);
+    c.dir_x_neg = dx < 0;
+    c.dir_y_neg = dy < 0;
+    pc.iteration_bound = std::uint64_t(k1 - k0) + 1;  // the major axis steps every iteration
+    pc.quadrant = dx >= 0 ? (dy >= 0 ? 1 : 4) : (dy >= 0 ? 2 : 3);
+    v.push_back(pc);
+  }
+  return v;
+}
+
+Plan plan_line(Point from, Point to, Preload preload) {
+  const std::int64_t lim = std::int64_t{1} << 40;
+  for (const auto& [name, q] : {std::pair{"from", from}, std::pair{"to", to}}) {
+    if (q.x < -lim || q.x > lim || q.y < -lim || q.y > lim) {
+      throw InputError(std::string(name) + " point " + pt(q) + " is out of range: coordinates must be within 2^40");
+    }
+  }
+  if (from == to) {
+    throw InputError("line from " + pt(from) + " to " + pt(to) + " has length 0: a line needs two different points");
+  }
+  const std::int64_t len = std::max(std::llabs(to.x - from.x), std::llabs(to.y - from.y));
+  if (len > kMaxLineSteps) {
+    throw InputError("line from " + pt(from) + " to " + pt(to) + " is " + std::to_string(len) +
+                     " steps long: at most 2^30 steps on its longer axis (cut it into several lines)");
+  }
+  Plan p;
+  p.line = true;
+  p.spec.from = from;
+  p.spec.to = to;
+  p.spec.preload = preload;
+  p.spec.center = from;
+  p.from = p.arc_from = from;
+  p.to = to;
+  p.pieces = line_pieces(from, to, preload);
+  p.scale = p.pieces.front().cmd.cap;
+  for (const auto& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
+  // No run to check reachability: a line's pieces end on their points by construction
+  // (one iteration per step of the longer axis; tested against the runner).
+  return p;
+}
+
+}  // namespace dda

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: Apache-2.0
+// The part-program reader (docs/programs.md): G-code of RS274 / ISO 6983 with
+// modal groups, read with PEGTL into the motion blocks a program describes, in the
+// machine's plane and in integer nanometres (1e-6 mm), with each block's source
+// position. It is the planner's side, before the lattice: the geometry is as the
+// program gives it (centres, radii and semi-axes anywhere), checked (an arc's end on
+// its curve, a reachable radius), and nothing else is decided here.
+//
+// Bad input throws ProgramError, whose message is one line "FILE:LINE:COLUMN: message"
+// (the CLI prints it and exits with status 2).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <istream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "datapath/errors.hpp"
+
+namespace dda::program {
+
+class ProgramError : public InputError {
+ public:
+  ProgramError(const std::string& file, std::size_t line, std::size_t column, const std::string& message);
+  std::size_t line() const { return line_; }
+  std::size_t column() const { return column_; }
+
+ private:
+  std::size_t line_, column_;
+};
+
+// Lengths in nanometres of the program's unit (1e-6 mm); angles in 0.001 degree.
+using Length = std::int64_t;
+inline constexpr Length kNmPerMm = 1000000;
+// An arc's end may be off its curve by this much (as real controls check the radius to
+// the end against the radius to the start): 0.002 mm.
+inline constexpr Length kEndTolerance = 2000;
+
+// A point of the machine's plane: (u, v) = mill G17 (X, Y), G18 (Z, X), G19 (Y, Z);
+// lathe (Z, X as a radius). The lattice's x is u, its y is v.
+struct Point2 {
+  Length u = 0, v = 0;
+  friend bool operator==(const Point2& a, const Point2& b) { return a.u == b.u && a.v == b.v; }
+};
+
+enum class Machine { Mill, Lathe };
+enum class MoveKind { Rapid, Line, ArcCw, ArcCcw, EllipseCw, EllipseCcw };
+std::string_view kind_name(MoveKind k);  // "rapid", "line", "arc cw", ...
+
+struct SourcePos {
+  std::size_t line = 0, column = 0;  // 1-based
+};
+
+// One motion block. Clockwise is seen from the positive side of the axis normal to the
+// plane (G17: +Z, G18: +Y, G19: +X): on the lattice (u right, v up) a clockwise block
+// turns clockwise in G17 and G19 and in G18 as the ZX plane is drawn with Z right and X
+// up (a lathe's rear-tool-post view).
+struct Move {
+  SourcePos pos;
+  std::optional<std::int64_t> block_number;  // N
+  MoveKind kind = MoveKind::Line;
+  Point2 from, to;
+  // Arcs and ellipses: the centre (absolute); arcs: the radius (to the start), full
+  // turn (end equal to start, given by a centre).
+  Point2 center;
+  Length radius = 0;
+  bool full = false;
+  // Ellipses: semi-axes a (along the direction q) and b, q in 0.001 degree from +u.
+  Length a = 0, b = 0;
+  std::int64_t q_millideg = 0;
+  // The feed in force (F, program units per minute as written, 0 if none yet).
+  double feed = 0;
+};
+
+// A word that does not move the tool, accepted and reported ("S1200", "M03", "G54").
+struct Ignored {
+  SourcePos pos;
+  std::string word;
+};
+
+struct Program {
+  std::vector<Move> moves;
+  std::vector<Ignored> ignored;
+  Point2 start;
+  bool ended = false;  // M02 or M30 seen (text after it is not read)
+};
+
+struct ReadOptions {
+  Machine machine = Machine::Mill;
+  std::optional<Point2> start;  // default (0, 0)
+  // Macro programs: lines executed in all before the run is refused as a loop that does
+  // not end (docs/programs.md, "Macros").
+  std::uint64_t max_lines = 10000000;
+};
+
+// Reads a program's text; `file` names it in error messages. (It reads the text as a
+// stream with read_stream, keeping every move and every ignored word.)
+Program read(std::string_view text, const std::string& file, const ReadOptions& opt = {});
+
+// What a streamed read leaves besides the moves.
+struct ReadSummary {
+  std::vector<Ignored> ignored;     // the first kMaxIgnoredKept words that do not move (in order)
+  std::uint64_t ignored_count = 0;  // all of them
+  Point2 start;
+  bool ended = false;
+};
+inline constexpr std::size_t kMaxIgnoredKept = 1000;
+// Reads the program from `in` (a seekable stream: tellg/seekg must work) and calls
+// on_move for each motion block as the interpreter reaches it, in program order.
+// Memory: the structure of the programs and statements (offsets of '%' headers and of
+// WHILE/ENDW/IF/ELSE/ENDIF lines), the variables, the call stack and one line at a
+// time; never the whole text or a record per line. Two passes: the first parses every
+// line and matches the statements, so that every syntax or structure error is thrown
+// before any on_move call; the second seeks back and runs the lines, parsing each when
+// it runs (an error at run time, an undefined variable for one, may follow some calls).
+// Throws ProgramError as read() does.
+ReadSummary read_stream(std::istream& in, const std::string& file, const ReadOptions& opt,
+                        const std::function<void(const Move&)>& on_move);
+// Opens a program for read_stream: a path, or "-" for standard input (copied to an
+// anonymous temporary file, removed by the system when closed, since standard input
+// cannot seek). A path that is a directory, missing or unreadable throws InputError with
+// one line: "program = 'PATH' is invalid: it is a directory" / "...: cannot read it (<strerror>)".
+std::unique_ptr<std::istream> open_program(const std::string& path);
+
+}  // namespace dda::program

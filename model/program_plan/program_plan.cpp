@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: Apache-2.0
+// The planner for part programs (docs/programs.md, "From blocks to commands").
+#include "program_plan/program_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "accuracy/accuracy.hpp"
+#include "datapath/hw_command.hpp"
+#include "geometry/fixed_trig.hpp"
+#include "geometry/geometry.hpp"
+#include "planner/planner.hpp"
+
+namespace dda::program {
+
+namespace {
+
+// v / d rounded to the nearest integer, halves away from zero (d > 0), in 128 bits.
+std::int64_t round_div(__int128 v, __int128 d) { return std::int64_t(v >= 0 ? (v + d / 2) / d : -((-v + d / 2) / d)); }
+
+std::int64_t floor_div(std::int64_t v, std::int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); }
+
+std::string block_name(const Move& mv) {
+  return mv.block_number ? fmt::format("block N{} ({})", *mv.block_number, kind_name(mv.kind))
+                         : fmt::format("block at line {} ({})", mv.pos.line, kind_name(mv.kind));
+}
+
+[[noreturn]] void fail(const std::string& file, const Move& mv, const std::string& why) {
+  throw ProgramError(file, mv.pos.line, mv.pos.column, block_name(mv) + ": " + why);
+}
+
+bool is_arc(MoveKind k) { return k == MoveKind::ArcCw || k == MoveKind::ArcCcw; }
+
+// The arc or ellipse block as the planner's sub-step ArcSpec, from `from` to `to`.
+ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point to) {
+  ArcSpec s;
+  s.sub = kSubBits;
+  const std::int64_t one = std::int64_t{1} << kSubBits;
+  const std::int64_t cu = to_sub_steps(mv.center.u, step), cv = to_sub_steps(mv.center.v, step);
+  s.center = Point{floor_div(cu, one), floor_div(cv, one)};
+  s.center_frac = Point{cu - s.center.x * one, cv - s.center.y * one};
+  if (is_arc(mv.kind)) {
+    s.a = s.b = to_sub_steps(mv.radius, step);
+  } else {
+    s.a = to_sub_steps(mv.a, step);
+    s.b = to_sub_steps(mv.b, step);
+    s.angle = normalize_udeg(mv.q_millideg * 1000);
+  }
+  s.dir = mv.kind == MoveKind::ArcCw || mv.kind == MoveKind::EllipseCw ? Direction::Cw : Direction::Ccw;
+  s.preload = preload;
+  s.from = from;
+  s.to = to;
+  // The ends may lie off the curve by the reader's tolerance plus the rounding to the
+  // lattice (at most half a step on each axis) and one step of margin.
+  s.tolerance = 1.0 + double(kEndTolerance) / double(step);
+  // The width: 4 bits above the smallest valid (where the targets were measured; the
+  // fixed-point capacity is 2^kRotCapBits whatever the size, so the exact datapath's
+  // capacity limit of default_bits() does not apply), fewer if the coefficients'
+  // rounding could move a thin ellipse's curve by more than kMaxCoefficientDrift
+  // (planner.hpp); a program cannot choose it.
+  const double mx = std::max(a_steps(s), b_steps(s)), mn = std::min(a_steps(s), b_steps(s));
+  const int nmin = smallest_valid_bits(steps_ceil(s, s.a), steps_ceil(s, s.b));
+  s.bits = std::min(nmin + 4, kRotCapBits);
+  const auto drift = [&](int n) { return std::ldexp(mx * mx / mn, n - kRotCapBits); };
+  while (s.bits > nmin && drift(s.bits) > kMaxCoefficientDrift) --s.bits;
+  if (drift(s.bits) > kMaxCoefficientDrift) {
+    throw InputError(
+        fmt::format("the ellipse is too thin for the datapath: semi-axes {:.6g} and {:.6g} steps; the "
+                    "rounding of its fixed-point coefficients could move the curve by {:.3g} steps (at "
+                    "most {})",
+                    mx, mn, drift(s.bits), kMaxCoefficientDrift));
+  }
+  return s;
+}
+
+// Whether a block turns half a turn or more about its centre from its start to its end,
+// in its direction: exactly, from the sign of the cross product of the two radii (an
+// ellipse's parametric sweep passes half a turn where its polar one does).
+bool half_turn_or_more(const Move& mv) {
+  const __int128 ax = mv.from.u - mv.center.u, ay = mv.from.v - mv.center.v;
+  const __int128 bx = mv.to.u - mv.center.u, by = mv.to.v - mv.center.v;
+  const __int128 cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+  const bool cw = mv.kind == MoveKind::ArcCw || mv.kind == MoveKind::EllipseCw;
+  const __int128 turn = cw ? -cross : cross;  // > 0: less than half a turn ahead
+  return turn < 0 || (turn == 0 && dot < 0);
+}
+
+}  // namespace
+
+std::optional<Length> parse_mm(const std::string& text) {
+  std::string t = text;
+  const bool neg = !t.empty() && t[0] == '-';
+  if (!t.empty() && (t[0] == '-' || t[0] == '+')) t = t.substr(1);
+  const auto dot = t.find('.');
+  const std::string whole = t.substr(0, dot), frac = dot == std::string::npos ? "" : t.substr(dot + 1);
+  const auto digits = [](const std::string& d) { return d.find_first_not_of("0123456789") == std::string::npos; };
+  if ((whole.empty() && frac.empty()) || !digits(whole) || !digits(frac) || whole.size() > 7 || frac.size() > 6) {
+    return std::nullopt;
+  }
+  Length f = frac.empty() ? 0 : std::stoll(frac);
+  for (std::size_t d = frac.size(); d < 6; ++d) f *= 10;
+  const Length v = (whole.empty() ? 0 : std::stoll(whole)) * kNmPerMm + f;
+  return neg ? -v : v;
+}
+
+Length parse_step(const std::string& mm) {
+  const std::optional<Length> nm = parse_mm(mm);
+  if (!nm || *nm < 1 || *nm > kNmPerMm) {
+    throw InputError("step = " + mm + " is invalid: the lattice unit is in millimetres, from 0.000001 (1 nm) to 1");
+  }
+  return *nm;
+}
+
+Point2 start_point(Machine m, Length first, Length second) {
+  return m == Machine::Lathe ? Point2{second, first / 2} : Point2{first, second};
+}
+
+std::int64_t to_steps(Length v, Length step) { return round_div(v, step); }
+std::int64_t to_sub_steps(Length v, Length step) { return round_div(__int128(v) << kSubBits, step); }
+
+Point on_lattice(Point2 p, Length step) { return Point{to_steps(p.u, step), to_steps(p.v, step)}; }
+
+double rounding(Point q, Point2 p, Length step) {
+  return std::hypot(double(q.x) - double(p.u) / double(step), double(q.y) - double(p.v) / double(step));
+}
+
+BlockPlanner::BlockPlanner(const LatticeOptions& opt, Point2 start, std::string file, std::size_t window,
+                           std::function<void(BlockPlan&&)> on_block)
+    : opt_(opt), file_(std::move(file)), window_(std::max<std::size_t>(window, 1)), on_block_(std::move(on_block)) {
+  start_ = at_ = on_lattice(start, opt.step);
+  start_rounding_ = rounding(start_, start, opt.step);
+}
+
+void BlockPlanner::move(const Move& mv) {
+  last_ = mv.pos;
+  held_.push_back(mv);
+  if (held_.size() > window_) plan_front();
+}
+
+void BlockPlanner::plan_front() {
+  const Move& mv = held_.front();
+  const Length step = opt_.step;
+  BlockPlan b;
+  b.move = mv;
+  b.from = at_;
+  b.to = on_lattice(mv.to, step);
+  b.rounding = rounding(b.to, mv.to, step);
+  b.plan.from = b.plan.to = b.plan.arc_from = at_;
+  try {
+    if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
+      if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
+    } else if (b.from != b.to || mv.full || half_turn_or_more(mv)) {
+      // (A block whose rounded ends coincide and that sweeps less than half a turn is
+      // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
+      b.plan = plan_arc(arc_spec(mv, step, opt_.preload, b.from, b.to));
+    }
+  } catch (const ProgramError&) {
+    throw;
+  } catch (const InputError& e) {
+    fail(file_, mv, e.what());
+  }
+  b.first_piece = pieces_;
+  pieces_ += b.plan.pieces.size();
+  ++blocks_;
+  at_ = b.to;
+  held_.pop_front();
+  on_block_(std::move(b));
+}
+
+void BlockPlanner::finish() {
+  while (!held_.empty()) plan_front();
+  if (pieces_ == 0) {
+    throw ProgramError(file_, last_.line, last_.column,
+                       blocks_ == 0 ? "the program has no motion block: nothing to run"
+                                    : "the program's moves are all shorter than a step: nothing to run");
+  }
+}
+
+ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const std::string& file) {
+  ProgramPlan pp;
+  pp.lattice = opt;
+  BlockPlanner planner(opt, prog.start, file, kDefaultWindow, [&](BlockPlan&& b) {
+    for (const Piece& pc : b.plan.pieces) pp.plan.pieces.push_back(pc);
+    pp.plan.iteration_bound += b.plan.iteration_bound;
+    pp.blocks.push_back(std::move(b));
+  });
+  pp.start = planner.start();
+  pp.start_rounding = planner.start_rounding();
+  for (const Move& mv : prog.moves) planner.move(mv);
+  planner.finish();
+  pp.plan.from = pp.plan.arc_from = pp.start;
+  pp.plan.to = planner.end();
+  pp.plan.program = true;
+  return pp;
+}
+
+void check_hardware(const BlockPlan& b, const std::string& file) {
+  for (const Piece& pc : b.plan.pieces) {
+    try {
+      hw::pack_command(pc.cmd);
+    } catch (const InputError& e) {
+      fail(file, b.move, std::string("beyond the hardware's widths: ") + e.what());
+    }
+  }
+}
+
+void check_hardware(const ProgramPlan& pp, const std::string& file) {
+  for (const BlockPlan& b : pp.blocks) check_hardware(b, file);
+}
+
+double block_distance(const BlockPlan& b, Length step, double x, double y) {
+  const Move& mv = b.move;
+  const double s = double(step);
+  const double px = x, py = y;
+  if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
+    const double x0 = double(mv.from.u) / s, y0 = double(mv.from.v) / s;
+    const double ux = double(mv.to.u) / s - x0, uy = double(mv.to.v) / s - y0;
+    const double len2 = ux * ux + uy * uy;
+    const double t = len2 > 0 ? std::clamp(((px - x0) * ux + (py - y0) * uy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(px - (x0 + t * ux), py - (y0 + t * uy));
+  }
+  const double rx = px - double(mv.center.u) / s, ry = py - double(mv.center.v) / s;
+  if (is_arc(mv.kind)) return std::fabs(std::hypot(rx, ry) - double(mv.radius) / s);
+  const auto [u, v] = to_frame(normalize_udeg(mv.q_millideg * 1000), rx, ry);
+  return ellipse_distance(double(mv.a) / s, double(mv.b) / s, u, v);
+}
+
+double block_target(const BlockPlan& b, double from_rounding, Preload preload) {
+  if (preload != Preload::Half) return std::numeric_limits<double>::infinity();
+  const Move& m = b.move;
+  double t = kTargetOther;
+  if (m.kind == MoveKind::Line || m.kind == MoveKind::Rapid) {
+    t = kTargetLine;
+  } else if (is_arc(m.kind) ||
+             (m.q_millideg % 90000 == 0 && double(std::max(m.a, m.b)) <= kTargetAspect * double(std::min(m.a, m.b)))) {
+    t = kTargetAligned;
+  }
+  return t + std::max(from_rounding, b.rounding);
+}
+
+std::size_t block_of_piece(const ProgramPlan& pp, std::size_t piece) {
+  const auto it = std::upper_bound(pp.blocks.begin(), pp.blocks.end(), piece,
+                                   [](std::size_t k, const BlockPlan& b) { return k < b.first_piece; });
+  return std::size_t(it - pp.blocks.begin()) - 1;
+}
+
+}  // namespace dda::program

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: Apache-2.0
+// The runner: a plan's pieces through the golden datapath, with the run-time guards.
+#include "runner/runner.hpp"
+
+#include <sstream>
+#include <string>
+#include <tuple>
+
+namespace dda {
+
+namespace {
+
+std::string pt(Point p) {
+  std::ostringstream s;
+  s << '(' << p.x << ',' << p.y << ')';
+  return s.str();
+}
+
+// What a piece's run reports on: its place in the stream, the ends named in messages,
+// and the command loaded by its last iteration (none for the last piece).
+struct PieceRun {
+  const Piece& pc;
+  std::uint32_t index;
+  std::uint64_t first_iter;
+  Point from, to;  // the path's ends (the plan's, or the piece's in a stream)
+  const Command* next;
+};
+
+[[noreturn]] void fail(bool for_validation, const char* guard, const std::string& m) {
+  if (for_validation) throw InputError(m);
+  throw GuardError(std::string(guard) + ": " + m);
+}
+
+// The guards before an iteration: an active axis' integrand must stay within
+// [-cap, cap] (above cap an accumulator could carry twice in one iteration; the planner
+// refuses such an arc), the path must not stall, and the piece must not pass its bound.
+void check_guards(const PieceRun& r, const Datapath& dp, bool for_validation) {
+  const Piece& pc = r.pc;
+  const auto& rg = dp.regs();
+  const auto ends = [&] { return "end point " + pt(r.to) + " is unreachable from " + pt(r.from); };
+  for (const auto& [axis, active, jv] :
+       {std::tuple{'X', rg.cnt_x != 0, rg.jv_x}, std::tuple{'Y', rg.cnt_y != 0, rg.jv_y}}) {
+    if (active && (jv < -pc.cmd.cap || jv > pc.cmd.cap)) {
+      std::ostringstream m;
+      m << ends() << ": at " << pt(dp.pos()) << " the " << axis << " integrand's magnitude exceeds the capacity with "
+        << (axis == 'X' ? rg.cnt_x : rg.cnt_y) << ' ' << axis << " step(s) still owed";
+      fail(for_validation, "integrand guard", m.str());
+    }
+  }
+  if (dp.stalled()) {
+    const char axis = (rg.cnt_y != 0 && rg.jv_y == 0) ? 'Y' : 'X';
+    const std::int64_t owed = axis == 'Y' ? rg.cnt_y : rg.cnt_x;
+    std::ostringstream m;
+    m << ends() << ": at " << pt(dp.pos()) << " the " << axis << " integrand is 0 with " << owed << ' ' << axis
+      << " step(s) still owed (the DDA would never finish)";
+    fail(for_validation, "stall guard", m.str());
+  }
+  if (dp.iterations() >= pc.iteration_bound) {
+    // While planning, a piece that passes its bound does not reach its end: the input's
+    // fault (the planner then tries another way, or refuses it); while running, a guard.
+    std::ostringstream m;
+    m << "the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound << " iterations";
+    if (for_validation) throw InputError(ends() + ": " + m.str());
+    throw GuardError("iteration guard: " + m.str());
+  }
+}
+
+RunSummary run_piece(const PieceRun& r, const RecordFn* on_iter, bool for_validation) {
+  const Piece& pc = r.pc;
+  Datapath dp(pc.cmd, pc.from);
+  while (!dp.done()) {
+    check_guards(r, dp, for_validation);
+    if (!on_iter || !*on_iter) {
+      dp.step();
+      continue;
+    }
+    Iteration it = dp.iterate();
+    // Back to back, the edge of a piece's last iteration also loads the next piece's
+    // command: the registers after it are that command's.
+    it.piece_end = dp.done();
+    if (it.piece_end && r.next) it.after = initial_regs(*r.next);
+    it.iter += r.first_iter;
+    it.piece = r.index;
+    it.dir_x_neg = pc.cmd.dir_x_neg;
+    it.dir_y_neg = pc.cmd.dir_y_neg;
+    (*on_iter)(it);
+  }
+  if (dp.pos() != pc.to) {
+    throw GuardError("end-point guard: the counters reached 0 at " + pt(dp.pos()) + " instead of " + pt(pc.to));
+  }
+  return RunSummary{dp.iterations(), dp.pos(), dp.regs()};
+}
+
+void add(RunSummary& total, const RunSummary& r) {
+  total.iterations += r.iterations;
+  total.end = r.end;
+  total.final_regs = r.final_regs;
+}
+
+RunSummary run_impl(const Plan& plan, const RecordFn* on_iter, bool for_validation) {
+  RunSummary total;
+  for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
+    const Command* next = k + 1 < plan.pieces.size() ? &plan.pieces[k + 1].cmd : nullptr;
+    const PieceRun r{plan.pieces[k], static_cast<std::uint32_t>(k), total.iterations, plan.from, plan.to, next};
+    add(total, run_piece(r, on_iter, for_validation));
+  }
+  return total;
+}
+
+}  // namespace
+
+void GoldenRun::run_pending(const Command* next) {
+  const Piece& pc = *pending_;
+  const PieceRun r{pc, static_cast<std::uint32_t>(pieces_ - 1), total_.iterations, pc.from, pc.to, next};
+  add(total_, run_piece(r, &on_iter_, false));
+}
+
+void GoldenRun::piece(const Piece& pc) {
+  if (pending_) run_pending(&pc.cmd);
+  pending_ = pc;
+  ++pieces_;
+}
+
+RunSummary GoldenRun::finish() {
+  if (pending_) run_pending(nullptr);
+  pending_.reset();
+  return total_;
+}
+
+RunSummary run(const Plan& plan, const RecordFn& on_iter) { return run_impl(plan, &on_iter, false); }
+
+std::vector<Iteration> run_records(const Plan& plan) {
+  std::vector<Iteration> v;
+  run(plan, [&](const Iteration& it) { v.push_back(it); });
+  return v;
+}
+
+void check_reachable(const Plan& plan) { run_impl(plan, nullptr, /*for_validation=*/true); }
+
+}  // namespace dda
