@@ -3,12 +3,14 @@
 // reference model (dda/core_model.hpp) running the planner's commands.
 #include "vectors.hpp"
 
-#include "temp_files.hpp"
+#include "vector_set.hpp"
+#include "vector_words.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -30,15 +32,6 @@ namespace {
 constexpr int kIdxWidth = 16;     // command index field of the per-cycle inputs
 constexpr int kCmdAddrBits = 12;  // the bench's command memory: 2^12 commands
 constexpr std::size_t kMaxCommands = std::size_t{1} << kCmdAddrBits;
-
-// One field of a vector word: name, width, meaning, and (expected words) the Verilog
-// expression the bench compares it with, relative to the core instance `dut`.
-struct Field {
-  std::string name;
-  int width;
-  std::string meaning;
-  std::string verilog;
-};
 
 std::vector<Field> input_fields() {
   return {{"rst_ni", 1, "reset, active low, applied before the edge", ""},
@@ -69,51 +62,12 @@ std::vector<Field> iteration_fields() {
       {"dir_x", 1, "X step direction (0 = +X)", ""},      {"step_x", 1, "X step", ""}};
 }
 
-int total_width(const std::vector<Field>& fs) {
-  int w = 0;
-  for (const auto& f : fs) w += f.width;
-  return w;
-}
-
-// A wide word built field by field, most significant first, printed in hex.
-class Word {
- public:
-  explicit Word(int width) : bits_(std::size_t(width), 0) {}
-  void put(std::uint64_t v, int width) {
-    for (int k = width - 1; k >= 0; --k) bits_[pos_++] = (v >> k) & 1;
-  }
-  std::string hex() const {
-    const int w = int(bits_.size()), digits = (w + 3) / 4;
-    std::string s(std::size_t(digits), '0');
-    for (int d = 0; d < digits; ++d) {
-      int v = 0;
-      for (int k = 0; k < 4; ++k) {
-        const int bit = w - 1 - (4 * (digits - 1 - d) + (3 - k));  // index from the MSB
-        v = v * 2 + (bit >= 0 && bit < w ? bits_[std::size_t(bit)] : 0);
-      }
-      s[std::size_t(d)] = "0123456789abcdef"[v];
-    }
-    return s;
-  }
-
- private:
-  std::vector<char> bits_;
-  std::size_t pos_ = 0;
-};
-
 struct Cmd {
   Command c;
   CmdFields fields;
   std::size_t arc = 0, piece = 0;
   bool arc_last = false;
 };
-
-void write_text(const fs::path& p, const std::string& text) {
-  std::ofstream f(p, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) throw GuardError("vectors: cannot write " + p.string());
-}
 
 }  // namespace
 
@@ -202,13 +156,32 @@ std::string command_words(const std::vector<Cmd>& cmds) {
   return s.str();
 }
 
-// The per-cycle and per-iteration files of the set, a line at a time as the model runs.
+// Counts the bytes written through it and keeps none: the size of a set before it is
+// written.
+class CountingBuf : public std::streambuf {
+ public:
+  std::uint64_t bytes = 0;
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!traits_type::eq_int_type(c, traits_type::eof())) ++bytes;
+    return traits_type::not_eof(c);
+  }
+  std::streamsize xsputn(const char*, std::streamsize n) override {
+    bytes += std::uint64_t(n);
+    return n;
+  }
+};
+
+// The per-cycle and per-iteration files of the set, a line at a time as the model runs,
+// into the streams given (the set's files, or counters).
 struct Traces {
   const std::vector<Field> in_f = input_fields(), exp_f = expect_fields(), it_f = iteration_fields();
-  std::ostringstream in_hex, out_hex, cyc_csv, it_hex, it_csv;
+  std::ostream &in_hex, &out_hex, &cyc_csv, &it_hex, &it_csv;
   std::uint64_t iterations = 0;
 
-  Traces() {
+  Traces(std::ostream& in, std::ostream& out, std::ostream& cyc, std::ostream& it, std::ostream& itc)
+      : in_hex(in), out_hex(out), cyc_csv(cyc), it_hex(it), it_csv(itc) {
     cyc_csv << "cycle";
     for (const auto& f : in_f) cyc_csv << ',' << f.name;
     for (const auto& f : exp_f) cyc_csv << ',' << f.name;
@@ -256,8 +229,9 @@ struct Traces {
 // Runs the cycle-level reference model, fed the commands back to back (ce_i drawn from
 // the seeded pattern), into the traces until the stream is done and the core idle for
 // a few cycles; returns the number of cycles.
+// on_cycle, if given, is told the number of cycles run after each.
 std::uint64_t run_model(const std::vector<Plan>& plans, const std::vector<Cmd>& cmds, const Options& opt,
-                        Traces& traces) {
+                        Traces& traces, const std::function<void(std::uint64_t)>& on_cycle = {}) {
   const std::uint64_t bound = cycle_bound(plans, opt.ce_percent);
   std::mt19937_64 rng(opt.seed);
   CoreModel model;
@@ -287,22 +261,10 @@ std::uint64_t run_model(const std::vector<Plan>& plans, const std::vector<Cmd>& 
       cur = next++;
     }
     traces.cycle(cycle, in, idx, post, e.ready);
+    if (on_cycle) on_cycle(cycle + 1);
     if (in.rst_n && next == cmds.size() && !CoreModel::busy(post) && ++idle_tail > 2) break;
   }
   return cycle + 1;
-}
-
-// A word layout for the manifest: each field's name, bits (most significant first),
-// width and meaning.
-nlohmann::ordered_json field_layout(const std::vector<Field>& fs) {
-  nlohmann::ordered_json a = nlohmann::ordered_json::array();
-  int msb = total_width(fs) - 1;
-  for (const auto& f : fs) {
-    a.push_back(
-        {{"name", f.name}, {"msb", msb}, {"lsb", msb - f.width + 1}, {"width", f.width}, {"meaning", f.meaning}});
-    msb -= f.width;
-  }
-  return a;
 }
 
 // The command word's layout: the fields of cmd_i from bit 0 up.
@@ -355,104 +317,65 @@ nlohmann::ordered_json manifest(const std::vector<Plan>& plans, const Options& o
 
 }  // namespace
 
-void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
-  if (plans.empty()) throw InputError("vectors need at least one arc");
-  const std::vector<Cmd> cmds = command_stream(plans);
-  Traces traces;
-  const std::uint64_t ncycles = run_model(plans, cmds, opt, traces);
-  const nlohmann::ordered_json m = manifest(plans, opt, cmds.size(), ncycles, traces);
-  write_set(opt.out_dir, {{"counts.hex", fmt::format("{:x}\n{:x}\n", cmds.size(), ncycles)},
-                          {"cmds.hex", command_words(cmds)},
-                          {"cycle_in.hex", traces.in_hex.str()},
-                          {"cycle_exp.hex", traces.out_hex.str()},
-                          {"cycles.csv", traces.cyc_csv.str()},
-                          {"iter.hex", traces.it_hex.str()},
-                          {"iterations.csv", traces.it_csv.str()},
-                          {"manifest.json", m.dump(1) + "\n"}});
-}
-
 namespace {
 
-// The files of the vector set in `dir` that a replacement may remove: its manifest and
-// the files the manifest lists. Anything else in the directory, or a manifest this tool
-// did not write, and the directory is not replaced (InputError naming what is there).
-std::vector<fs::path> set_files(const fs::path& dir, const std::string& out_dir) {
-  const std::string what = "out-dir = '" + out_dir + "' is invalid: ";
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(what + "it exists and is not a directory");
-  if (fs::is_empty(dir, ec)) return {};
-  nlohmann::json m;
-  {
-    std::ifstream in(dir / "manifest.json", std::ios::binary);
-    if (!in) throw InputError(what + "it is not empty and holds no vector set (no manifest.json): nothing is replaced");
-    m = nlohmann::json::parse(in, nullptr, false);
+std::string counts_text(std::size_t commands, std::uint64_t cycles) {
+  return fmt::format("{:x}\n{:x}\n", commands, cycles);
+}
+
+// Refuses a set larger than opt.max_size (InputError, before anything is written): the
+// model runs once into counters and stops as soon as the count passes the limit; the
+// whole is then estimated from the bytes per cycle so far and the cycles per iteration
+// so far, times the run's iterations (the golden model's, quiet iterations skipped).
+void check_set_size(const std::vector<Plan>& plans, const std::vector<Cmd>& cmds, const Options& opt) {
+  std::array<CountingBuf, 5> bufs;
+  std::ostream in(&bufs[0]), out(&bufs[1]), cyc(&bufs[2]), it(&bufs[3]), itc(&bufs[4]);
+  Traces traces(in, out, cyc, it, itc);
+  const std::uint64_t fixed = command_words(cmds).size();
+  const auto counted = [&] {
+    std::uint64_t n = fixed;
+    for (const CountingBuf& b : bufs) n += b.bytes;
+    return n;
+  };
+  struct TooLarge {
+    std::uint64_t cycles;
+  };
+  const auto refuse = [&](std::uint64_t bytes, bool estimated) {
+    throw InputError(
+        fmt::format("the vector set would take {}{} ({} bytes), more than --max-size {}: nothing is "
+                    "written (a larger --max-size writes it)",
+                    estimated ? "about " : "", size_text(bytes), bytes, size_text(opt.max_size)));
+  };
+  try {
+    const std::uint64_t ncycles = run_model(plans, cmds, opt, traces, [&](std::uint64_t c) {
+      if (counted() > opt.max_size) throw TooLarge{c};
+    });
+    const std::uint64_t size = counted() + counts_text(cmds.size(), ncycles).size() +
+                               manifest(plans, opt, cmds.size(), ncycles, traces).dump(1).size() + 1;
+    if (size > opt.max_size) refuse(size, false);
+  } catch (const TooLarge& e) {
+    std::uint64_t iterations = 0;
+    for (const Plan& p : plans) iterations += run(p).iterations;
+    const double cycles_per_iteration = traces.iterations ? double(e.cycles) / double(traces.iterations) : 1.0;
+    const double cycles = std::max(double(e.cycles), cycles_per_iteration * double(iterations));
+    refuse(std::uint64_t(double(counted()) / double(e.cycles) * cycles), true);
   }
-  const bool ours = m.is_object() && m.contains("generator") && m["generator"].is_string() &&
-                    m["generator"].get<std::string>().rfind("dda vectors", 0) == 0 && m.contains("files") &&
-                    m["files"].is_object();
-  if (!ours) throw InputError(what + "its manifest.json is not one `dda vectors` wrote: nothing is replaced");
-  std::vector<fs::path> own{dir / "manifest.json"};
-  for (const auto& [name, _] : m["files"].items()) {
-    if (name.find('/') != std::string::npos || name == ".." || name == ".") {
-      throw InputError(what + "its manifest lists '" + name + "', which is not a file of a set: nothing is replaced");
-    }
-    own.push_back(dir / name);
-  }
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    if (std::find(own.begin(), own.end(), entry.path()) == own.end() || !entry.is_regular_file()) {
-      throw InputError(what + "it holds '" + entry.path().filename().string() +
-                       "', which is not a file of its vector set: nothing is replaced");
-    }
-  }
-  return own;
 }
 
 }  // namespace
 
-using cli::register_temp;
-using cli::release_temp;
-using cli::remove_stale_temps;
-
-void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files) {
-  // Atomic: everything into a temporary directory next to the target, then renamed into
-  // place; an existing set is replaced only if it holds nothing but its own files, and
-  // only those are removed.
-  const fs::path dir(out_dir);
-  std::error_code ec;
-  std::vector<fs::path> old_files;
-  const bool exists = fs::exists(fs::symlink_status(dir, ec));
-  if (exists) old_files = set_files(dir, out_dir);
-  remove_stale_temps(dir.string());
-  const std::string pid = std::to_string(::getpid());
-  const fs::path tmp = dir.parent_path() / (dir.filename().string() + ".tmp." + pid);
-  register_temp(tmp.string());
-  if (!fs::create_directories(tmp, ec) || ec) {
-    release_temp(tmp.string());
-    throw GuardError("vectors: cannot create " + tmp.string() + ": " + ec.message());
-  }
-  try {
-    for (const auto& [name, text] : files) {
-      register_temp((tmp / name).string());
-      write_text(tmp / name, text);
-    }
-    if (exists) {
-      const fs::path old = dir.parent_path() / (dir.filename().string() + ".old." + pid);
-      fs::rename(dir, old);
-      fs::rename(tmp, dir);
-      for (const fs::path& f : old_files) fs::remove(old / f.filename(), ec);
-      fs::remove(old, ec);
-    } else {
-      fs::rename(tmp, dir);
-    }
-  } catch (...) {
-    for (const auto& [name, text] : files) fs::remove(tmp / name, ec);
-    fs::remove(tmp, ec);
-    for (const auto& [name, text] : files) release_temp((tmp / name).string());
-    release_temp(tmp.string());
-    throw;
-  }
-  for (const auto& [name, text] : files) release_temp((tmp / name).string());
-  release_temp(tmp.string());
+void write_vector_set(const std::vector<Plan>& plans, const Options& opt) {
+  if (plans.empty()) throw InputError("vectors need at least one arc");
+  const std::vector<Cmd> cmds = command_stream(plans);
+  check_set_size(plans, cmds, opt);
+  SetWriter set(opt.out_dir);
+  Traces traces(set.open("cycle_in.hex"), set.open("cycle_exp.hex"), set.open("cycles.csv"), set.open("iter.hex"),
+                set.open("iterations.csv"));
+  const std::uint64_t ncycles = run_model(plans, cmds, opt, traces);
+  set.write("counts.hex", counts_text(cmds.size(), ncycles));
+  set.write("cmds.hex", command_words(cmds));
+  set.write("manifest.json", manifest(plans, opt, cmds.size(), ncycles, traces).dump(1) + "\n");
+  set.commit();
 }
 
 }  // namespace dda::vec

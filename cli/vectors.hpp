@@ -10,6 +10,7 @@
 #include "accuracy/golden.hpp"
 #include "datapath/hw_params.hpp"
 #include "motion/motion_model.hpp"
+#include "vector_set.hpp"
 
 namespace CLI {
 class App;
@@ -19,9 +20,10 @@ namespace dda::vec {
 
 struct Options {
   std::string out_dir;
-  std::string command_line;  // the exact dda command, recorded in the manifest
-  std::uint64_t seed = 1;    // the ce pattern's seed
-  int ce_percent = 100;      // chance (percent) that ce_i is high on a cycle
+  std::string command_line;                     // the exact dda command, recorded in the manifest
+  std::uint64_t seed = 1;                       // the ce pattern's seed
+  int ce_percent = 100;                         // chance (percent) that ce_i is high on a cycle
+  std::uint64_t max_size = kDefaultMaxSetSize;  // bytes: a larger set is refused before it is written
 };
 
 // Writes the vector set of `plans` run back to back into opt.out_dir (atomically: a
@@ -53,10 +55,6 @@ BusOptions bus_options(const BusCli& c);
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);
 // The bus bench's field table (tb/hdl/dda_bus_vec_fields.vh).
 std::string bus_verilog_fields();
-
-// Writes the files (name, text) of a vector set into out_dir atomically: a temporary
-// directory renamed into place; an existing out_dir must be a vector set (manifest.json).
-void write_set(const std::string& out_dir, const std::vector<std::pair<std::string, std::string>>& files);
 
 // A Verilog macro NAME(cyc, exp, got) that prints the first field (most significant
 // first, name and width) where the expected and the sampled words differ.

@@ -3,11 +3,11 @@
 
 #include <verilated.h>
 #include <verilated_syms.h>
-#include <verilated_vcd_c.h>
 
 #include "Vdda_motion.h"
 #include "datapath/errors.hpp"
 #include "vl_sampler.hpp"
+#include "vl_waveform.hpp"
 
 namespace dda::motion {
 
@@ -97,13 +97,7 @@ MotionHarness::MotionHarness(const std::string& vcd)
   top_->wb_cyc_i = top_->wb_stb_i = top_->wb_we_i = 0;
   top_->eval();
   sampler_ = std::make_unique<VlBlockSampler>(*ctx_, kTop, kHarnessDepthLog2);
-  if (!vcd.empty()) {
-    vcd_ = std::make_unique<VerilatedVcdC>();
-    top_->trace(vcd_.get(), 99);
-    vcd_->open(vcd.c_str());
-    if (!vcd_->isOpen()) throw GuardError("cannot write the waveform '" + vcd + "'");
-    vcd_->dump(ctx_->time());
-  }
+  vcd_ = open_waveform(*top_, *ctx_, vcd);
 }
 
 MotionHarness::~MotionHarness() {

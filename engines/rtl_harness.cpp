@@ -2,10 +2,10 @@
 #include "rtl_harness.hpp"
 
 #include <verilated.h>
-#include <verilated_vcd_c.h>
 
 #include "Vdda_core.h"
 #include "datapath/hw_command.hpp"
+#include "vl_waveform.hpp"
 
 namespace dda::rtl {
 
@@ -18,13 +18,7 @@ RtlHarness::RtlHarness(const std::string& vcd) : ctx_(std::make_unique<Verilated
   top_->cmd_valid_i = 0;
   top_->eval();
   sampler_ = std::make_unique<VlSampler>(*ctx_, "dut.dda_core", hw::signal_table());
-  if (!vcd.empty()) {
-    vcd_ = std::make_unique<VerilatedVcdC>();
-    top_->trace(vcd_.get(), 99);
-    vcd_->open(vcd.c_str());
-    if (!vcd_->isOpen()) throw GuardError("cannot write the waveform '" + vcd + "'");
-    vcd_->dump(ctx_->time());
-  }
+  vcd_ = open_waveform(*top_, *ctx_, vcd);
 }
 
 RtlHarness::~RtlHarness() {

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <thread>
+#include <tuple>
+#include <vector>
 
 #include "cli_helpers.hpp"
 
@@ -28,6 +30,17 @@ int temporaries(const fs::path& dir) {
     n += name.find(".tmp.") != std::string::npos || name.find(".old.") != std::string::npos;
   }
   return n;
+}
+
+// dda ARGS is refused: exit status 2, one line that starts "dda: error: " + want, and
+// no file left in the scratch directory (no output, no temporary file).
+void expect_refused(const Scratch& s, const std::string& args, const std::string& want) {
+  const Result r = run_dda(s, args);
+  INFO("dda " << args << "\nstderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("dda: error: " + want, 0) == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(s.user_files() == 0);
 }
 
 }  // namespace
@@ -155,13 +168,25 @@ TEST_CASE("cli input: numbers out of range, nan and inf are named", "[cli][error
       {"vectors " + kPaper + " --bus --feed-rate 100 --clock inf" + dir, "clock = inf is out of range"},
       {"vectors " + kPaper + " --bus --feed-rate -5 --clock 1000" + dir, "feed-rate = -5 is out of range"},
   };
-  for (const auto& [args, want] : cases) {
-    const Result r = run_dda(s, args);
-    INFO("dda " << args << "\nstderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.err.rfind("dda: error: " + want, 0) == 0);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(s.user_files() == 0);
+  for (const auto& [args, want] : cases) expect_refused(s, args, want);
+}
+
+TEST_CASE("cli input: each command's help lists its own options only", "[cli][errors]") {
+  Scratch s;
+  // (command, options its help must list, options it must not)
+  const std::tuple<std::string, std::vector<std::string>, std::vector<std::string>> cases[] = {
+      {"trace", {"--engine", "--vcd", "--out", "--program", "--format"}, {"--out-dir", "--bus", "--summary"}},
+      {"stats", {"--engine", "--program", "(default text)"}, {"--out-dir", "--seed", "--label"}},
+      {"feed", {"--out", "--summary", "(default markdown)"}, {"--engine", "--vcd", "--program", "--machine"}},
+      {"vectors", {"--out-dir", "--bus", "--seed", "--program", "--vcd"}, {"--engine", "--out "}},
+      {"gen-params", {"--kind"}, {"--a ", "--engine"}},
+  };
+  for (const auto& [cmd, has, lacks] : cases) {
+    const Result r = run_dda(s, cmd + " --help");
+    INFO("dda " << cmd << " --help\n" << r.out);
+    CHECK(r.status == 0);
+    for (const std::string& o : has) CHECK(r.out.find(o) != std::string::npos);
+    for (const std::string& o : lacks) CHECK(r.out.find(o) == std::string::npos);
   }
 }
 
@@ -171,16 +196,17 @@ TEST_CASE("cli input: an option that does not apply is refused, not ignored", "[
       {"feed " + kPaper + " --engine rtl", "--engine is invalid with feed"},
       {"feed " + kPaper + " --vcd " + (s.dir / "w.vcd").string(), "--vcd is invalid with feed"},
       {"vectors " + kPaper + " --vcd " + (s.dir / "w.vcd").string() + " --out-dir " + (s.dir / "set").string(),
-       "vectors write --out-dir DIR, not --out (nor --vcd, but with --bus"},
+       "--vcd goes with --bus in vectors"},
+      {"vectors " + kPaper + " --engine rtl --out-dir " + (s.dir / "set").string(),
+       "--engine is invalid with vectors: vectors come from the golden model"},
+      {"vectors " + kPaper + " --out " + (s.dir / "x").string() + " --out-dir " + (s.dir / "set").string(),
+       "--out is invalid with vectors: a vector set is written to --out-dir DIR"},
+      {"feed " + kPaper + " --seed 3", "--seed is invalid with feed (dda feed --help lists its options)"},
+      {"stats " + kPaper + " --no-such-option 1", "option --no-such-option is unknown (dda stats --help"},
+      {"stats " + kPaper + " stray", "'stray' is unexpected: dda stats takes options only"},
       {"stats " + kPaper + " --machine lathe", "--machine, --start and --step go with --program FILE"},
   };
-  for (const auto& [args, want] : cases) {
-    const Result r = run_dda(s, args);
-    INFO("dda " << args << "\nstderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.err.rfind("dda: error: " + want, 0) == 0);
-    CHECK(s.user_files() == 0);
-  }
+  for (const auto& [args, want] : cases) expect_refused(s, args, want);
   // feed writes --out as every other table does.
   const fs::path out = s.dir / "feed.md";
   const Result r = run_dda(s, "feed " + kPaper + " --out " + out.string());
@@ -206,5 +232,41 @@ TEST_CASE("cli input: characters named as characters, and a refused program prin
       CHECK(r.out.empty());
       CHECK(r.err == prog.string() + want);
     }
+  }
+}
+
+TEST_CASE("cli input: a vector set larger than --max-size is refused before it is written", "[cli][errors]") {
+  Scratch s;
+  const std::string set = (s.dir / "set").string();
+  // (arguments, the start of the message)
+  const std::pair<std::string, std::string> cases[] = {
+      // Counting stops at the limit, and the whole is estimated.
+      {"vectors " + kPaper + " --out-dir " + set + " --max-size 100", "the vector set would take about "},
+      {"vectors --a 20000 --b 15000 --out-dir " + set + " --max-size 64K", "the vector set would take about "},
+      {"vectors " + kPaper + " --bus --out-dir " + set + " --max-size 1K", "the vector set would take "},
+      {"vectors " + kPaper + " --out-dir " + set + " --max-size 0", "max-size = '0' is out of range"},
+      {"vectors " + kPaper + " --out-dir " + set + " --max-size 2P", "max-size = '2P' is invalid"},
+      {"vectors " + kPaper + " --out-dir " + set + " --max-size -5", "max-size = '-5' is invalid"},
+  };
+  for (const auto& [args, want] : cases) expect_refused(s, args, want);
+  // Within the limit the set is written, and byte for byte as without one.
+  const std::string other = (s.dir / "other").string();
+  REQUIRE(run_dda(s, "vectors " + kPaper + " --out-dir " + set + " --max-size 1M").status == 0);
+  REQUIRE(run_dda(s, "vectors " + kPaper + " --out-dir " + other).status == 0);
+  // A limit one byte below the set's size: counted to its end, the size is exact. (The
+  // manifest records the command line, so the set is larger by the longer command.)
+  std::uintmax_t size = 0;
+  for (const auto& e : fs::directory_iterator(other)) size += fs::file_size(e.path());
+  const std::string limit = " --max-size " + std::to_string(size - 1), third = (s.dir / "third").string();
+  const Result exact = run_dda(s, "vectors " + kPaper + " --out-dir " + third + limit);
+  const std::uintmax_t want = size + third.size() - other.size() + limit.size();
+  INFO(exact.err);
+  CHECK(exact.status == 2);
+  CHECK(exact.err.find("would take about") == std::string::npos);
+  CHECK(exact.err.find("(" + std::to_string(want) + " bytes)") != std::string::npos);
+  CHECK(!fs::exists(s.dir / "third"));
+  for (const char* f : {"cmds.hex", "cycle_in.hex", "cycle_exp.hex", "cycles.csv", "iter.hex", "iterations.csv"}) {
+    INFO(f);
+    CHECK(slurp(fs::path(set) / f) == slurp(fs::path(other) / f));
   }
 }

@@ -151,3 +151,71 @@ TEST_CASE("properties: iteration bound is not passed by the worst-case shapes", 
     }
   }
 }
+
+namespace {
+
+// Every iteration of a command through next_state(), against the closed-form skip of the
+// iterations without a step (Datapath::skip_quiet): the same registers and the same
+// iteration number at every step, up to `limit` iterations. "" when they agree.
+std::string compare_skip(const Command& cmd, std::uint64_t limit) {
+  RegState slow = initial_regs(cmd), fast = slow;
+  std::uint64_t slow_it = 0, fast_it = 0;
+  while (slow_it < limit) {
+    const StepOut o = next_state(cmd, slow);
+    ++slow_it;
+    if (!o.step_x && !o.step_y) continue;
+    const std::uint64_t q = quiet_iterations(cmd, fast);
+    if (q == kNever) return "the skip found no step at iteration " + std::to_string(slow_it);
+    skip_quiet(fast, q);
+    const StepOut f = next_state(cmd, fast);
+    fast_it += q + 1;
+    if (fast_it != slow_it || !(fast == slow) || f.step_x != o.step_x || f.step_y != o.step_y) {
+      return "the skip's step is at iteration " + std::to_string(fast_it) + ", next_state's at " +
+             std::to_string(slow_it);
+    }
+    if (slow.cnt_x == 0 && slow.cnt_y == 0) return "";
+  }
+  // No step in the rest: the skip must not find one before the limit either.
+  const std::uint64_t q = quiet_iterations(cmd, fast);
+  if (q != kNever && fast_it + q + 1 <= limit) return "the skip finds a step next_state does not";
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("properties: skipping the iterations without a step equals iterating", "[golden][random]") {
+  const std::uint64_t seed = test_seed(20261201);
+  // The planner's commands: every piece of random arcs and lines as programs give them.
+  RandomArcs gen(seed, 2048, 6, ArcKind::Program);
+  int pieces = 0;
+  for (int k = 0; k < 400; ++k) {
+    const auto drawn = gen.next();
+    if (!drawn) continue;
+    for (const Piece& pc : drawn->pieces) {
+      const std::string err = compare_skip(pc.cmd, pc.iteration_bound);
+      if (!err.empty()) FAIL("seed " << seed << ": " << describe(*drawn) << ", piece " << pieces << ": " << err);
+      ++pieces;
+    }
+  }
+  CHECK(pieces > 400);
+  // Commands no planner writes: negative and zero integrands, preloads at or above the
+  // capacity, corrections of either sign, counters that stop one axis early.
+  std::mt19937_64 rng(seed);
+  const auto in = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
+  for (int k = 0; k < 20000; ++k) {
+    Command c;
+    c.cap = in(1, 1 << 12);
+    c.jv_x = in(-c.cap / 4, c.cap);
+    c.jv_y = in(-c.cap / 4, c.cap);
+    c.jr_x = in(0, c.cap + c.cap / 8);
+    c.jr_y = in(0, c.cap + c.cap / 8);
+    c.cnt_x = in(0, 40);
+    c.cnt_y = in(0, 40);
+    c.inc_x_on_x = in(-3, 3), c.inc_x_on_y = in(-40, 40);
+    c.inc_y_on_x = in(-40, 40), c.inc_y_on_y = in(-3, 3);
+    const std::string err = compare_skip(c, 200000);
+    if (!err.empty()) FAIL("seed " << seed << ", command " << k << ": " << err);
+  }
+}

@@ -210,12 +210,9 @@ Point CoreModel::step_of(const Signals& post) {
   return d;
 }
 
-CmdFields command_fields_unchecked(const Command& c) {
-  CmdFields f{};
-  const auto set = [&](std::string_view name, std::int64_t v) {
-    const std::size_t i = hw::field(name);
-    f[i] = mask(v, hw::kCmdFields[i].width);
-  };
+CmdValues command_values(const Command& c) {
+  CmdValues f{};
+  const auto set = [&](std::string_view name, std::int64_t v) { f[hw::field(name)] = v; };
   set("jv_x", c.jv_x);
   set("jv_y", c.jv_y);
   set("jr_x", c.jr_x);
@@ -229,6 +226,13 @@ CmdFields command_fields_unchecked(const Command& c) {
   set("inc_x_on_y", c.inc_x_on_y);
   set("inc_y_on_x", c.inc_y_on_x);
   set("inc_y_on_y", c.inc_y_on_y);
+  return f;
+}
+
+CmdFields command_fields_unchecked(const Command& c) {
+  const CmdValues v = command_values(c);
+  CmdFields f{};
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = mask(v[i], hw::kCmdFields[i].width);
   return f;
 }
 

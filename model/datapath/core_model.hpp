@@ -68,6 +68,12 @@ class CoreModel {
   Signals s_{};
 };
 
+// A golden command's values by field, in kCmdFields order, as the model holds them
+// (signed, unmasked; a direction is kDirNeg or kDirPos): the one mapping of Command's
+// members onto the command word's fields.
+using CmdValues = std::array<std::int64_t, hw::kCmdFields.size()>;
+CmdValues command_values(const Command& c);
+
 // The command word's fields of a golden command (masked; no range check: see
 // hw_command.hpp for the checked packing).
 CmdFields command_fields_unchecked(const Command& c);

@@ -86,6 +86,29 @@ inline bool stalled(const RegState& r) {
   return !x_can && !y_can;
 }
 
+// The iterations before the next one with a step, in closed form. Between steps the
+// integrands and counters hold, so an axis that adds (active, integrand > 0) only grows
+// its accumulator by its integrand, and its first carry comes after
+// ceil((cap - jr) / jv) iterations. kNever: no axis can step (the stall guard's case).
+// quiet_iterations(c, r) calls of next_state() from r step on neither axis, and leave
+// r as skip_quiet(c, r, n) does; a test runs both side by side.
+constexpr std::uint64_t kNever = ~std::uint64_t{0};
+inline std::uint64_t quiet_iterations(const Command& cmd, const RegState& r) {
+  const auto until_carry = [&](bool active, std::int64_t jv, std::int64_t jr) -> std::uint64_t {
+    if (!active || jv < 0) return kNever;
+    if (jr + jv >= cmd.cap) return 0;  // this iteration carries (jv = 0: a preload at or above cap)
+    if (jv == 0) return kNever;
+    return std::uint64_t((cmd.cap - jr + jv - 1) / jv) - 1;
+  };
+  const std::uint64_t x = until_carry(r.cnt_x != 0, r.jv_x, r.jr_x), y = until_carry(r.cnt_y != 0, r.jv_y, r.jr_y);
+  return x < y ? x : y;
+}
+// n iterations without a step (n <= quiet_iterations(cmd, r)).
+inline void skip_quiet(RegState& r, std::uint64_t n) {
+  if (r.cnt_x != 0 && r.jv_x > 0) r.jr_x += std::int64_t(n) * r.jv_x;
+  if (r.cnt_y != 0 && r.jv_y > 0) r.jr_y += std::int64_t(n) * r.jv_y;
+}
+
 // One iteration: the datapath's inputs, intermediate sums and the registers after it.
 struct Iteration {
   std::uint64_t iter = 0;                     // 1-based, counted across the pieces of an arc
@@ -118,6 +141,15 @@ class Datapath {
   void step() {
     const StepOut o = next_state(cmd_, regs_);
     move(o);
+  }
+  // The iterations before the next step, at most `limit` of them, in closed form
+  // (quiet_iterations()): how many ran. The report of a run that looks only at the
+  // iterations with a step, and the planner's reachability check, skip them so.
+  std::uint64_t skip_quiet(std::uint64_t limit) {
+    const std::uint64_t q = quiet_iterations(cmd_, regs_), n = q < limit ? q : limit;
+    dda::skip_quiet(regs_, n);
+    iter_ += n;
+    return n;
   }
 
  private:

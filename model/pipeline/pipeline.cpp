@@ -9,7 +9,8 @@
 
 namespace dda {
 
-GoldenEngine::GoldenEngine(RunSink& sink) : sink_(sink), run_([this](const Iteration& it) { sink_.record(it); }) {}
+GoldenEngine::GoldenEngine(RunSink& sink)
+    : sink_(sink), run_([this](const Iteration& it) { sink_.record(it); }, sink.steps_only()) {}
 
 void GoldenEngine::piece(const Piece& pc) {
   if (run_.pieces() == 0) sink_.initial(initial_regs(pc.cmd));

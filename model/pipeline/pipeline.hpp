@@ -30,6 +30,10 @@ class RunSink {
   virtual void piece(const Piece&) {}
   virtual void record(const Iteration& it) = 0;
   virtual void finish() {}
+  // A report that reads only the records with a step, and counts iterations by the
+  // records' `iter` numbers: the golden engine then skips the iterations without a step
+  // in closed form (Datapath::skip_quiet). The hardware engines give every record.
+  virtual bool steps_only() const { return false; }
 };
 
 // An engine of the stream: pieces in, in path order; records out to the sink it was

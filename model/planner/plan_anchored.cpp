@@ -31,7 +31,7 @@ struct Turn {
 // The four turns of a rotated ellipse, found on the deterministic fixed-point sines (the
 // same on every machine): the sign changes among 1440 samples, each bisected to the
 // micro-degree; a turn's angle is the first micro-degree with the new sign.
-std::vector<Turn> turns_of(const ArcSpec& spec) {
+std::vector<Turn> find_turns(const ArcSpec& spec) {
   constexpr int kSamples = 1440;
   constexpr std::int64_t kStep = kFullTurn / kSamples;
   std::vector<Turn> v;
@@ -50,6 +50,38 @@ std::vector<Turn> turns_of(const ArcSpec& spec) {
       }
       v.push_back(Turn{normalize_udeg(hi), axis});
     }
+  }
+  return v;
+}
+
+// The turns depend only on the semi-axes and the angle (a circle's only on the angle:
+// its tangent is a's multiple of the unit circle's, and only signs are compared), and a
+// program repeats them: the last few are kept.
+std::vector<Turn> turns_of(const ArcSpec& spec) {
+  struct Key {
+    std::int64_t a, b, angle;
+    bool operator==(const Key& o) const { return a == o.a && b == o.b && angle == o.angle; }
+  };
+  struct Kept {
+    Key key;
+    std::vector<Turn> turns;
+  };
+  constexpr std::size_t kKept = 16;
+  thread_local std::vector<Kept> kept;
+  thread_local std::size_t next = 0;
+  const Key key = spec.a == spec.b ? Key{1, 1, spec.angle} : Key{spec.a, spec.b, spec.angle};
+  for (const Kept& k : kept) {
+    if (k.key == key) return k.turns;
+  }
+  ArcSpec unit = spec;
+  unit.a = key.a;
+  unit.b = key.b;
+  std::vector<Turn> v = find_turns(unit);
+  if (kept.size() < kKept) {
+    kept.push_back(Kept{key, v});
+  } else {
+    kept[next] = Kept{key, v};
+    next = (next + 1) % kKept;
   }
   return v;
 }
@@ -389,6 +421,13 @@ struct AnchoredArc {
       if ((r.cnt_x != 0 && std::llabs(r.jv_x) > probe.cap) || (r.cnt_y != 0 && std::llabs(r.jv_y) > probe.cap)) {
         throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
                          pt(dp.pos()) + " exceeds the capacity (use more bits)");
+      }
+      // The position and the registers read above hold until the next step: the
+      // iterations before it run in closed form (at most to the guard), unless the path
+      // has passed the end already, when the next iteration ends the walk.
+      if (!end.reached(rel(dp.pos()))) {
+        const std::uint64_t room = guard - dp.iterations();
+        if (dp.skip_quiet(room) == room) break;
       }
       dp.step();
       if (end.reached(rel(dp.pos()))) break;

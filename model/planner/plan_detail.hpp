@@ -7,11 +7,10 @@
 #include <sstream>
 #include <string>
 
+#include "datapath/rounding.hpp"
 #include "planner/planner.hpp"
 
 namespace dda::detail {
-
-using i128 = __int128;
 
 inline std::string pt(Point p) {
   std::ostringstream s;
@@ -28,14 +27,6 @@ inline std::optional<std::int64_t> checked_mul(std::int64_t a, std::int64_t b) {
   if (__builtin_mul_overflow(a, b, &r)) return std::nullopt;
   return r;
 }
-
-// v / 2^sh rounded to nearest, halves away from zero.
-inline i128 round_shift(i128 v, int sh) {
-  const i128 half = i128(1) << (sh - 1);
-  return v < 0 ? -((-v + half) >> sh) : (v + half) >> sh;
-}
-// num / den rounded to nearest, halves away from zero (den > 0).
-inline i128 round_div(i128 num, i128 den) { return num < 0 ? -((-num + den / 2) / den) : (num + den / 2) / den; }
 
 inline int sign(i128 v) { return (v > 0) - (v < 0); }
 

@@ -3,6 +3,7 @@
 // (plan_quadrant.cpp, plan_rotated.cpp).
 #include "planner/planner.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <tuple>
@@ -101,25 +102,41 @@ i128 quad_form(const Coefficients& k, i128 x, i128 y) { return k.qy * x * x - 2 
 
 }  // namespace
 
-FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) {
-  check_axes_and_center(spec);
-  const SinCos t = sincos_udeg(theta);
-  // Frame point (a cos, b sin) in Q(kTrigFrac) (sub-step geometry: Q(kTrigFrac + sub)).
-  const i128 u = i128(spec.a) * t.c, v = i128(spec.b) * t.s;
-  const int qt = quarter_turns(spec);
-  if (qt >= 0) {  // exact quarter turns
-    i128 x = u, y = v;
-    for (int k = 0; k < qt; ++k) std::tie(x, y) = std::pair<i128, i128>{-y, x};
-    return FixedPoint{std::int64_t(round_shift(x, kTrigFrac - kPosFrac)),
-                      std::int64_t(round_shift(y, kTrigFrac - kPosFrac))};
+namespace {
+
+// theta_ideal()'s arithmetic for one ellipse, checked and set up once: the curve point of
+// the parametric angle whose fixed-point sines are t.
+class CurveFrame {
+ public:
+  explicit CurveFrame(const ArcSpec& spec) : spec_(spec), qt_(quarter_turns(spec)) {
+    check_axes_and_center(spec);
+    if (qt_ < 0) f_ = sincos_udeg(spec.angle), off_ = center_offset(spec);
   }
-  const SinCos f = sincos_udeg(spec.angle);
-  const i128 x = u * f.c - v * f.s, y = u * f.s + v * f.c;  // Q(2 kTrigFrac + sub)
-  // Relative to the lattice centre: the centre's fraction added.
-  const FixedPoint off = center_offset(spec);
-  return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac + spec.sub - kPosFrac)) + off.x,
-                    std::int64_t(round_shift(y, 2 * kTrigFrac + spec.sub - kPosFrac)) + off.y};
-}
+  FixedPoint at(const SinCos& t) const {
+    // Frame point (a cos, b sin) in Q(kTrigFrac) (sub-step geometry: Q(kTrigFrac + sub)).
+    const i128 u = i128(spec_.a) * t.c, v = i128(spec_.b) * t.s;
+    if (qt_ >= 0) {  // exact quarter turns
+      i128 x = u, y = v;
+      for (int k = 0; k < qt_; ++k) std::tie(x, y) = std::pair<i128, i128>{-y, x};
+      return FixedPoint{std::int64_t(round_shift(x, kTrigFrac - kPosFrac)),
+                        std::int64_t(round_shift(y, kTrigFrac - kPosFrac))};
+    }
+    const i128 x = u * f_.c - v * f_.s, y = u * f_.s + v * f_.c;  // Q(2 kTrigFrac + sub)
+    // Relative to the lattice centre: the centre's fraction added.
+    return FixedPoint{std::int64_t(round_shift(x, 2 * kTrigFrac + spec_.sub - kPosFrac)) + off_.x,
+                      std::int64_t(round_shift(y, 2 * kTrigFrac + spec_.sub - kPosFrac)) + off_.y};
+  }
+
+ private:
+  const ArcSpec& spec_;
+  int qt_;
+  SinCos f_{};
+  FixedPoint off_{};
+};
+
+}  // namespace
+
+FixedPoint theta_ideal(const ArcSpec& spec, std::int64_t theta) { return CurveFrame(spec).at(sincos_udeg(theta)); }
 
 namespace {
 
@@ -237,19 +254,33 @@ namespace {
 // The parametric angle (micro-degrees) of the curve point nearest to lattice point q,
 // found with the deterministic fixed-point curve points (the same on every machine): the
 // best of 1440 samples, then a ternary search of the bracket around it to the micro-degree.
+constexpr int kNearestSamples = 1440;
+
+// The sines of the samples, computed once (sincos_udeg is deterministic).
+const std::array<SinCos, kNearestSamples>& nearest_samples() {
+  static const std::array<SinCos, kNearestSamples> table = [] {
+    std::array<SinCos, kNearestSamples> t{};
+    for (int k = 0; k < kNearestSamples; ++k) t[std::size_t(k)] = sincos_udeg(k * (kFullTurn / kNearestSamples));
+    return t;
+  }();
+  return table;
+}
+
 std::int64_t nearest_theta(const ArcSpec& spec, Point q) {
+  const CurveFrame curve(spec);
   const i128 qx = i128(q.x - spec.center.x) << kPosFrac, qy = i128(q.y - spec.center.y) << kPosFrac;
-  const auto d2 = [&](std::int64_t t) {
-    const FixedPoint f = theta_ideal(spec, t);
+  const auto d2_of = [&](const SinCos& t) {
+    const FixedPoint f = curve.at(t);
     const i128 dx = f.x - qx, dy = f.y - qy;
     return dx * dx + dy * dy;
   };
-  constexpr int kSamples = 1440;
-  constexpr std::int64_t kStep = kFullTurn / kSamples;
+  const auto d2 = [&](std::int64_t t) { return d2_of(sincos_udeg(t)); };
+  constexpr std::int64_t kStep = kFullTurn / kNearestSamples;
+  const auto& samples = nearest_samples();
   std::int64_t best = 0;
-  i128 best_d = d2(0);
-  for (int k = 1; k < kSamples; ++k) {
-    const i128 d = d2(k * kStep);
+  i128 best_d = d2_of(samples[0]);
+  for (int k = 1; k < kNearestSamples; ++k) {
+    const i128 d = d2_of(samples[std::size_t(k)]);
     if (d < best_d) best_d = d, best = k * kStep;
   }
   std::int64_t lo = best - kStep, hi = best + kStep;

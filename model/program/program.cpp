@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "datapath/rounding.hpp"
 #include "geometry/fixed_trig.hpp"
 #include "program_detail.hpp"
 #include "program_macro.hpp"
@@ -40,9 +41,7 @@ std::int64_t pow10(int n) {
 
 // a * num / den rounded half away from zero, in 128 bits.
 std::int64_t scale_round(std::int64_t a, std::int64_t num, std::int64_t den) {
-  const __int128 p = static_cast<__int128>(a) * num;
-  const __int128 h = den / 2;
-  return static_cast<std::int64_t>(p >= 0 ? (p + h) / den : -((-p + h) / den));
+  return std::int64_t(round_div(i128(a) * num, den));
 }
 
 double length_mm(Length l) { return double(l) / double(kNmPerMm); }

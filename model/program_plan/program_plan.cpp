@@ -11,6 +11,7 @@
 
 #include "accuracy/accuracy.hpp"
 #include "datapath/hw_command.hpp"
+#include "datapath/rounding.hpp"
 #include "geometry/fixed_trig.hpp"
 #include "geometry/geometry.hpp"
 #include "planner/planner.hpp"
@@ -18,9 +19,6 @@
 namespace dda::program {
 
 namespace {
-
-// v / d rounded to the nearest integer, halves away from zero (d > 0), in 128 bits.
-std::int64_t round_div(__int128 v, __int128 d) { return std::int64_t(v >= 0 ? (v + d / 2) / d : -((-v + d / 2) / d)); }
 
 std::int64_t floor_div(std::int64_t v, std::int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); }
 
@@ -119,8 +117,8 @@ Point2 start_point(Machine m, Length first, Length second) {
   return m == Machine::Lathe ? Point2{second, first / 2} : Point2{first, second};
 }
 
-std::int64_t to_steps(Length v, Length step) { return round_div(v, step); }
-std::int64_t to_sub_steps(Length v, Length step) { return round_div(__int128(v) << kSubBits, step); }
+std::int64_t to_steps(Length v, Length step) { return std::int64_t(round_div(v, step)); }
+std::int64_t to_sub_steps(Length v, Length step) { return std::int64_t(round_div(i128(v) << kSubBits, step)); }
 
 Point on_lattice(Point2 p, Length step) { return Point{to_steps(p.u, step), to_steps(p.v, step)}; }
 
@@ -212,22 +210,40 @@ void check_hardware(const ProgramPlan& pp, const std::string& file) {
   for (const BlockPlan& b : pp.blocks) check_hardware(b, file);
 }
 
-double block_distance(const BlockPlan& b, Length step, double x, double y) {
+BlockDistance::BlockDistance(const BlockPlan& b, Length step) {
   const Move& mv = b.move;
   const double s = double(step);
-  const double px = x, py = y;
   if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
-    const double x0 = double(mv.from.u) / s, y0 = double(mv.from.v) / s;
-    const double ux = double(mv.to.u) / s - x0, uy = double(mv.to.v) / s - y0;
-    const double len2 = ux * ux + uy * uy;
-    const double t = len2 > 0 ? std::clamp(((px - x0) * ux + (py - y0) * uy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(px - (x0 + t * ux), py - (y0 + t * uy));
+    kind_ = Kind::Segment;
+    x0_ = double(mv.from.u) / s, y0_ = double(mv.from.v) / s;
+    ux_ = double(mv.to.u) / s - x0_, uy_ = double(mv.to.v) / s - y0_;
+    len2_ = ux_ * ux_ + uy_ * uy_;
+    return;
   }
-  const double rx = px - double(mv.center.u) / s, ry = py - double(mv.center.v) / s;
-  if (is_arc(mv.kind)) return std::fabs(std::hypot(rx, ry) - double(mv.radius) / s);
-  const auto [u, v] = to_frame(normalize_udeg(mv.q_millideg * 1000), rx, ry);
-  return ellipse_distance(double(mv.a) / s, double(mv.b) / s, u, v);
+  cx_ = double(mv.center.u) / s, cy_ = double(mv.center.v) / s;
+  if (is_arc(mv.kind)) {
+    kind_ = Kind::Circle;
+    r_ = double(mv.radius) / s;
+    return;
+  }
+  kind_ = Kind::Ellipse;
+  a_ = double(mv.a) / s, b_ = double(mv.b) / s;
+  angle_udeg_ = normalize_udeg(mv.q_millideg * 1000);
 }
+
+double BlockDistance::operator()(double x, double y) const {
+  if (kind_ == Kind::Segment) {
+    const double t = len2_ > 0 ? std::clamp(((x - x0_) * ux_ + (y - y0_) * uy_) / len2_, 0.0, 1.0) : 0.0;
+    const double dx = x - (x0_ + t * ux_), dy = y - (y0_ + t * uy_);
+    return std::sqrt(dx * dx + dy * dy);  // (coordinates within 2^40: no overflow to guard)
+  }
+  const double rx = x - cx_, ry = y - cy_;
+  if (kind_ == Kind::Circle) return std::fabs(std::sqrt(rx * rx + ry * ry) - r_);
+  const auto [u, v] = to_frame(angle_udeg_, rx, ry);
+  return ellipse_distance(a_, b_, u, v);
+}
+
+double block_distance(const BlockPlan& b, Length step, double x, double y) { return BlockDistance(b, step)(x, y); }
 
 double block_target(const BlockPlan& b, double from_rounding, Preload preload) {
   if (preload != Preload::Half) return std::numeric_limits<double>::infinity();

@@ -108,6 +108,19 @@ void check_hardware(const BlockPlan& b, const std::string& file);
 // programmed geometry: the segment between its programmed ends, its circle or its
 // ellipse (as programmed, before any rounding).
 double block_distance(const BlockPlan& b, Length step, double x, double y);
+// The same distance with the block's geometry converted to steps once (a report asks it
+// of every point of the block).
+class BlockDistance {
+ public:
+  BlockDistance(const BlockPlan& b, Length step);
+  double operator()(double x, double y) const;
+
+ private:
+  enum class Kind { Segment, Circle, Ellipse } kind_;
+  double x0_ = 0, y0_ = 0, ux_ = 0, uy_ = 0, len2_ = 0;  // segment: start, direction, length^2
+  double cx_ = 0, cy_ = 0, r_ = 0, a_ = 0, b_ = 0;       // circle and ellipse: centre, radius, semi-axes
+  std::int64_t angle_udeg_ = 0;
+};
 
 // A block's accuracy target (steps) against its programmed geometry, with half preload:
 // the targets of docs/results.md (lines 0.5, circles and axis-aligned ellipses up to

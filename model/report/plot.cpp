@@ -94,17 +94,9 @@ void SvgSink::finish() {
   if (plan.line) {
     pic.ideal.push_back({{double(plan.from.x), double(plan.from.y)}, {double(plan.to.x), double(plan.to.y)}});
   } else {
-    const SinCos f = sincos_udeg(plan.spec.angle);
-    const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
-    const double a = a_steps(plan.spec), b = b_steps(plan.spec);
-    const double cx = center_x(plan.spec), cy = center_y(plan.spec);
-    const int n = 4096;
-    std::vector<std::pair<double, double>> line;
-    for (int k = 0; k <= n; ++k) {
-      const double t = 2 * M_PI * k / n, u = a * std::cos(t), v = b * std::sin(t);
-      line.emplace_back(cx + u * c - v * s, cy + u * s + v * c);
-    }
-    pic.ideal.push_back(std::move(line));
+    const EllipseDrawing e{center_x(plan.spec), center_y(plan.spec), a_steps(plan.spec), b_steps(plan.spec),
+                           plan.spec.angle};
+    pic.ideal.push_back(ellipse_points(e, 0, 2 * M_PI, 4096));
   }
   write_svg(os_, pic);
 }

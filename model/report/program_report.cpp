@@ -23,14 +23,15 @@ std::string block_no(const BlockPlan& b) {
 double mean(const BlockStats& s) { return s.points ? s.sum_dev / double(s.points) : 0.0; }
 
 // A record's lattice point as part of its block: a step adds a point of the path.
-void add_record(BlockWindow::Entry& e, const Iteration& it, Length step) {
+// `iterations`: the record's and those without a record before it.
+void add_record(BlockWindow::Entry& e, const Iteration& it, std::uint64_t iterations) {
   BlockStats& s = e.stats;
-  ++s.iterations;
+  s.iterations += iterations;
   s.end = it.pos;
   if (!it.step_x && !it.step_y) return;
   ++s.steps;
   ++s.points;
-  const double d = block_distance(e.block, step, double(it.pos.x), double(it.pos.y));
+  const double d = e.distance(double(it.pos.x), double(it.pos.y));
   s.sum_dev += d;
   if (d > s.max_dev || s.points == 1) s.max_dev = d, s.max_at = it.pos;
 }
@@ -59,11 +60,8 @@ std::vector<std::pair<double, double>> block_geometry(const BlockPlan& b, Length
   while (span <= 0) span += 2 * M_PI;
   if (mv.full) span = 2 * M_PI;
   const int n = std::clamp(int(span / (2 * M_PI) * 2048), 16, 2048);
-  for (int k = 0; k <= n; ++k) {
-    const double t = t0 + (cw ? -1 : 1) * span * k / n, u = A * std::cos(t), v = B * std::sin(t);
-    pts.emplace_back((double(mv.center.u) + u * c - v * sn) / s, (double(mv.center.v) + u * sn + v * c) / s);
-  }
-  return pts;
+  const EllipseDrawing e{double(mv.center.u), double(mv.center.v), A, B, ellipse ? mv.q_millideg * 1000 : 0, s};
+  return ellipse_points(e, t0, (cw ? -1 : 1) * span, n);
 }
 
 }  // namespace
@@ -77,10 +75,8 @@ std::string mm(Length v) {
 }
 
 void BlockWindow::push(const BlockPlan& b) {
-  Entry e;
-  e.block = b;
-  e.stats.end = b.from;
-  held_.push_back(std::move(e));
+  held_.push_back(Entry{b, BlockDistance(b, step_), BlockStats{}});
+  held_.back().stats.end = b.from;
 }
 
 BlockWindow::Entry& BlockWindow::front() {
@@ -93,6 +89,7 @@ BlockStatsSink::BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, 
       lattice_(lattice),
       start_(on_lattice(start, lattice.step)),
       fmt_(fmt),
+      window_(lattice.step),
       targeted_(lattice.preload == Preload::Half),
       prev_rounding_(rounding(start_, start, lattice.step)) {}
 
@@ -129,7 +126,8 @@ void BlockStatsSink::block(const BlockPlan& b) {
 }
 
 void BlockStatsSink::record(const Iteration& it) {
-  add_record(window_.of_piece(it.piece, [&](const BlockWindow::Entry& e) { row(e); }), it, lattice_.step);
+  add_record(window_.of_piece(it.piece, [&](const BlockWindow::Entry& e) { row(e); }), it, it.iter - last_iter_);
+  last_iter_ = it.iter;
 }
 
 void BlockStatsSink::finish() {
@@ -217,7 +215,11 @@ void BlockStatsSink::row(const BlockWindow::Entry& e) {
 }
 
 ProgramSvgSink::ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, std::string title)
-    : os_(os), lattice_(lattice), title_(std::move(title)), start_(on_lattice(start, lattice.step)) {}
+    : os_(os),
+      lattice_(lattice),
+      title_(std::move(title)),
+      window_(lattice.step),
+      start_(on_lattice(start, lattice.step)) {}
 
 void ProgramSvgSink::block(const BlockPlan& b) {
   if (first_) sample_.add(start_, block_distance(b, lattice_.step, double(start_.x), double(start_.y)));
@@ -230,7 +232,7 @@ void ProgramSvgSink::record(const Iteration& it) {
   if (!it.step_x && !it.step_y) return;
   const BlockWindow::Entry& e = window_.of_piece(it.piece, [](const BlockWindow::Entry&) {});
   const bool end = it.pos == e.block.to;
-  sample_.add(it.pos, block_distance(e.block, lattice_.step, double(it.pos.x), double(it.pos.y)), end);
+  sample_.add(it.pos, e.distance(double(it.pos.x), double(it.pos.y)), end);
 }
 
 // The block's programmed geometry, joined to the polyline before it where it goes on

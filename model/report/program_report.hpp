@@ -36,8 +36,10 @@ class BlockWindow {
  public:
   struct Entry {
     BlockPlan block;
+    BlockDistance distance;
     BlockStats stats;
   };
+  explicit BlockWindow(Length step) : step_(step) {}
   void push(const BlockPlan& b);
   // The block of piece `piece`; the blocks before it are handed to `done` first.
   template <typename Done>
@@ -55,6 +57,7 @@ class BlockWindow {
 
  private:
   Entry& front();
+  Length step_;
   std::deque<Entry> held_;
 };
 
@@ -64,6 +67,7 @@ class BlockStatsSink : public RunSink {
   void block(const BlockPlan& b) override;
   void record(const Iteration& it) override;
   void finish() override;
+  bool steps_only() const override { return true; }
 
  private:
   void header();
@@ -76,6 +80,7 @@ class BlockStatsSink : public RunSink {
   BlockWindow window_;
   bool targeted_;
   double prev_rounding_ = 0;
+  std::uint64_t last_iter_ = 0;  // the previous record's `iter`
   // Totals.
   std::uint64_t blocks_ = 0, commands_ = 0, it_sum_ = 0, steps_ = 0, points_ = 0, over_ = 0;
   double worst_ = 0, round_worst_ = 0, dev_sum_ = 0;
@@ -91,6 +96,7 @@ class ProgramSvgSink : public RunSink {
   void block(const BlockPlan& b) override;
   void record(const Iteration& it) override;
   void finish() override;
+  bool steps_only() const override { return true; }
 
  private:
   void geometry(const BlockPlan& b);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report/report.hpp"
 
+#include "datapath/core_model.hpp"
 #include "json_stream.hpp"
 
 #include <fmt/format.h>
@@ -62,19 +63,15 @@ nlohmann::ordered_json command_json(const Piece& sg) {
   g["from"] = {sg.from.x, sg.from.y};
   g["to"] = {sg.to.x, sg.to.y};
   g["quadrant"] = sg.quadrant;
-  g["jv_x"] = c.jv_x;
-  g["jv_y"] = c.jv_y;
-  g["jr_x"] = c.jr_x;
-  g["jr_y"] = c.jr_y;
-  g["cap"] = c.cap;
-  g["cnt_x"] = c.cnt_x;
-  g["cnt_y"] = c.cnt_y;
-  g["dir_x"] = sign(c.dir_x_neg);
-  g["dir_y"] = sign(c.dir_y_neg);
-  g["inc_x_on_x"] = c.inc_x_on_x;
-  g["inc_x_on_y"] = c.inc_x_on_y;
-  g["inc_y_on_x"] = c.inc_y_on_x;
-  g["inc_y_on_y"] = c.inc_y_on_y;
+  const CmdValues v = command_values(c);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string name(hw::kCmdFields[i].name);
+    if (name.rfind("dir_", 0) == 0) {
+      g[name] = sign(v[i] == hw::kDirNeg);
+    } else {
+      g[name] = v[i];
+    }
+  }
   g["iteration_bound"] = sg.iteration_bound;
   return g;
 }
@@ -327,7 +324,7 @@ void StatsSink::point(Point p) {
 }
 
 void StatsSink::record(const Iteration& it) {
-  ++s_.iterations;
+  s_.iterations = it.iter;  // counted across the run, also the iterations without a record
   s_.pulses_x += it.step_x;
   s_.pulses_y += it.step_y;
   if (!it.step_x && !it.step_y) return;

@@ -83,6 +83,7 @@ class PathSink : public RunSink {
   void piece(const Piece&) override { start(); }
   void record(const Iteration& it) override;
   void finish() override;
+  bool steps_only() const override { return true; }
 
  private:
   void start();
@@ -100,6 +101,7 @@ class StatsSink : public RunSink {
   explicit StatsSink(const Plan& plan, std::ostream* os = nullptr, StatsFormat fmt = StatsFormat::Text);
   void record(const Iteration& it) override;
   void finish() override;
+  bool steps_only() const override { return true; }
   const Stats& stats();
 
  private:
@@ -145,6 +147,7 @@ class SvgSink : public RunSink {
   SvgSink(std::ostream& os, const Plan& plan, std::string title);
   void record(const Iteration& it) override;
   void finish() override;
+  bool steps_only() const override { return true; }
 
  private:
   std::ostream& os_;

@@ -34,7 +34,18 @@ struct PieceRun {
 // The guards before an iteration: an active axis' integrand must stay within
 // [-cap, cap] (above cap an accumulator could carry twice in one iteration; the planner
 // refuses such an arc), the path must not stall, and the piece must not pass its bound.
+[[noreturn]] void guard_failed(const PieceRun& r, const Datapath& dp, bool for_validation);
+
 void check_guards(const PieceRun& r, const Datapath& dp, bool for_validation) {
+  const auto& rg = dp.regs();
+  const std::int64_t cap = r.pc.cmd.cap;
+  const bool wide_x = rg.cnt_x != 0 && (rg.jv_x < -cap || rg.jv_x > cap);
+  const bool wide_y = rg.cnt_y != 0 && (rg.jv_y < -cap || rg.jv_y > cap);
+  if (wide_x || wide_y || dp.stalled() || dp.iterations() >= r.pc.iteration_bound) guard_failed(r, dp, for_validation);
+}
+
+// Which guard failed, in the order check_guards() names them, and why.
+void guard_failed(const PieceRun& r, const Datapath& dp, bool for_validation) {
   const Piece& pc = r.pc;
   const auto& rg = dp.regs();
   const auto ends = [&] { return "end point " + pt(r.to) + " is unreachable from " + pt(r.from); };
@@ -55,22 +66,37 @@ void check_guards(const PieceRun& r, const Datapath& dp, bool for_validation) {
       << " step(s) still owed (the DDA would never finish)";
     fail(for_validation, "stall guard", m.str());
   }
-  if (dp.iterations() >= pc.iteration_bound) {
-    // While planning, a piece that passes its bound does not reach its end: the input's
-    // fault (the planner then tries another way, or refuses it); while running, a guard.
-    std::ostringstream m;
-    m << "the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound << " iterations";
-    if (for_validation) throw InputError(ends() + ": " + m.str());
-    throw GuardError("iteration guard: " + m.str());
-  }
+  // Else the bound. While planning, a piece that passes its bound does not reach its
+  // end: the input's fault (the planner then tries another way, or refuses it); while
+  // running, a guard.
+  std::ostringstream m;
+  m << "the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound << " iterations";
+  if (for_validation) throw InputError(ends() + ": " + m.str());
+  throw GuardError("iteration guard: " + m.str());
 }
 
-RunSummary run_piece(const PieceRun& r, const RecordFn* on_iter, bool for_validation) {
+// How a piece runs: every iteration a record (`every`), or only those with a step (the
+// ones without skipped in closed form, Datapath::skip_quiet), with records or without.
+struct RunMode {
+  const RecordFn* on_iter = nullptr;
+  bool every = true;
+  bool for_validation = false;
+};
+
+RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
   const Piece& pc = r.pc;
+  const bool for_validation = mode.for_validation;
+  const RecordFn* on_iter = mode.on_iter && *mode.on_iter ? mode.on_iter : nullptr;
   Datapath dp(pc.cmd, pc.from);
   while (!dp.done()) {
     check_guards(r, dp, for_validation);
-    if (!on_iter || !*on_iter) {
+    if (!on_iter || !mode.every) {
+      // The guards hold through the iterations without a step (they read the integrands
+      // and counters, which hold): only the bound can end them, and it is checked again.
+      const std::uint64_t room = pc.iteration_bound - dp.iterations();
+      if (dp.skip_quiet(room) == room) check_guards(r, dp, for_validation);
+    }
+    if (!on_iter) {
       dp.step();
       continue;
     }
@@ -97,12 +123,12 @@ void add(RunSummary& total, const RunSummary& r) {
   total.final_regs = r.final_regs;
 }
 
-RunSummary run_impl(const Plan& plan, const RecordFn* on_iter, bool for_validation) {
+RunSummary run_impl(const Plan& plan, const RunMode& mode) {
   RunSummary total;
   for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
     const Command* next = k + 1 < plan.pieces.size() ? &plan.pieces[k + 1].cmd : nullptr;
     const PieceRun r{plan.pieces[k], static_cast<std::uint32_t>(k), total.iterations, plan.from, plan.to, next};
-    add(total, run_piece(r, on_iter, for_validation));
+    add(total, run_piece(r, mode));
   }
   return total;
 }
@@ -112,7 +138,7 @@ RunSummary run_impl(const Plan& plan, const RecordFn* on_iter, bool for_validati
 void GoldenRun::run_pending(const Command* next) {
   const Piece& pc = *pending_;
   const PieceRun r{pc, static_cast<std::uint32_t>(pieces_ - 1), total_.iterations, pc.from, pc.to, next};
-  add(total_, run_piece(r, &on_iter_, false));
+  add(total_, run_piece(r, RunMode{&on_iter_, every_, false}));
 }
 
 void GoldenRun::piece(const Piece& pc) {
@@ -127,7 +153,7 @@ RunSummary GoldenRun::finish() {
   return total_;
 }
 
-RunSummary run(const Plan& plan, const RecordFn& on_iter) { return run_impl(plan, &on_iter, false); }
+RunSummary run(const Plan& plan, const RecordFn& on_iter) { return run_impl(plan, RunMode{&on_iter, true, false}); }
 
 std::vector<Iteration> run_records(const Plan& plan) {
   std::vector<Iteration> v;
@@ -135,6 +161,6 @@ std::vector<Iteration> run_records(const Plan& plan) {
   return v;
 }
 
-void check_reachable(const Plan& plan) { run_impl(plan, nullptr, /*for_validation=*/true); }
+void check_reachable(const Plan& plan) { run_impl(plan, RunMode{nullptr, false, /*for_validation=*/true}); }
 
 }  // namespace dda

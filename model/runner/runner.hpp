@@ -27,7 +27,10 @@ using RecordFn = std::function<void(const Iteration&)>;
 // if a piece passes its iteration bound, stalls, or ends anywhere but its end point.
 class GoldenRun {
  public:
-  explicit GoldenRun(RecordFn on_iter = {}) : on_iter_(std::move(on_iter)) {}
+  // steps_only: records only for the iterations with a step (their `iter` numbers count
+  // the others, which are skipped in closed form: Datapath::skip_quiet).
+  explicit GoldenRun(RecordFn on_iter = {}, bool steps_only = false)
+      : on_iter_(std::move(on_iter)), every_(!steps_only) {}
   void piece(const Piece& pc);
   RunSummary finish();
   std::uint64_t pieces() const { return pieces_; }
@@ -35,6 +38,7 @@ class GoldenRun {
  private:
   void run_pending(const Command* next);
   RecordFn on_iter_;
+  bool every_;
   std::optional<Piece> pending_;
   std::uint64_t pieces_ = 0;
   RunSummary total_;

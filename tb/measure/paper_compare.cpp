@@ -99,15 +99,9 @@ Measure measure(const std::string& file, const std::string& name) {
   return m;
 }
 
+// The paper's ellipse from parametric angle t0 to t1 (degrees).
 std::vector<std::pair<double, double>> ideal_arc(double t0, double t1) {
-  std::vector<std::pair<double, double>> v;
-  const SinCos f = sincos_udeg(kAngle);
-  const double c = std::ldexp(double(f.c), -kTrigFrac), s = std::ldexp(double(f.s), -kTrigFrac);
-  for (int k = 0; k <= 2000; ++k) {
-    const double t = (t0 + (t1 - t0) * k / 2000) * M_PI / 180, u = kA * std::cos(t), w = kB * std::sin(t);
-    v.emplace_back(kCu + u * c - w * s, kCv + u * s + w * c);
-  }
-  return v;
+  return ellipse_points(EllipseDrawing{kCu, kCv, kA, kB, kAngle}, t0 * M_PI / 180, (t1 - t0) * M_PI / 180, 2000);
 }
 
 void picture(const std::string& path, const Measure& native, const Measure& chords, const std::vector<double>& view,
@@ -155,10 +149,7 @@ int main(int argc, char** argv) {
       picture(svg, n, c, {}, "the paper's oblique ellipse: native block (dots) and 304 chords (orange)");
     if (!closeup.empty()) {
       // Around the chord vertex nearest to the ellipse's 100-degree point.
-      const SinCos f = sincos_udeg(kAngle);
-      const double cs = std::ldexp(double(f.c), -kTrigFrac), sn = std::ldexp(double(f.s), -kTrigFrac);
-      const double t = 100 * M_PI / 180, u = kA * std::cos(t), w = kB * std::sin(t);
-      const double x = kCu + u * cs - w * sn, y = kCv + u * sn + w * cs;
+      const auto [x, y] = ideal_arc(100, 100).front();
       picture(closeup, n, c, {x - 12, y - 12, x + 12, y + 12}, "close-up at the 100-degree point (24 x 24 steps)");
     }
   } catch (const std::exception& e) {

@@ -11,9 +11,9 @@
 
 #include "planner/plan.hpp"
 
-namespace dda::cli {
+namespace dda {
 
 // One row per piece and a row for the arc (summary: the arc's row only, labelled).
 void write_feed_report(std::ostream& os, const Plan& plan, bool summary, const std::string& label);
 
-}  // namespace dda::cli
+}  // namespace dda

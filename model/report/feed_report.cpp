@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "feed_report.hpp"
+#include "report/feed_report.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "motion/feed.hpp"
 
-namespace dda::cli {
+namespace dda {
 
 namespace {
 
@@ -62,4 +62,4 @@ void write_feed_report(std::ostream& os, const Plan& plan, bool summary, const s
   }
 }
 
-}  // namespace dda::cli
+}  // namespace dda
