@@ -30,7 +30,14 @@ int bench_main(CoreHarness* h, int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     std::uint64_t n = 0;
     if (!h) {
-      n = run(plan).iterations;
+      // The datapath's bare rate: every iteration through next_state() (Datapath::step),
+      // no record, no guard, none skipped (run() without a record skips the iterations
+      // without a step: not what this measures).
+      for (const Piece& pc : plan.pieces) {
+        Datapath dp(pc.cmd, pc.from);
+        while (!dp.done()) dp.step();
+        n += dp.iterations();
+      }
     } else {
       h->disable_checking();  // the engine alone: no reference model beside it
       reset_core(*h);

@@ -100,7 +100,10 @@ inline std::uint64_t quiet_iterations(const Command& cmd, const RegState& r) {
     if (jv == 0) return kNever;
     return std::uint64_t((cmd.cap - jr + jv - 1) / jv) - 1;
   };
-  const std::uint64_t x = until_carry(r.cnt_x != 0, r.jv_x, r.jr_x), y = until_carry(r.cnt_y != 0, r.jv_y, r.jr_y);
+  // (An axis that carries on the next iteration decides without a division.)
+  const std::uint64_t x = until_carry(r.cnt_x != 0, r.jv_x, r.jr_x);
+  if (x == 0) return 0;
+  const std::uint64_t y = until_carry(r.cnt_y != 0, r.jv_y, r.jr_y);
   return x < y ? x : y;
 }
 // n iterations without a step (n <= quiet_iterations(cmd, r)).

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -266,6 +267,42 @@ const std::array<SinCos, kNearestSamples>& nearest_samples() {
   return table;
 }
 
+// The first of the samples whose exact squared distance d2_of() is the least, without
+// computing every one: the samples come in blocks of kBlock, and a block's samples are
+// computed only if the block can hold the least. Along the curve a sample is at most
+// L = R * 2 pi / kNearestSamples from the next (R the larger semi-axis in Q(kPosFrac)
+// units, plus the fixed-point curve's rounding), so a block's distances lie within
+// (kBlock - 1) L of its first sample's; a block whose first sample is farther than that
+// beyond the nearest first sample holds none as near as that one, and is skipped. (The
+// square roots in double are off by far less than the margins.)
+template <typename D2>
+int nearest_sample(const ArcSpec& spec, const D2& d2_of) {
+  constexpr int kBlock = 8, kBlocks = kNearestSamples / kBlock;
+  static_assert(kNearestSamples % kBlock == 0, "whole blocks");
+  const auto& samples = nearest_samples();
+  const double r = std::ldexp(double(std::max(spec.a, spec.b)), kPosFrac - spec.sub);
+  const double reach = (kBlock - 1) * (r * 2 * M_PI / kNearestSamples * (1 + 1e-6) + r * 1e-8 + 4);
+  const auto dist = [](i128 d2) { return std::sqrt(double(d2)); };
+  std::array<i128, kBlocks> first{};
+  double nearest_first = std::numeric_limits<double>::infinity();
+  for (int b = 0; b < kBlocks; ++b) {
+    first[std::size_t(b)] = d2_of(samples[std::size_t(b * kBlock)]);
+    nearest_first = std::min(nearest_first, dist(first[std::size_t(b)]));
+  }
+  const double margin = nearest_first * 1e-12 + 1;
+  int best = 0;
+  i128 best_d = first[0];
+  for (int b = 0; b < kBlocks; ++b) {
+    const double d = dist(first[std::size_t(b)]);
+    if (d - d * 1e-12 - reach - 1 > nearest_first + margin) continue;
+    for (int k = b * kBlock; k < (b + 1) * kBlock; ++k) {
+      const i128 dk = k == b * kBlock ? first[std::size_t(b)] : d2_of(samples[std::size_t(k)]);
+      if (dk < best_d) best_d = dk, best = k;
+    }
+  }
+  return best;
+}
+
 std::int64_t nearest_theta(const ArcSpec& spec, Point q) {
   const CurveFrame curve(spec);
   const i128 qx = i128(q.x - spec.center.x) << kPosFrac, qy = i128(q.y - spec.center.y) << kPosFrac;
@@ -276,13 +313,7 @@ std::int64_t nearest_theta(const ArcSpec& spec, Point q) {
   };
   const auto d2 = [&](std::int64_t t) { return d2_of(sincos_udeg(t)); };
   constexpr std::int64_t kStep = kFullTurn / kNearestSamples;
-  const auto& samples = nearest_samples();
-  std::int64_t best = 0;
-  i128 best_d = d2_of(samples[0]);
-  for (int k = 1; k < kNearestSamples; ++k) {
-    const i128 d = d2_of(samples[std::size_t(k)]);
-    if (d < best_d) best_d = d, best = k * kStep;
-  }
+  const std::int64_t best = kStep * nearest_sample(spec, d2_of);
   std::int64_t lo = best - kStep, hi = best + kStep;
   while (hi - lo > 2) {
     const std::int64_t m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
