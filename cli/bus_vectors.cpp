@@ -177,12 +177,24 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
 
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
   if (plans.empty()) throw InputError("vectors need at least one arc");
+  // The per-cycle files stream into the set's temporary directory; every line of them
+  // has the same length, so the count of cycles is the size: past --max-size the run
+  // stops, and the temporary directory goes with the error (the target is untouched).
+  SetWriter set(opt.out_dir);
+  std::ostream& in_hex = set.open("cycle_in.hex");
+  std::ostream& exp_hex = set.open("cycle_exp.hex");
   motion::ModelTarget t;
-  std::ostringstream in_hex, exp_hex;
   std::uint64_t ncycles = 0;
   const auto inf = bus_input_fields();
   const auto exf = bus_expect_fields();
+  const std::uint64_t line = std::uint64_t((total_width(inf) + 3) / 4 + (total_width(exf) + 3) / 4 + 2);
   t.on_edge = [&](const motion::BlockInputs& in, const motion::MotionModel& m) {
+    if ((ncycles + 1) * line > opt.max_size) {
+      throw InputError(
+          fmt::format("the vector set would take more than --max-size {} ({} bytes) after {} cycles: "
+                      "nothing is written (a larger --max-size writes it)",
+                      size_text(opt.max_size), opt.max_size, ncycles));
+    }
     const motion::BlockOutputs o = m.outputs();
     const auto& r = m.regs();
     in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat}) << '\n';
@@ -224,19 +236,17 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
                 {"cycle_in.hex", "per cycle: the inputs applied before the edge (layout cycle_in)"},
                 {"cycle_exp.hex", "per cycle: the outputs and registers after the edge (layout cycle_exp)"}};
   j["layout"] = {{"cycle_in", field_layout(inf)}, {"cycle_exp", field_layout(exf)}};
-  const std::vector<std::pair<std::string, std::string>> files = {{"counts.hex", fmt::format("{:x}\n", ncycles)},
-                                                                  {"cycle_in.hex", in_hex.str()},
-                                                                  {"cycle_exp.hex", exp_hex.str()},
-                                                                  {"manifest.json", j.dump(1) + "\n"}};
-  std::uint64_t size = 0;
-  for (const auto& [name, text] : files) size += text.size();
+  const std::string counts = fmt::format("{:x}\n", ncycles), manifest = j.dump(1) + "\n";
+  const std::uint64_t size = ncycles * line + counts.size() + manifest.size();
   if (size > opt.max_size) {
     throw InputError(
         fmt::format("the vector set would take {} ({} bytes), more than --max-size {}: nothing is "
                     "written (a larger --max-size writes it)",
                     size_text(size), size, size_text(opt.max_size)));
   }
-  write_set(opt.out_dir, files);
+  set.write("counts.hex", counts);
+  set.write("manifest.json", manifest);
+  set.commit();
 }
 
 }  // namespace dda::vec
