@@ -81,7 +81,7 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, c
   if (uses.engine) sub->add_option("--engine", o.engine, "engine: " + engine_names() + " (default golden)");
   if (uses.format) sub->add_option("--format", o.format, formats + " (default " + default_format + ")");
   if (uses.out) sub->add_option("--out", o.out, "write to FILE (atomically; - or none: standard output)");
-  if (uses.vcd) sub->add_option("--vcd", o.vcd, "write a waveform of the run to FILE (systemc, rtl engines)");
+  if (uses.vcd) sub->add_option("--vcd", o.vcd, uses.vcd_help);
   if (uses.program) add_program_options(sub, o.prog);
 }
 

@@ -36,6 +36,7 @@ struct ArcOptions {
 // those; any other is refused, naming the command).
 struct ArcUses {
   bool engine = true, vcd = true, out = true, format = true, program = true;
+  std::string vcd_help = "write a waveform of the run to FILE (systemc, rtl engines)";
 };
 
 // The arc options on `sub`: the geometry, and the run options `uses` names.

@@ -70,17 +70,21 @@ std::string bus_verilog_fields() {
 void add_bus_options(CLI::App* vectors, BusCli& c) {
   vectors->add_flag("--bus", c.bus, "the motion block's set: Wishbone cycles in, steps and positions out");
   vectors->add_flag("--pipelined", c.pipelined, "with --bus: pipelined Wishbone cycles (default classic)");
-  vectors->add_option("--abort-after", c.abort_after, "with --bus: abort N cycles after the last commit")
+  vectors
+      ->add_option("--abort-after", c.abort_after,
+                   "with --bus: abort N cycles after the last commit (default: none, the queue drains)")
       ->check(CLI::Range(1, 100000000));
   vectors->add_option("--timing", c.timing,
                       "with --bus: STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD in clock cycles, both axes (default 0,0,0,0)");
   vectors->add_option("--timing-x", c.timing_x, "with --bus: X's timings (as --timing)");
   vectors->add_option("--timing-y", c.timing_y, "with --bus: Y's timings (as --timing)");
-  vectors->add_option("--polarity", c.polarity, "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8)")
+  vectors
+      ->add_option("--polarity", c.polarity,
+                   "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8; default 0)")
       ->check(CLI::Range(0, 15));
   vectors
       ->add_option("--feed", c.feed,
-                   "with --bus: every piece's feed increment, iterations per clock x 65536 (0: full rate)")
+                   "with --bus: every piece's feed increment, iterations per clock x 65536 (default 0: full rate)")
       ->check(CLI::Range(0, (1 << motion::kFeedWidth) - 1));
   vectors->add_option("--feed-rate", c.feed_rate,
                       "with --bus: feed in steps per second along the path (needs --clock)");

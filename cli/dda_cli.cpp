@@ -145,6 +145,7 @@ void set_up_vectors(CLI::App* sub, Cli& c) {
   VectorsCli& v = c.vectors;
   ArcUses uses;
   uses.engine = uses.out = false;  // the golden model's, into --out-dir
+  uses.vcd_help = "with --bus: the RTL's waveform through the same cycles, into FILE";
   add_arc_options(sub, v.arc, "hex (with CSV and a JSON manifest)", "hex", uses);
   sub->add_option("--out-dir", v.out_dir, "directory of the vector set (written atomically)");
   sub->add_option("--then", v.then, "\"ARC OPTIONS\" of a further arc run back to back (repeatable)");
@@ -161,7 +162,7 @@ void set_up_feed(CLI::App* sub, Cli& c) {
   uses.engine = uses.vcd = uses.program = false;  // the planner's table of one arc
   add_arc_options(sub, c.feed.arc, "markdown", "markdown", uses);
   sub->add_flag("--summary", c.feed.summary, "one row for the arc (the table of docs/results.md)");
-  sub->add_option("--label", c.feed.label, "the arc's name in the --summary row");
+  sub->add_option("--label", c.feed.label, "the arc's name in the --summary row (default: empty)");
 }
 
 void set_up_plot(CLI::App* sub, Cli& c) { add_arc_options(sub, c.plot, "svg", "svg"); }

@@ -98,12 +98,16 @@ void add_gen_params_options(CLI::App* sub, GenParamsCli& g) {
       "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
       "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
       "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
-      "(docs/dda_motion.gtkw)");
-  sub->add_option("--out", g.out, "write to FILE (atomically) instead of stdout");
+      "(docs/dda_motion.gtkw); default verilog");
+  sub->add_option("--out", g.out, "write to FILE (atomically; - or none: standard output)");
   sub->add_option("--acc-width", g.acc_width,
-                  "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc)")
+                  "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc; "
+                  "default " +
+                      std::to_string(hw::kAccWidth) + ")")
       ->check(CLI::Range(4, hw::kAccWidth));
-  sub->add_option("--cnt-width", g.cnt_width, "--kind verilog, json or registers at another counter width")
+  sub->add_option(
+         "--cnt-width", g.cnt_width,
+         "--kind verilog, json or registers at another counter width (default " + std::to_string(hw::kCntWidth) + ")")
       ->check(CLI::Range(2, hw::kCntWidth));
 }
 
