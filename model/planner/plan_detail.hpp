@@ -6,6 +6,8 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "datapath/rounding.hpp"
 #include "planner/planner.hpp"
@@ -161,5 +163,26 @@ void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::o
 // a full turn.
 void plan_anchored_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::int64_t theta_from,
                           std::int64_t theta_to);
+
+// The tangent of the ideal curve at parametric angle theta, counter-clockwise, in the
+// ellipse's own scale: d/dtheta of R(angle) (a cos theta, b sin theta), Q(2 kTrigFrac).
+std::pair<i128, i128> ideal_tangent(const ArcSpec& spec, std::int64_t theta);
+
+// A turn of the ideal curve: where its tangent is parallel to an axis.
+struct Turn {
+  std::int64_t theta;  // micro-degrees in [0, 360 degrees)
+  char axis;           // 'X': the X component of the tangent changes sign there; 'Y'
+};
+
+// The four turns of a rotated ellipse (plan_turns.cpp), kept for the next arc of the
+// same shape.
+std::vector<Turn> turns_of(const ArcSpec& spec);
+
+// Refuses semi-axes or a centre beyond the planner's limits (InputError).
+void check_axes_and_center(const ArcSpec& spec);
+
+// The parametric angle (micro-degrees) of the curve point nearest to lattice point q
+// (plan_curve.cpp).
+std::int64_t nearest_theta(const ArcSpec& spec, Point q);
 
 }  // namespace dda::detail
