@@ -191,7 +191,11 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   std::uint64_t ncycles = 0;
   const auto inf = bus_input_fields();
   const auto exf = bus_expect_fields();
-  const std::uint64_t line = std::uint64_t((total_width(inf) + 3) / 4 + (total_width(exf) + 3) / 4 + 2);
+  // (A line's length: a word of zeros, as hex_word() writes every word, and its newline.)
+  const auto line_of = [](const std::vector<Field>& f) {
+    return std::uint64_t(hex_word(f, std::vector<std::uint64_t>(f.size(), 0)).size() + 1);
+  };
+  const std::uint64_t line = line_of(inf) + line_of(exf);
   t.on_edge = [&](const motion::BlockInputs& in, const motion::MotionModel& m) {
     if ((ncycles + 1) * line > opt.max_size) {
       throw InputError(

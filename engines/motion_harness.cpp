@@ -115,14 +115,8 @@ void MotionHarness::tick(const BusIn& bus) {
   top_->wb_adr_i = in.bus.adr;
   top_->wb_dat_i = bus.dat;
   top_->wb_sel_i = bus.sel;
-  top_->clk_i = 0;
-  top_->eval();
-  ctx_->timeInc(5);
-  if (vcd_) vcd_->dump(ctx_->time());
-  top_->clk_i = 1;
-  top_->eval();
-  ctx_->timeInc(5);
-  if (vcd_) vcd_->dump(ctx_->time());
+  half_period(*top_, *ctx_, vcd_.get(), false);
+  half_period(*top_, *ctx_, vcd_.get(), true);
   model_.edge(in);
   ++cycle_;
 

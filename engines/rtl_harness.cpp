@@ -51,15 +51,9 @@ bool RtlHarness::cmd_ready() {
 
 bool RtlHarness::edge() {
   // Inputs were set while the clock is low; a 10-unit period, rising edge in the middle.
-  top_->clk_i = 0;
-  top_->eval();
-  const bool ready = top_->cmd_ready_o;
-  ctx_->timeInc(5);
-  if (vcd_) vcd_->dump(ctx_->time());
-  top_->clk_i = 1;
-  top_->eval();
-  ctx_->timeInc(5);
-  if (vcd_) vcd_->dump(ctx_->time());
+  half_period(*top_, *ctx_, vcd_.get(), false);
+  const bool ready = top_->cmd_ready_o;  // (the outputs before the edge)
+  half_period(*top_, *ctx_, vcd_.get(), true);
   return ready;
 }
 

@@ -26,4 +26,15 @@ std::unique_ptr<VerilatedVcdC> open_waveform(Top& top, const VerilatedContext& c
   return vcd;
 }
 
+// Half a clock period of `top`: the clock set to `high`, the model evaluated, 5 time
+// units on, and the waveform (if any) dumped there. Two make the 10-unit period both
+// harnesses run, inputs set while the clock is low, the rising edge in the middle.
+template <typename Top>
+void half_period(Top& top, VerilatedContext& ctx, VerilatedVcdC* vcd, bool high) {
+  top.clk_i = high;
+  top.eval();
+  ctx.timeInc(5);
+  if (vcd) vcd->dump(ctx.time());
+}
+
 }  // namespace dda
