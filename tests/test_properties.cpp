@@ -63,7 +63,7 @@ TEST_CASE("properties: 10,000 random configurations hold every invariant", "[gol
     const auto drawn = gen.next();
     if (!drawn) continue;
     const Plan& plan = *drawn;
-    non_default += !(plan.from == Point{plan.spec.a, 0} && plan.to == Point{0, plan.spec.b});
+    non_default += !(plan.from == Point{plan.arc().spec.a, 0} && plan.to == Point{0, plan.arc().spec.b});
     dev_checked += start_offset(plan) <= 1.0;
     const std::string err = check_run(plan);
     if (!err.empty()) {
@@ -86,12 +86,12 @@ TEST_CASE("properties: 3,000 random whole-ellipse arcs hold every invariant", "[
     if (!drawn) continue;
     const bool dev = start_offset(*drawn) <= 1.0 && std::isfinite(deviation_bound(*drawn));
     dev_checked += dev;
-    rotated += drawn->rotated;
-    rotated_dev += drawn->rotated && dev;
+    rotated += drawn->arc().rotated;
+    rotated_dev += drawn->arc().rotated && dev;
     const std::string err = check_run(*drawn);
     if (!err.empty()) FAIL("seed " << seed << ", case " << checked << ": " << describe(*drawn) << ": " << err);
     multi += drawn->pieces.size() > 1;
-    full += drawn->full;
+    full += drawn->arc().full;
     ++checked;
   }
   INFO("seed " << seed << ", rejected draws " << gen.rejected());

@@ -82,19 +82,19 @@ TEST_CASE("rotated: angles parse exactly and print back", "[golden][rotated]") {
 
 TEST_CASE("rotated: the lathe example's coefficients are pinned", "[golden][rotated][default-widths]") {
   const Plan p = plan_arc(lathe(Preload::Half));
-  REQUIRE(p.rotated);
-  REQUIRE(p.spec.bits == 19);  // smallest valid (15) + 4
+  REQUIRE(p.arc().rotated);
+  REQUIRE(p.arc().spec.bits == 19);  // smallest valid (15) + 4
   // P = cs (a^2 - b^2), Qx = a^2 c^2 + b^2 s^2, Qy = a^2 s^2 + b^2 c^2 times
   // 2^(49 - 19) / (a b), with c = cos 330, s = sin 330 (exactly: P = -sqrt(3)/4 *
   // 4e8, Qx = 5.25e8, Qy = 3.25e8); the pinned integers are those reals rounded, the
   // trigonometry's last-bit rounding does not reach them.
   const long double scale = std::ldexp(1.0L, 30) / (25000.0L * 15000.0L);
-  CHECK(std::fabs((long double)p.coef.p - (-std::sqrt(3.0L) / 4 * 4e8L) * scale) <= 0.5L);
-  CHECK(std::fabs((long double)p.coef.qx - 5.25e8L * scale) <= 0.5L);
-  CHECK(std::fabs((long double)p.coef.qy - 3.25e8L * scale) <= 0.5L);
-  CHECK(p.coef.p == -495940105);   // -sqrt(3) 2^30 / 3.75 = -495940104.90
-  CHECK(p.coef.qx == 1503238554);  // 1.4 * 2^30 = 1503238553.6
-  CHECK(p.coef.qy == 930576247);   // 13/15 * 2^30 = 930576247.47
+  CHECK(std::fabs((long double)p.arc().coef.p - (-std::sqrt(3.0L) / 4 * 4e8L) * scale) <= 0.5L);
+  CHECK(std::fabs((long double)p.arc().coef.qx - 5.25e8L * scale) <= 0.5L);
+  CHECK(std::fabs((long double)p.arc().coef.qy - 3.25e8L * scale) <= 0.5L);
+  CHECK(p.arc().coef.p == -495940105);   // -sqrt(3) 2^30 / 3.75 = -495940104.90
+  CHECK(p.arc().coef.qx == 1503238554);  // 1.4 * 2^30 = 1503238553.6
+  CHECK(p.arc().coef.qy == 930576247);   // 13/15 * 2^30 = 930576247.47
   CHECK(p.pieces.front().cmd.cap == (std::int64_t{1} << kRotCapBits));
 }
 
@@ -113,9 +113,9 @@ TEST_CASE("rotated: the lathe example ends on its end point within a step of the
     });
     CHECK(r.end == p.to);
     // The end lies on the ray from the centre through the ideal point of 136 degrees.
-    const FixedPoint e = theta_ideal(p.spec, 136 * kMicroDeg);
+    const FixedPoint e = theta_ideal(p.arc().spec, 136 * kMicroDeg);
     const long double ex = std::ldexp((long double)e.x, -kPosFrac), ey = std::ldexp((long double)e.y, -kPosFrac);
-    const long double tx = p.to.x - p.spec.center.x, ty = p.to.y - p.spec.center.y;
+    const long double tx = p.to.x - p.arc().spec.center.x, ty = p.to.y - p.arc().spec.center.y;
     CHECK(std::fabs(std::atan2(ty, tx) - std::atan2(ey, ex)) < 1.5L / std::hypot(tx, ty));
     CHECK(worst <= (pre == Preload::Half ? 1.0 : 2.0));
     CHECK(p.pieces.size() >= 2);  // the arc passes the turn where X (the Z axis) reverses
@@ -124,11 +124,11 @@ TEST_CASE("rotated: the lathe example ends on its end point within a step of the
 
 TEST_CASE("rotated: half preload starts on the ideal curve point", "[golden][rotated]") {
   const Plan p = plan_arc(lathe(Preload::Half));
-  const FixedPoint f = theta_ideal(p.spec, 60 * kMicroDeg);
-  CHECK(((p.from.x - p.spec.center.x) << kPosFrac) + p.frac_x == f.x);
-  CHECK(((p.from.y - p.spec.center.y) << kPosFrac) + p.frac_y == f.y);
+  const FixedPoint f = theta_ideal(p.arc().spec, 60 * kMicroDeg);
+  CHECK(((p.from.x - p.arc().spec.center.x) << kPosFrac) + p.arc().frac_x == f.x);
+  CHECK(((p.from.y - p.arc().spec.center.y) << kPosFrac) + p.arc().frac_y == f.y);
   CHECK(start_offset(p) < 1e-6);
-  CHECK(std::llabs(p.frac_x) <= (std::int64_t{1} << (kPosFrac - 1)));
+  CHECK(std::llabs(p.arc().frac_x) <= (std::int64_t{1} << (kPosFrac - 1)));
   const Command& c = p.pieces.front().cmd;
   CHECK(c.jr_x != c.cap / 2);  // the fraction is in the preload
 }
@@ -140,10 +140,10 @@ TEST_CASE("rotated: quarter-turn angles keep the exact integer datapath", "[gold
   s.bits = 4;
   s.angle = 360 * kMicroDeg;  // a full turn is no turn
   const Plan p = plan_arc(s);
-  CHECK_FALSE(p.rotated);
+  CHECK_FALSE(p.arc().rotated);
   CHECK(p.pieces.front().cmd.cap == (std::int64_t{10 * 6} << 4));
   s.angle = 90 * kMicroDeg + 1;  // one micro-degree off: fixed point
-  CHECK(plan_arc(s).rotated);
+  CHECK(plan_arc(s).arc().rotated);
 }
 
 TEST_CASE("parametric ends: the span is judged from the ideal start, not the rounded one", "[golden][rotated]") {
@@ -221,7 +221,7 @@ TEST_CASE("rotated: tips sharper than the lattice are followed, full turns close
         INFO("a " << c.a << " b " << c.b << " angle " << format_degrees(c.angle_udeg) << " preload " << to_string(pre)
                   << " dir " << to_string(dir));
         const Plan p = plan_arc(s);
-        CHECK(p.full);
+        CHECK(p.arc().full);
         double worst = 0;
         std::uint64_t steps = 0, line_steps = 0;
         Point prev = p.from;

@@ -45,7 +45,16 @@ struct RegState {
 };
 
 // The registers right after a command is loaded.
-RegState initial_regs(const Command& c);
+inline RegState initial_regs(const Command& c) {
+  RegState r;
+  r.jv_x = c.jv_x;
+  r.jv_y = c.jv_y;
+  r.jr_x = c.jr_x;
+  r.jr_y = c.jr_y;
+  r.cnt_x = c.cnt_x;
+  r.cnt_y = c.cnt_y;
+  return r;
+}
 
 // What one iteration computes besides the next registers.
 struct StepOut {
@@ -130,7 +139,7 @@ struct Iteration {
 // The datapath running one command: one call of iterate() is one iteration.
 class Datapath {
  public:
-  Datapath(const Command& cmd, Point start);
+  Datapath(const Command& cmd, Point start) : cmd_(cmd), regs_(initial_regs(cmd)), pos_(start) {}
   const RegState& regs() const { return regs_; }
   const Command& command() const { return cmd_; }
   Point pos() const { return pos_; }
@@ -138,7 +147,28 @@ class Datapath {
   bool done() const { return regs_.cnt_x == 0 && regs_.cnt_y == 0; }
   // An active axis whose integrand is 0 and can no longer change: the piece never ends.
   bool stalled() const { return dda::stalled(regs_); }
-  Iteration iterate();
+  Iteration iterate() {
+    Iteration it;
+    it.jv_x = regs_.jv_x;
+    it.jv_y = regs_.jv_y;
+    // (On copies held in registers: the record's copies then read no value just stored.)
+    RegState r = regs_;
+    const StepOut o = next_state(cmd_, r);
+    const Point p = moved(o);
+    regs_ = r;
+    pos_ = p;
+    ++iter_;
+    it.iter = iter_;
+    it.active_x = o.active_x;
+    it.active_y = o.active_y;
+    it.sum_x = o.sum_x;
+    it.sum_y = o.sum_y;
+    it.step_x = o.step_x;
+    it.step_y = o.step_y;
+    it.after = r;
+    it.pos = p;
+    return it;
+  }
   // The same iteration without building its record (the fast path for validation,
   // cross-checks and benchmarks).
   void step() {
@@ -156,6 +186,12 @@ class Datapath {
   }
 
  private:
+  Point moved(const StepOut& o) const {
+    Point p = pos_;
+    if (o.step_x) p.x += cmd_.dir_x_neg ? -1 : 1;
+    if (o.step_y) p.y += cmd_.dir_y_neg ? -1 : 1;
+    return p;
+  }
   void move(const StepOut& o) {
     if (o.step_x) pos_.x += cmd_.dir_x_neg ? -1 : 1;
     if (o.step_y) pos_.y += cmd_.dir_y_neg ? -1 : 1;

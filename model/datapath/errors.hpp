@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace dda {
 
@@ -15,6 +16,13 @@ class InputError : public std::runtime_error {
 class GuardError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// The input's fault as a value, for a caller that may go on: a way of planning that
+// cannot plan the input says why, and its caller either reports it (an InputError with
+// that text) or tries another way.
+struct Refusal {
+  std::string why;
 };
 
 }  // namespace dda

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <variant>
 #include <vector>
 
 #include "datapath/datapath.hpp"
@@ -84,28 +85,50 @@ inline constexpr int kRotCapBits = hw::kAccWidth - 2;
 // Fraction bits of the ideal start point (a parametric angle's point on the curve).
 inline constexpr int kPosFrac = 32;
 
-// A validated arc: resolved points and bits, its pieces, and the guard bound.
-struct Plan {
+// What a plan draws, one of three kinds, each with only the facts that kind has.
+//
+// An ellipse arc: the spec as planned and what the planner derived from it.
+struct ArcGeometry {
   ArcSpec spec;    // with bits resolved
-  Point from, to;  // lattice start and end of the path
   Point arc_from;  // lattice start of the arc proper (after a lead-in line)
   // The start the DDA represents: arc_from + (frac_x, frac_y) / 2^kPosFrac. With half
   // preload and a parametric start it is the ideal curve point (the first piece's
   // accumulator preloads carry the fraction); otherwise 0.
   std::int64_t frac_x = 0, frac_y = 0;
-  bool line = false;            // a straight line (plan_line), not an ellipse arc
-  bool program = false;         // a part program's blocks back to back (program_plan.hpp):
-                                // spec, scale and coef are unused
   bool full = false;            // one full turn: equal lattice ends or equal angles
   bool rotated = false;         // the fixed-point datapath: angle not a multiple of 90
                                 // degrees, or sub-step geometry (spec.sub > 0)
   std::int64_t ax = 0, by = 0;  // quarter turns: semi-axes along X and Y (a, b swapped by
                                 // odd turns); rotated: a and b
-  std::int64_t scale = 1;       // a*b (a line: its capacity): divide register values by it
+  std::int64_t scale = 1;       // a*b: divide register values by it
   Coefficients coef;
+};
+// A straight line between the plan's ends (plan_line).
+struct LineGeometry {
+  Preload preload = Preload::Half;
+};
+// A part program's blocks back to back (program_plan.hpp): each block's own plan holds
+// its geometry.
+struct ProgramGeometry {
+  Preload preload = Preload::Half;
+};
+
+// A validated path: its kind's geometry, its lattice ends, its pieces and the guard
+// bound. A default Plan is a line with no piece (a move shorter than a step).
+struct Plan {
+  std::variant<LineGeometry, ArcGeometry, ProgramGeometry> geometry;
+  Point from, to;  // lattice start and end of the path
   std::vector<Piece> pieces;
   std::uint64_t iteration_bound = 0;  // sum of the pieces' bounds
+
   const Command& cmd() const { return pieces.front().cmd; }
+  bool is_arc() const { return std::holds_alternative<ArcGeometry>(geometry); }
+  bool is_line() const { return std::holds_alternative<LineGeometry>(geometry); }
+  bool is_program() const { return std::holds_alternative<ProgramGeometry>(geometry); }
+  // The arc's geometry (std::bad_variant_access for a line or a program).
+  const ArcGeometry& arc() const { return std::get<ArcGeometry>(geometry); }
+  ArcGeometry& arc() { return std::get<ArcGeometry>(geometry); }
+  Preload preload() const;
 };
 
 }  // namespace dda

@@ -105,11 +105,11 @@ struct AnchoredArc {
 
   AnchoredArc(Plan& plan, const Scaled& scaled, const EndPoint& from, std::int64_t th_from, std::int64_t th_to)
       : p(plan),
-        spec(plan.spec),
+        spec(plan.arc().spec),
         sc(scaled),
         k(scaled.k),
-        D(plan.spec.dir == Direction::Ccw ? 1 : -1),
-        c(plan.spec.center),
+        D(spec.dir == Direction::Ccw ? 1 : -1),
+        c(spec.center),
         theta_from(th_from),
         anchor(from),
         pos(from.lattice) {
@@ -351,12 +351,11 @@ struct AnchoredArc {
                          pt(dp.pos()) + " exceeds the capacity (use more bits)");
       }
       // The position and the registers read above hold until the next step: the
-      // iterations before it run in closed form (at most to the guard), unless the path
-      // has passed the end already, when the next iteration ends the walk.
-      if (!end.reached(rel(dp.pos()))) {
-        const std::uint64_t room = guard - dp.iterations();
-        if (dp.skip_quiet(room) == room) break;
-      }
+      // iterations before it run in closed form (at most to the guard). (The walk
+      // starts short of the end, run_section() checks, and ends at the step that
+      // passes it.)
+      const std::uint64_t room = guard - dp.iterations();
+      if (dp.skip_quiet(room) == room) break;
       dp.step();
       if (end.reached(rel(dp.pos()))) break;
     }

@@ -154,10 +154,14 @@ struct Scaled {
 EndPoint resolve_point(const ArcSpec& spec, const std::optional<Point>& pnt, const std::optional<std::int64_t>& theta,
                        std::int64_t default_theta, const std::optional<Point>& default_pnt);
 
+// The piece planners by the DDA's own path: each adds the arc's pieces to p, or says why
+// it cannot (the caller reports that or plans another way).
 // Quarter turns: pieces meet at the vertices (plan_quadrant.cpp).
-void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray);
+[[nodiscard]] std::optional<Refusal> plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from,
+                                                          std::optional<RayEnd> ray);
 // Other angles: pieces found by running the datapath to each turn (plan_rotated.cpp).
-void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray);
+[[nodiscard]] std::optional<Refusal> plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from,
+                                                         std::optional<RayEnd> ray);
 // Rotated ellipses anchored on the ideal curve at every turn (plan_anchored.cpp): the arc
 // from parametric angle theta_from (its first piece starting at `from`) to theta_to, or
 // a full turn.

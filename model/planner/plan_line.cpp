@@ -66,15 +66,10 @@ Plan plan_line(Point from, Point to, Preload preload) {
                      " steps long: at most 2^30 steps on its longer axis (cut it into several lines)");
   }
   Plan p;
-  p.line = true;
-  p.spec.from = from;
-  p.spec.to = to;
-  p.spec.preload = preload;
-  p.spec.center = from;
-  p.from = p.arc_from = from;
+  p.geometry = LineGeometry{preload};
+  p.from = from;
   p.to = to;
   p.pieces = line_pieces(from, to, preload);
-  p.scale = p.pieces.front().cmd.cap;
   for (const auto& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
   // No run to check reachability: a line's pieces end on their points by construction
   // (one iteration per step of the longer axis; tested against the runner).

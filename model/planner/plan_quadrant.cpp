@@ -35,8 +35,9 @@ bool in_piece(int q, Direction dir, Point s, Point e) {
 // The command of the piece in quadrant q from relative point cur to relative point end,
 // preloaded again (the first piece: with the start's fraction, half preload).
 Command quadrant_command(const Plan& p, std::int64_t cap, const EndPoint& from, int q, Point cur, Point end) {
-  const ArcSpec& spec = p.spec;
-  const std::int64_t ax2 = p.ax * p.ax, by2 = p.by * p.by;
+  const ArcGeometry& g = p.arc();
+  const ArcSpec& spec = g.spec;
+  const std::int64_t ax2 = g.ax * g.ax, by2 = g.by * g.by;
   const int sx = step_sx(q, spec.dir), sy = step_sy(q, spec.dir);
   Command cm;
   cm.cap = cap;
@@ -61,31 +62,33 @@ Command quadrant_command(const Plan& p, std::int64_t cap, const EndPoint& from, 
 // Refuses a piece (from relative point cur to end) whose integrands exceed the capacity.
 // The integrands are largest where |v| and |u| are: at one end of the piece. Each must
 // not exceed cap, or an accumulator could carry twice in one iteration.
-void check_quadrant_capacity(const Plan& p, const Piece& pc, Point cur, Point end) {
-  const std::int64_t ax2 = p.ax * p.ax, by2 = p.by * p.by;
+std::optional<Refusal> check_quadrant_capacity(const ArcGeometry& g, const Piece& pc, Point cur, Point end) {
+  const std::int64_t ax2 = g.ax * g.ax, by2 = g.by * g.by;
   const Command& cm = pc.cmd;
   const std::int64_t jvx_max = ax2 * std::max(std::llabs(cur.y), std::llabs(end.y));
   const std::int64_t jvy_max = by2 * std::max(std::llabs(cur.x), std::llabs(end.x));
   if (jvx_max > cm.cap || jvy_max > cm.cap) {
     const bool xside = jvx_max > cm.cap;
     std::ostringstream m;
-    m << "bits = " << p.spec.bits << " is too small for this arc: the "
+    m << "bits = " << g.spec.bits << " is too small for this arc: the "
       << (xside ? "X integrand (ax/by)*|y-yc|" : "Y integrand (by/ax)*|x-xc|") << " exceeds 2^n between " << pt(pc.from)
       << " and " << pt(pc.to) << " (use more bits)";
-    throw InputError(m.str());
+    return Refusal{m.str()};
   }
+  return std::nullopt;
 }
 
 // The iteration bound of a piece starting at relative point cur (docs/golden-model.md):
 // an active axis whose integrand is not 0 carries at least every K iterations; an axis
-// starting with a zero integrand waits at most one K of the other axis.
-std::uint64_t quadrant_iteration_bound(const Plan& p, const Command& cm, Point cur) {
-  const std::int64_t ax2 = p.ax * p.ax, by2 = p.by * p.by;
+// starting with a zero integrand waits at most one K of the other axis. nullopt: the
+// bound would not fit 64 bits.
+std::optional<std::uint64_t> quadrant_iteration_bound(const ArcGeometry& g, const Command& cm, Point cur) {
+  const std::int64_t ax2 = g.ax * g.ax, by2 = g.by * g.by;
   const std::int64_t kx = ceil_div(cm.cap, ax2), ky = ceil_div(cm.cap, by2);
   const auto tx = checked_mul(cm.cnt_x, kx);
   const auto ty = checked_mul(cm.cnt_y, ky);
   if (!tx || !ty || *tx > (std::int64_t{1} << 60) || *ty > (std::int64_t{1} << 60)) {
-    throw InputError("iteration bound overflows 64 bits for this arc: reduce bits");
+    return std::nullopt;
   }
   const std::int64_t tx_total = *tx + ((cur.y == 0 && cm.cnt_x > 0) ? ky : 0);
   const std::int64_t ty_total = *ty + ((cur.x == 0 && cm.cnt_y > 0) ? kx : 0);
@@ -126,46 +129,51 @@ bool walk_to_vertex(Piece& pc, Point c, Point cur, Point& end, std::optional<Ray
 
 // Quarter turns: cut the arc into monotone pieces at the vertices (lattice points on
 // the curve; docs/golden-model.md, "Pieces"), each preloaded again.
-void plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from, std::optional<RayEnd> ray) {
-  const ArcSpec& spec = p.spec;
+std::optional<Refusal> plan_quadrant_pieces(Plan& p, std::int64_t cap, const EndPoint& from,
+                                            std::optional<RayEnd> ray) {
+  const ArcGeometry& g = p.arc();
+  const ArcSpec& spec = g.spec;
   const Point c = spec.center;
   const auto rel = [&](Point q) { return Point{q.x - c.x, q.y - c.y}; };
   const Point rt = rel(p.to);
   Point cur = rel(p.from);
   if (cur == Point{0, 0}) {
-    throw InputError("from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there");
+    return Refusal{"from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there"};
   }
   int q = start_quadrant(cur.x, cur.y, spec.dir);
   int empty_pieces = 0;
   for (int guard = 0;; ++guard) {
     if (guard > 5) {
-      throw InputError("the DDA cannot reach the end from " + pt(p.from) +
-                       ": its path passed six pieces without crossing the end (the start lies far inside the curve?)");
+      return Refusal{"the DDA cannot reach the end from " + pt(p.from) +
+                     ": its path passed six pieces without crossing the end (the start lies far inside the curve?)"};
     }
-    bool last = !ray && !(p.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
-    Point end = last ? rt : end_vertex(q, spec.dir, p.ax, p.by);
+    bool last = !ray && !(g.full && guard == 0) && in_piece(q, spec.dir, cur, rt);
+    Point end = last ? rt : end_vertex(q, spec.dir, g.ax, g.by);
     if (!last && !in_piece(q, spec.dir, cur, end)) {
-      throw InputError("from point " + pt(p.from) + " lies beyond the vertex " + pt(Point{c.x + end.x, c.y + end.y}) +
-                       " it runs to (" + to_string(spec.dir) + "): a point next to a vertex must lie before it");
+      return Refusal{"from point " + pt(p.from) + " lies beyond the vertex " + pt(Point{c.x + end.x, c.y + end.y}) +
+                     " it runs to (" + to_string(spec.dir) + "): a point next to a vertex must lie before it"};
     }
     Piece pc;
     pc.quadrant = q;
     pc.from = Point{c.x + cur.x, c.y + cur.y};
     pc.to = Point{c.x + end.x, c.y + end.y};
     pc.cmd = quadrant_command(p, cap, from, q, cur, end);
-    check_quadrant_capacity(p, pc, cur, end);
-    pc.iteration_bound = quadrant_iteration_bound(p, pc.cmd, cur);
+    if (auto too_wide = check_quadrant_capacity(g, pc, cur, end)) return too_wide;
+    const std::optional<std::uint64_t> bound = quadrant_iteration_bound(g, pc.cmd, cur);
+    if (!bound) return Refusal{"iteration bound overflows 64 bits for this arc: reduce bits"};
+    pc.iteration_bound = *bound;
     if (!last) last = walk_to_vertex(pc, c, cur, end, ray);
     if (!last && pc.cmd.cnt_x == 0 && pc.cmd.cnt_y == 0) {  // stalled on its first iteration: no piece
       q = next_quadrant(q, spec.dir);
-      if (++empty_pieces > 4)
-        throw InputError("the DDA cannot leave " + pt(Point{c.x + cur.x, c.y + cur.y}) +
-                         ": it stalls in every direction");
+      if (++empty_pieces > 4) {
+        return Refusal{"the DDA cannot leave " + pt(Point{c.x + cur.x, c.y + cur.y}) +
+                       ": it stalls in every direction"};
+      }
       continue;
     }
     p.iteration_bound += pc.iteration_bound;
     p.pieces.push_back(pc);
-    if (last) break;
+    if (last) return std::nullopt;
     cur = end;
     q = next_quadrant(q, spec.dir);
   }

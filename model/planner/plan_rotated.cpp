@@ -31,6 +31,7 @@ constexpr int kMaxRotatedTurns = 64;
 // last one turned, and hands its step directions, preloads and turn to the next.
 struct RotatedWalk {
   Plan& p;
+  const bool full;  // one full turn
   const ArcSpec& spec;
   const Scaled& sc;
   std::optional<RayEnd>& ray;
@@ -47,18 +48,19 @@ struct RotatedWalk {
 
   RotatedWalk(Plan& plan, const Scaled& scaled, const EndPoint& from, std::optional<RayEnd>& ray_end)
       : p(plan),
-        spec(plan.spec),
+        full(plan.arc().full),
+        spec(plan.arc().spec),
         sc(scaled),
         ray(ray_end),
         k(scaled.k),
-        D(plan.spec.dir == Direction::Ccw ? 1 : -1),
-        c(plan.spec.center),
+        D(spec.dir == Direction::Ccw ? 1 : -1),
+        c(spec.center),
         rt{plan.to.x - c.x, plan.to.y - c.y},
-        guard(rotated_piece_guard(plan.spec)),
+        guard(rotated_piece_guard(spec)),
         cur{plan.from.x - c.x, plan.from.y - c.y} {
     sx = sign(tx(cur)), sy = sign(ty(cur));
-    if (sx == 0 && sy == 0) {
-      throw InputError("from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there");
+    if (sx == 0 && sy == 0) {  // only at the centre, which plan_rotated_pieces() refuses
+      throw GuardError("planner fault: the tangent is 0 at " + pt(p.from) + ", not the centre");
     }
     // On a turning line the axis takes the direction its integrand will grow in.
     if (sx == 0) sx = -D * sy;
@@ -90,27 +92,27 @@ struct RotatedWalk {
   // four times a turn; far more means the path lost the curve (a lattice end point was
   // missed) or hops between the turns at a tip sharper than the lattice (radius of
   // curvature min(a,b)^2 / max(a,b) steps).
-  [[noreturn]] void refuse_lost(int piece) const {
+  Refusal lost(int piece) const {
     const std::int64_t mn = std::min(spec.a, spec.b), mx = std::max(spec.a, spec.b);
     std::ostringstream m;
     m.precision(3);
     m << "the DDA cannot follow this rotated ellipse to " << pt(p.to) << ": its path from " << pt(p.from) << " turned "
       << piece << " times without reaching it (tip radius of curvature " << double(mn) * double(mn) / double(mx)
       << " steps: too thin for the lattice at this angle)";
-    throw InputError(m.str());
+    return Refusal{m.str()};
   }
 
-  // The command of the piece starting at cur, counts 0 (set once its run has found its
-  // end); refuses an integrand beyond the capacity.
-  Command piece_command() const {
-    Command cm;
+  // The command of the piece starting at cur (cm), counts 0 (set once its run has found
+  // its end); refuses an integrand beyond the capacity.
+  std::optional<Refusal> piece_command(Command& cm) const {
+    cm = Command{};
     cm.cap = sc.cap;
     cm.dir_x_neg = sx < 0;
     cm.dir_y_neg = sy < 0;
     const i128 jvx = sx * tx(cur), jvy = sy * ty(cur);
     if (jvx < -cm.cap || jvy < -cm.cap || jvx > cm.cap || jvy > cm.cap) {
-      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
-                       pt(abs_pt(cur)) + " exceeds the capacity (use more bits)");
+      return Refusal{"bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                     pt(abs_pt(cur)) + " exceeds the capacity (use more bits)"};
     }
     cm.jv_x = std::int64_t(jvx);
     cm.jv_y = std::int64_t(jvy);
@@ -120,44 +122,49 @@ struct RotatedWalk {
     cm.inc_x_on_y = -D * sx * sy * k.qx;
     cm.inc_y_on_x = D * sx * sy * k.qy;
     cm.inc_y_on_y = -D * k.p;
-    return cm;
+    return std::nullopt;
   }
 
   // Refuses a run that cannot go on: an integrand beyond the capacity, a stall, or more
   // than `guard` iterations without turning (it circles: refused like a thin tip).
-  void check_running(const Command& cm, const Datapath& dp) const {
+  std::optional<Refusal> check_running(const Command& cm, const Datapath& dp) const {
     const RegState& r = dp.regs();
     if (std::max(std::llabs(r.jv_x), std::llabs(r.jv_y)) > cm.cap) {
-      throw InputError("bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
-                       pt(dp.pos()) + " exceeds the capacity (use more bits)");
+      return Refusal{"bits = " + std::to_string(spec.bits) + " is too small for this arc: an integrand at " +
+                     pt(dp.pos()) + " exceeds the capacity (use more bits)"};
     }
     if (dp.stalled()) {
-      throw InputError("the DDA cannot follow this rotated ellipse from " + pt(p.from) + ": it stalls at " +
-                       pt(dp.pos()) + " (both integrands <= 0: the lattice is too coarse for so thin an ellipse)");
+      return Refusal{"the DDA cannot follow this rotated ellipse from " + pt(p.from) + ": it stalls at " +
+                     pt(dp.pos()) + " (both integrands <= 0: the lattice is too coarse for so thin an ellipse)"};
     }
     if (dp.iterations() >= guard) {
-      throw InputError("the DDA cannot follow this rotated ellipse: a piece from " + pt(abs_pt(cur)) + " passed " +
-                       std::to_string(guard) + " iterations (a " + std::to_string(spec.a) + ", b " +
-                       std::to_string(spec.b) + ", angle " + format_degrees(spec.angle) + ", bits " +
-                       std::to_string(spec.bits) + ") without turning");
+      return Refusal{"the DDA cannot follow this rotated ellipse: a piece from " + pt(abs_pt(cur)) + " passed " +
+                     std::to_string(guard) + " iterations (a " + std::to_string(spec.a) + ", b " +
+                     std::to_string(spec.b) + ", angle " + format_degrees(spec.angle) + ", bits " +
+                     std::to_string(spec.bits) + ") without turning"};
     }
+    return std::nullopt;
   }
 
-  // Runs the piece of command cm with unbounded counts to its turn, or (a parametric
-  // end) until the path crosses the ray: then ray_end is set.
-  Datapath run_to_turn(const Command& cm, bool& ray_end) const {
-    Command probe = cm;
-    probe.cnt_x = probe.cnt_y = std::int64_t{1} << 40;
-    Datapath dp(probe, abs_pt(cur));
+  // The datapath that runs the piece of command cm from cur with unbounded counts.
+  Datapath probe(const Command& cm) const {
+    Command unbounded = cm;
+    unbounded.cnt_x = unbounded.cnt_y = std::int64_t{1} << 40;
+    return Datapath(unbounded, abs_pt(cur));
+  }
+
+  // Runs dp (probe(cm)) to the piece's turn, or (a parametric end) until the path
+  // crosses the ray: then ray_end is set.
+  std::optional<Refusal> run_to_turn(const Command& cm, Datapath& dp, bool& ray_end) const {
     while (!turn_x(cm, dp.regs()) && !turn_y(cm, dp.regs())) {
-      check_running(cm, dp);
+      if (auto stuck = check_running(cm, dp)) return stuck;
       dp.step();
       if (ray && ray->crossed(Point{dp.pos().x - c.x, dp.pos().y - c.y})) {
         ray_end = true;
         break;
       }
     }
-    return dp;
+    return std::nullopt;
   }
 
   // Adds the piece of command cm from cur to where its run stopped, `cut` (relative),
@@ -169,7 +176,7 @@ struct RotatedWalk {
       return (v - lo) * s >= 0 && (hi - v) * s >= 0;
     };
     const bool last =
-        ray ? ray_end : !(p.full && first) && between(cur.x, rt.x, cut.x, sx) && between(cur.y, rt.y, cut.y, sy);
+        ray ? ray_end : !(full && first) && between(cur.x, rt.x, cut.x, sx) && between(cur.y, rt.y, cut.y, sy);
     const Point end = last && !ray ? rt : cut;
     cm.cnt_x = std::llabs(end.x - cur.x);
     cm.cnt_y = std::llabs(end.y - cur.y);
@@ -207,16 +214,23 @@ struct RotatedWalk {
 
 }  // namespace
 
-void plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray) {
-  if (p.spec.sub != 0) throw GuardError("planner fault: sub-step geometry goes to the anchored planner");
+std::optional<Refusal> plan_rotated_pieces(Plan& p, const Scaled& sc, const EndPoint& from, std::optional<RayEnd> ray) {
+  const ArcSpec& spec = p.arc().spec;
+  if (spec.sub != 0) throw GuardError("planner fault: sub-step geometry goes to the anchored planner");
+  // The tangent (a non-singular linear map of the position) is 0 only at the centre.
+  if (p.from == spec.center) {
+    return Refusal{"from point " + pt(p.from) + " is the centre of the ellipse: the tangent is 0 there"};
+  }
   RotatedWalk w(p, sc, from, ray);
   for (int piece = 0;; ++piece) {
-    if (piece >= kMaxRotatedTurns) w.refuse_lost(piece);
-    Command cm = w.piece_command();
+    if (piece >= kMaxRotatedTurns) return w.lost(piece);
+    Command cm;
+    if (auto too_wide = w.piece_command(cm)) return too_wide;
     bool ray_end = false;
-    const Datapath dp = w.run_to_turn(cm, ray_end);
+    Datapath dp = w.probe(cm);
+    if (auto stuck = w.run_to_turn(cm, dp, ray_end)) return stuck;
     const Point cut{dp.pos().x - w.c.x, dp.pos().y - w.c.y};
-    if (w.add_piece(cm, cut, ray_end)) break;
+    if (w.add_piece(cm, cut, ray_end)) return std::nullopt;
     w.turn(cm, dp.regs(), cut);
   }
 }

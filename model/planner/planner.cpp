@@ -42,6 +42,12 @@ std::int64_t steps_ceil(const ArcSpec& s, std::int64_t v) {
 }
 const char* to_string(Direction d) { return d == Direction::Ccw ? "ccw" : "cw"; }
 
+Preload Plan::preload() const {
+  if (const auto* a = std::get_if<ArcGeometry>(&geometry)) return a->spec.preload;
+  if (const auto* l = std::get_if<LineGeometry>(&geometry)) return l->preload;
+  return std::get<ProgramGeometry>(geometry).preload;
+}
+
 int smallest_valid_bits(std::int64_t a, std::int64_t b) {
   const std::int64_t m = std::max(a, b);
   int n = 1;
@@ -203,9 +209,9 @@ void resolve_bits(ArcSpec& spec, std::int64_t a, std::int64_t b) {
 // up (kCapLimit); a rotated ellipse, a width whose fixed-point coefficients could move
 // the curve by more than kMaxCoefficientDrift steps, or above kRotCapBits.
 void check_capacity(const Plan& p, std::int64_t a, std::int64_t b) {
-  const ArcSpec& spec = p.spec;
+  const ArcSpec& spec = p.arc().spec;
   const std::int64_t ab = spec.a * spec.b;
-  if (!p.rotated) {
+  if (!p.arc().rotated) {
     const auto cap = checked_mul(ab, std::int64_t{1} << spec.bits);
     if (!cap || *cap >= kCapLimit) {
       throw InputError("capacity 2^" + std::to_string(spec.bits) + " * a * b = 2^" + std::to_string(spec.bits) + " * " +
@@ -223,7 +229,7 @@ void check_capacity(const Plan& p, std::int64_t a, std::int64_t b) {
 // Refuses a lattice start or end (p.from, p.to) that lies more than the tolerance from
 // the ellipse; a parametric end is found by the walk, so it is not checked here.
 void check_end_points(const Plan& p, std::int64_t a, std::int64_t b) {
-  const ArcSpec& spec = p.spec;
+  const ArcSpec& spec = p.arc().spec;
   const Point c = spec.center;
   const double tol =
       (spec.tolerance > 0 ? spec.tolerance : kPointTolerance) + 1e-9 * static_cast<double>(std::max(a, b));
@@ -263,23 +269,30 @@ void check_end_points(const Plan& p, std::int64_t a, std::int64_t b) {
 // end. A full turn closes with a line to its start.
 struct ArcPieces {
   Plan& p;
+  ArcGeometry& g;
   const ArcSpec& spec;
   const Scaled& sc;
   const Point c;
   const Point start, target;  // the path's own ends (target: lattice ends)
   const bool half;
   EndPoint arc_from;  // the arc's own start
+  // The pieces are known to reach their ends: each anchored section's command ran to its
+  // end while it was planned (with the same registers and activity up to its last step,
+  // and its exact iteration count as its bound), and line pieces end on their points by
+  // construction, so no second run checks them.
+  bool run_while_planned = false;
   // Its parametric angle, when a lattice start was mapped to the curve (half preload).
   std::optional<std::int64_t> theta_start;
 
   ArcPieces(Plan& plan, const Scaled& scaled, const EndPoint& from)
       : p(plan),
-        spec(plan.spec),
+        g(plan.arc()),
+        spec(g.spec),
         sc(scaled),
-        c(plan.spec.center),
+        c(g.spec.center),
         start(plan.from),
         target(plan.to),
-        half(plan.spec.preload == Preload::Half),
+        half(g.spec.preload == Preload::Half),
         arc_from(from) {
     if (half && !spec.from_theta) {
       theta_start = nearest_theta(spec, start);
@@ -292,40 +305,37 @@ struct ArcPieces {
   RayEnd ray_to(FixedPoint e) const {
     const Point s0 = arc_from.lattice;
     const FixedPoint rep{((s0.x - c.x) << kPosFrac) + arc_from.fx, ((s0.y - c.y) << kPosFrac) + arc_from.fy};
-    return RayEnd(e, spec.dir, p.full, spec.from_theta ? theta_ideal(spec, *spec.from_theta) : rep,
+    return RayEnd(e, spec.dir, g.full, spec.from_theta ? theta_ideal(spec, *spec.from_theta) : rep,
                   Point{s0.x - c.x, s0.y - c.y}, center_offset(spec));
   }
 
   // The ray through the lattice end's nearest curve point (a full turn: the start's).
   RayEnd end_ray() const {
-    const std::int64_t te = p.full && theta_start ? *theta_start : nearest_theta(spec, target);
+    const std::int64_t te = g.full && theta_start ? *theta_start : nearest_theta(spec, target);
     return ray_to(theta_ideal(spec, te));
   }
 
   // The pieces by the DDA's own turns (plan_rotated.cpp) or at the vertices
-  // (plan_quadrant.cpp), ending at the ray, or with a lattice end at the target.
-  void plan_pieces(std::optional<RayEnd> ray) {
+  // (plan_quadrant.cpp), ending at the ray, or with a lattice end at the target; or why
+  // the path cannot be cut that way.
+  std::optional<Refusal> plan_pieces(std::optional<RayEnd> ray) {
     p.pieces.clear();
     p.iteration_bound = 0;
     p.from = arc_from.lattice;  // the piece planners start at the arc's own start
     p.to = target;
-    if (p.rotated) {
-      detail::plan_rotated_pieces(p, sc, arc_from, ray);
-    } else {
-      detail::plan_quadrant_pieces(p, sc.cap, arc_from, ray);
-    }
+    if (g.rotated) return detail::plan_rotated_pieces(p, sc, arc_from, ray);
+    return detail::plan_quadrant_pieces(p, sc.cap, arc_from, ray);
   }
 
   // Zero preload with a lattice end: the path counts its steps to it, as in the paper,
   // unless it cannot reach it; then it ends at the ray.
-  void plan_counted_or_ray() {
-    try {
-      plan_pieces(std::nullopt);
+  std::optional<Refusal> plan_counted_or_ray() {
+    std::optional<Refusal> counted = plan_pieces(std::nullopt);
+    if (!counted) {
       p.from = start;
-      check_reachable(p);
-    } catch (const InputError&) {
-      plan_pieces(end_ray());
+      counted = unreachable(p);
     }
+    return counted ? plan_pieces(end_ray()) : std::nullopt;
   }
 
   // The pieces anchored on the ideal curve at every turn (plan_anchored.cpp).
@@ -336,8 +346,9 @@ struct ArcPieces {
     const std::int64_t t0 = spec.from_theta ? *spec.from_theta
                             : theta_start   ? *theta_start
                                             : nearest_theta(spec, start);
-    const std::int64_t t1 = spec.to_theta ? *spec.to_theta : p.full ? t0 : nearest_theta(spec, target);
+    const std::int64_t t1 = spec.to_theta ? *spec.to_theta : g.full ? t0 : nearest_theta(spec, target);
     detail::plan_anchored_pieces(p, sc, arc_from, normalize_udeg(t0), normalize_udeg(t1));
+    run_while_planned = true;
   }
 
   // The arc's pieces by the planner that fits the ellipse, its preload and its ends.
@@ -347,29 +358,29 @@ struct ArcPieces {
     // min(a,b)^2 / max(a,b)), are anchored on the ideal curve at every turn.
     const bool quarter_step_tips =
         4 * i128(std::min(spec.a, spec.b)) * std::min(spec.a, spec.b) <= i128(std::max(spec.a, spec.b)) << spec.sub;
-    if (!spec.to_theta && !p.full &&
+    if (!spec.to_theta && !g.full &&
         nearest_theta(spec, target) == (theta_start ? *theta_start : nearest_theta(spec, start))) {
       // Both ends map to the same point of the curve: the arc between them is the line.
       p.pieces = line_pieces(start, target, spec.preload);
-    } else if (p.rotated && (half || quarter_step_tips || spec.sub != 0)) {
+      run_while_planned = true;
+    } else if (g.rotated && (half || quarter_step_tips || spec.sub != 0)) {
       plan_anchored();
-    } else if (p.rotated) {
-      try {  // zero preload: the DDA's own turns (plan_rotated.cpp), unless they lose the curve
-        if (spec.to_theta) {
-          plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
-        } else {
-          plan_counted_or_ray();
-        }
-      } catch (const InputError&) {
-        plan_anchored();
-      }
+    } else if (g.rotated) {
+      // Zero preload: the DDA's own turns (plan_rotated.cpp), unless they lose the curve.
+      const std::optional<Refusal> own =
+          spec.to_theta ? plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta))) : plan_counted_or_ray();
+      if (own) plan_anchored();
     } else if (spec.to_theta) {
-      plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta)));
+      refuse(plan_pieces(ray_to(theta_ideal(spec, *spec.to_theta))));
     } else if (half) {
-      plan_pieces(end_ray());
+      refuse(plan_pieces(end_ray()));
     } else {
-      plan_counted_or_ray();
+      refuse(plan_counted_or_ray());
     }
+  }
+
+  static void refuse(const std::optional<Refusal>& r) {
+    if (r) throw InputError(r->why);
   }
 
   // The lead-in and lead-out lines around the arc's pieces, and the plan's ends, start
@@ -377,7 +388,7 @@ struct ArcPieces {
   void add_lead_lines() {
     const Point arc_start = p.pieces.empty() ? arc_from.lattice : p.pieces.front().from;
     const Point arc_end = p.pieces.empty() ? arc_from.lattice : p.pieces.back().to;
-    const Point end = spec.to_theta && !p.full ? arc_end : p.full && spec.to_theta ? start : target;
+    const Point end = spec.to_theta && !g.full ? arc_end : g.full && spec.to_theta ? start : target;
     if (arc_end != end) {
       for (const Piece& l : line_pieces(arc_end, end, spec.preload)) p.pieces.push_back(l);
     }
@@ -388,9 +399,9 @@ struct ArcPieces {
     if (p.pieces.empty()) throw GuardError("planner fault: the arc from " + pt(start) + " has no piece");
     p.from = start;
     p.to = end;
-    p.arc_from = arc_from.lattice;
-    p.frac_x = arc_from.fx;
-    p.frac_y = arc_from.fy;
+    g.arc_from = arc_from.lattice;
+    g.frac_x = arc_from.fx;
+    g.frac_y = arc_from.fy;
     p.iteration_bound = 0;
     for (const Piece& pc : p.pieces) p.iteration_bound += pc.iteration_bound;
   }
@@ -400,62 +411,66 @@ struct ArcPieces {
 
 Plan plan_arc(const ArcSpec& spec_in) {
   Plan p;
-  p.spec = spec_in;
-  ArcSpec& spec = p.spec;
+  ArcGeometry& g = p.geometry.emplace<ArcGeometry>();
+  g.spec = spec_in;
+  ArcSpec& spec = g.spec;
   spec.angle = normalize_udeg(spec.angle);
   check_axes_and_center(spec);
   const std::int64_t a = steps_ceil(spec, spec.a), b = steps_ceil(spec, spec.b);  // whole steps
   const int qt = quarter_turns(spec);
-  p.rotated = qt < 0;
+  g.rotated = qt < 0;
   resolve_bits(spec, a, b);
   check_capacity(p, a, b);
-  p.scale = spec.a * spec.b;
+  g.scale = spec.a * spec.b;
   const Scaled sc = scaled_coefficients(spec, spec.bits);
-  p.coef = sc.k;
-  p.ax = qt >= 0 && qt % 2 ? spec.b : spec.a;
-  p.by = qt >= 0 && qt % 2 ? spec.a : spec.b;
+  g.coef = sc.k;
+  g.ax = qt >= 0 && qt % 2 ? spec.b : spec.a;
+  g.by = qt >= 0 && qt % 2 ? spec.a : spec.b;
   if (spec.from && spec.from_theta) throw InputError("from and from-theta are both given: choose one");
   if (spec.to && spec.to_theta) throw InputError("to and to-theta are both given: choose one");
   const Point c = spec.center;
   // Defaults: the quadrant-I quarter arc (quarter turns), parametric 0 to 90 (rotated).
-  const auto dflt = [&](Point q) { return p.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
-  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + p.ax, c.y}));
-  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + p.by}));
+  const auto dflt = [&](Point q) { return g.rotated ? std::optional<Point>{} : std::optional<Point>{q}; };
+  const EndPoint from = resolve_point(spec, spec.from, spec.from_theta, 0, dflt(Point{c.x + g.ax, c.y}));
+  const EndPoint to = resolve_point(spec, spec.to, spec.to_theta, kQuarterTurn, dflt(Point{c.x, c.y + g.by}));
   p.from = from.lattice;
   p.to = to.lattice;
-  p.frac_x = from.fx;
-  p.frac_y = from.fy;
+  g.frac_x = from.fx;
+  g.frac_y = from.fy;
   check_end_points(p, a, b);
   // A full turn: equal lattice ends, or equal parametric angles (a parametric end is
   // found by the walk, so its lattice point is not known yet).
-  p.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
+  g.full = spec.to_theta ? spec.from_theta && normalize_udeg(*spec.from_theta) == normalize_udeg(*spec.to_theta)
                          : p.from == p.to;
   ArcPieces pieces(p, sc, from);
   pieces.plan();
   pieces.add_lead_lines();
-  // Reachability: the exact model decides whether every piece ends (no stall).
-  check_reachable(p);
+  // Reachability: the exact model decides whether every piece ends (no stall), unless
+  // the pieces ran to their ends while they were planned.
+  if (!pieces.run_while_planned) check_reachable(p);
   return p;
 }
 
 double plan_distance(const Plan& plan, double x, double y) {
-  if (plan.line) {
+  if (plan.is_program()) throw GuardError("plan_distance: a program's distance is its blocks' (BlockDistance)");
+  if (plan.is_line()) {
     const double x0 = double(plan.from.x), y0 = double(plan.from.y);
     const double ux = double(plan.to.x) - x0, uy = double(plan.to.y) - y0;
     const double t = std::clamp(((x - x0) * ux + (y - y0) * uy) / (ux * ux + uy * uy), 0.0, 1.0);
     return std::hypot(x - (x0 + t * ux), y - (y0 + t * uy));
   }
-  const double rx = x - center_x(plan.spec), ry = y - center_y(plan.spec);
-  if (!plan.rotated) return ellipse_distance(double(plan.ax), double(plan.by), rx, ry);
-  const auto [u, v] = to_frame(plan.spec.angle, rx, ry);
-  return ellipse_distance(a_steps(plan.spec), b_steps(plan.spec), u, v);
+  const ArcGeometry& g = plan.arc();
+  const double rx = x - center_x(g.spec), ry = y - center_y(g.spec);
+  if (!g.rotated) return ellipse_distance(double(g.ax), double(g.by), rx, ry);
+  const auto [u, v] = to_frame(g.spec.angle, rx, ry);
+  return ellipse_distance(a_steps(g.spec), b_steps(g.spec), u, v);
 }
 
 double coefficient_drift_bound(const Plan& plan) {
-  if (quarter_turns(plan.spec) >= 0) return 0.0;
-  const double mx = std::max(a_steps(plan.spec), b_steps(plan.spec)),
-               mn = std::min(a_steps(plan.spec), b_steps(plan.spec));
-  return std::ldexp(mx * mx / mn, plan.spec.bits - kRotCapBits);
+  const ArcSpec& spec = plan.arc().spec;
+  if (quarter_turns(spec) >= 0) return 0.0;
+  const double mx = std::max(a_steps(spec), b_steps(spec)), mn = std::min(a_steps(spec), b_steps(spec));
+  return std::ldexp(mx * mx / mn, spec.bits - kRotCapBits);
 }
 
 }  // namespace dda

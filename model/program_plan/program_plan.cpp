@@ -147,7 +147,8 @@ void BlockPlanner::plan_front() {
   b.from = at_;
   b.to = on_lattice(mv.to, step);
   b.rounding = rounding(b.to, mv.to, step);
-  b.plan.from = b.plan.to = b.plan.arc_from = at_;
+  b.plan.geometry = LineGeometry{opt_.preload};  // no piece unless the move is a step or longer
+  b.plan.from = b.plan.to = at_;
   try {
     if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
       if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
@@ -190,9 +191,9 @@ ProgramPlan plan_program(const Program& prog, const LatticeOptions& opt, const s
   pp.start_rounding = planner.start_rounding();
   for (const Move& mv : prog.moves) planner.move(mv);
   planner.finish();
-  pp.plan.from = pp.plan.arc_from = pp.start;
+  pp.plan.geometry = ProgramGeometry{opt.preload};
+  pp.plan.from = pp.start;
   pp.plan.to = planner.end();
-  pp.plan.program = true;
   return pp;
 }
 
@@ -241,6 +242,26 @@ double BlockDistance::operator()(double x, double y) const {
   if (kind_ == Kind::Circle) return std::fabs(std::sqrt(rx * rx + ry * ry) - r_);
   const auto [u, v] = to_frame(angle_udeg_, rx, ry);
   return ellipse_distance(a_, b_, u, v);
+}
+
+void BlockDistance::operator()(const Point* pts, std::size_t n, double* out) const {
+  if (kind_ == Kind::Segment && len2_ > 0) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = double(pts[k].x), y = double(pts[k].y);
+      double t = ((x - x0_) * ux_ + (y - y0_) * uy_) / len2_;
+      t = t < 0.0 ? 0.0 : t;  // std::clamp(t, 0, 1), as operator() takes it
+      t = 1.0 < t ? 1.0 : t;
+      const double dx = x - (x0_ + t * ux_), dy = y - (y0_ + t * uy_);
+      out[k] = std::sqrt(dx * dx + dy * dy);
+    }
+  } else if (kind_ == Kind::Circle) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const double rx = double(pts[k].x) - cx_, ry = double(pts[k].y) - cy_;
+      out[k] = std::fabs(std::sqrt(rx * rx + ry * ry) - r_);
+    }
+  } else {
+    for (std::size_t k = 0; k < n; ++k) out[k] = (*this)(double(pts[k].x), double(pts[k].y));
+  }
 }
 
 double block_distance(const BlockPlan& b, Length step, double x, double y) { return BlockDistance(b, step)(x, y); }

@@ -91,11 +91,11 @@ void SvgSink::finish() {
   pic.title = title_;
   pic.curve = "the ellipse";
   // The ideal curve: the whole ellipse, sampled finely (a line: the line between its ends).
-  if (plan.line) {
+  if (plan.is_line()) {
     pic.ideal.push_back({{double(plan.from.x), double(plan.from.y)}, {double(plan.to.x), double(plan.to.y)}});
   } else {
-    const EllipseDrawing e{center_x(plan.spec), center_y(plan.spec), a_steps(plan.spec), b_steps(plan.spec),
-                           plan.spec.angle};
+    const ArcSpec& spec = plan.arc().spec;
+    const EllipseDrawing e{center_x(spec), center_y(spec), a_steps(spec), b_steps(spec), spec.angle};
     pic.ideal.push_back(ellipse_points(e, 0, 2 * M_PI, 4096));
   }
   write_svg(os_, pic);

@@ -22,18 +22,20 @@ std::string block_no(const BlockPlan& b) {
 
 double mean(const BlockStats& s) { return s.points ? s.sum_dev / double(s.points) : 0.0; }
 
-// A record's lattice point as part of its block: a step adds a point of the path.
-// `iterations`: the record's and those without a record before it.
-void add_record(BlockWindow::Entry& e, const Iteration& it, std::uint64_t iterations) {
-  BlockStats& s = e.stats;
-  s.iterations += iterations;
-  s.end = it.pos;
-  if (!it.step_x && !it.step_y) return;
-  ++s.steps;
+// p read a word at a time. The engine has just written the record a word at a time, and
+// a copy of both words at once (as the compiler would make it) cannot take them from
+// the pending stores: it waits for them to reach the cache, on every record.
+Point word_by_word(const Point& p) {
+  std::int64_t x = p.x, y = p.y;
+  asm("" : "+r"(x), "+r"(y));  // (keeps the two loads apart; no instruction)
+  return Point{x, y};
+}
+
+// A point of a block's path at distance d from its geometry.
+void add_point(BlockStats& s, Point p, double d) {
   ++s.points;
-  const double d = e.distance(double(it.pos.x), double(it.pos.y));
   s.sum_dev += d;
-  if (d > s.max_dev || s.points == 1) s.max_dev = d, s.max_at = it.pos;
+  if (d > s.max_dev || s.points == 1) s.max_dev = d, s.max_at = p;
 }
 
 // Samples (steps) of a block's programmed geometry from its start to its end.
@@ -125,14 +127,32 @@ void BlockStatsSink::block(const BlockPlan& b) {
   window_.push(b);
 }
 
+// A record's lattice point as part of its block (`iterations`: the record's and those
+// without a record before it); a step adds a point of the path, measured with the
+// block's next batch.
 void BlockStatsSink::record(const Iteration& it) {
-  add_record(window_.of_piece(it.piece, [&](const BlockWindow::Entry& e) { row(e); }), it, it.iter - last_iter_);
+  BlockWindow::Entry& e = window_.of_piece(it.piece, [&](BlockWindow::Entry& done) { row(done); });
+  BlockStats& s = e.stats;
+  s.iterations += it.iter - last_iter_;
   last_iter_ = it.iter;
+  const Point pos = word_by_word(it.pos);
+  s.end = pos;
+  if (!it.step_x && !it.step_y) return;
+  ++s.steps;
+  pending_[pending_n_++] = pos;
+  if (pending_n_ == kMeasureBatch) measure(e);
+}
+
+void BlockStatsSink::measure(BlockWindow::Entry& e) {
+  double d[kMeasureBatch];
+  e.distance(pending_.data(), pending_n_, d);
+  for (std::size_t i = 0; i < pending_n_; ++i) add_point(e.stats, pending_[i], d[i]);
+  pending_n_ = 0;
 }
 
 void BlockStatsSink::finish() {
   header();
-  window_.drain([&](const BlockWindow::Entry& e) { row(e); });
+  window_.drain([&](BlockWindow::Entry& e) { row(e); });
   const double mean_all = points_ ? dev_sum_ / double(points_) : 0.0;
   const std::string verdict = !targeted_   ? "not targeted (zero preload: reported only)"
                               : over_ == 0 ? "every block within its target"
@@ -158,7 +178,9 @@ void BlockStatsSink::finish() {
   }
 }
 
-void BlockStatsSink::row(const BlockWindow::Entry& e) {
+// The row of a block whose records have all passed (its pending points measured first).
+void BlockStatsSink::row(BlockWindow::Entry& e) {
+  measure(e);
   const BlockPlan& b = e.block;
   const BlockStats& st = e.stats;
   // Each block's target (docs/programs.md, "Accuracy"); none with zero preload.

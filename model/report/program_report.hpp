@@ -6,6 +6,7 @@
 // totals, and the picture of the whole path over the programmed geometry.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <ostream>
@@ -71,11 +72,17 @@ class BlockStatsSink : public RunSink {
 
  private:
   void header();
-  void row(const BlockWindow::Entry& e);
+  void measure(BlockWindow::Entry& e);
+  void row(BlockWindow::Entry& e);
   std::ostream& os_;
   LatticeOptions lattice_;
   Point start_;
   BlockStatsFormat fmt_;
+  // The points of the front block whose distance is not measured yet: measured
+  // kMeasureBatch at a time, in their order (the same sums and maxima as one by one).
+  static constexpr std::size_t kMeasureBatch = 256;
+  std::array<Point, kMeasureBatch> pending_;
+  std::size_t pending_n_ = 0;
   bool started_ = false;
   BlockWindow window_;
   bool targeted_;

@@ -76,17 +76,21 @@ nlohmann::ordered_json command_json(const Piece& sg) {
   return g;
 }
 
+// What register values are divided by in a plan's rows: a b for an arc, the capacity
+// for a line (its values are then in steps).
+std::int64_t value_scale(const Plan& plan) { return plan.is_arc() ? plan.arc().scale : plan.cmd().cap; }
+
 }  // namespace
 
 bool paper_columns(const Plan& plan) {
-  return !plan.line && !plan.program && plan.pieces.size() == 1 && plan.spec.center == Point{0, 0} &&
-         plan.cmd().dir_x_neg && !plan.cmd().dir_y_neg;
+  return plan.is_arc() && plan.pieces.size() == 1 && plan.arc().spec.center == Point{0, 0} && plan.cmd().dir_x_neg &&
+         !plan.cmd().dir_y_neg;
 }
 
 TraceSink::TraceSink(std::ostream& os, const Plan& plan, TraceFormat fmt)
     : os_(os),
       plan_(&plan),
-      preload_(plan.spec.preload),
+      preload_(plan.preload()),
       from_(plan.from),
       at_(plan.from),
       fmt_(fmt),
@@ -118,16 +122,16 @@ void TraceSink::header(const RegState& init) {
     // The paper's Table 1 layout: row 0 and every row with a pulse, in paper units.
     if (!p) {
       fmt::print(os_, "program from ({},{}), units: steps (scaled values / each piece's capacity)\n", from_.x, from_.y);
-    } else if (p->line) {
+    } else if (p->is_line()) {
       fmt::print(os_, "line preload={} from ({},{}) to ({},{}), units: steps (scaled values / the capacity {})\n",
-                 to_string(p->spec.preload), p->from.x, p->from.y, p->to.x, p->to.y, p->scale);
+                 to_string(p->preload()), p->from.x, p->from.y, p->to.x, p->to.y, value_scale(*p));
     } else {
+      const ArcSpec& spec = p->arc().spec;
       bool lines = false;
       for (const Piece& pc : p->pieces) lines = lines || pc.kind == PieceKind::Line;
       fmt::print(os_, "a={} b={} n={} preload={} {} from ({},{}) to ({},{}), paper units (scaled values / {}{})\n",
-                 p->spec.a, p->spec.b, p->spec.bits, to_string(p->spec.preload), to_string(p->spec.dir), p->from.x,
-                 p->from.y, p->to.x, p->to.y, p->scale,
-                 lines ? "; rows of line pieces: steps, values / their capacity" : "");
+                 spec.a, spec.b, spec.bits, to_string(spec.preload), to_string(spec.dir), p->from.x, p->from.y, p->to.x,
+                 p->to.y, value_scale(*p), lines ? "; rows of line pieces: steps, values / their capacity" : "");
     }
     table_line(os_, "iter", "JVX", "JRX", "dX", "remX", "JVY", "JRY", "dY", "remY");
     os_ << (paper_ ? "\n" : " seg | dirs |      x |      y |\n");
@@ -137,16 +141,20 @@ void TraceSink::header(const RegState& init) {
     // JSON: the full records, exact scaled integers.
     nlohmann::ordered_json j;
     if (p) {
-      if (p->line) j["line"] = true;
-      j["a"] = p->spec.a;
-      j["b"] = p->spec.b;
-      j["bits"] = p->spec.bits;
-      j["preload"] = to_string(p->spec.preload);
-      j["dir"] = to_string(p->spec.dir);
-      j["center"] = {p->spec.center.x, p->spec.center.y};
+      // A line has the arc's fields too (one shape): a = b = bits = 0, counter-clockwise,
+      // centred on its start.
+      const ArcSpec spec = p->is_arc() ? p->arc().spec : ArcSpec{};
+      if (p->is_line()) j["line"] = true;
+      j["a"] = spec.a;
+      j["b"] = spec.b;
+      j["bits"] = spec.bits;
+      j["preload"] = to_string(p->preload());
+      j["dir"] = to_string(spec.dir);
+      const Point c = p->is_arc() ? spec.center : p->from;
+      j["center"] = {c.x, c.y};
       j["from"] = {p->from.x, p->from.y};
       j["to"] = {p->to.x, p->to.y};
-      j["scale"] = p->scale;
+      j["scale"] = value_scale(*p);
       j["cap"] = p->cmd().cap;
       j["iteration_bound"] = p->iteration_bound;
       auto& pieces = j["segments"] = nlohmann::ordered_json::array();
@@ -210,7 +218,7 @@ void TraceSink::record(const Iteration& it) {
   // A row's scale: the plan's (a b, or a line's capacity), or, for a line piece inside
   // an arc (lead-in, lead-out, closing) or any piece of a program, that piece's
   // capacity: its values are in steps.
-  const std::int64_t rs = pc.kind == PieceKind::Line || !plan_ ? pc.cmd.cap : plan_->scale;
+  const std::int64_t rs = pc.kind == PieceKind::Line || !plan_ ? pc.cmd.cap : value_scale(*plan_);
   if (fmt_ == TraceFormat::Csv) {
     if (paper_) {
       fmt::print(os_, "{},{},{},{:d},{},{},{},{:d},{}\n", r.iter, paper_units(r.jvx, rs), acc_cell(r.ax, r.jrx, rs),
@@ -337,6 +345,13 @@ const Stats& StatsSink::stats() {
   return s_;
 }
 
+namespace {
+
+// The width n of an arc's plan; 0 for a line (its capacity is its longer extent).
+int bits(const Plan& plan) { return plan.is_arc() ? plan.arc().spec.bits : 0; }
+
+}  // namespace
+
 Stats compute_stats(const Plan& plan, const std::vector<Iteration>& iters) {
   StatsSink sink(plan);
   for (const auto& it : iters) sink.record(it);
@@ -349,7 +364,7 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
                s.pulses_x, s.pulses_y, s.points);
     fmt::print(os, "max_dev: {:.6f} at ({},{})\nmean_dev: {:.6f}\n", s.max_dev, s.max_dev_at.x, s.max_dev_at.y,
                s.mean_dev);
-    fmt::print(os, "bits: {}\npreload: {}\n", plan.spec.bits, to_string(plan.spec.preload));
+    fmt::print(os, "bits: {}\npreload: {}\n", bits(plan), to_string(plan.preload()));
     fmt::print(os, "from: ({},{})\nto: ({},{})\npieces: {}\n", plan.from.x, plan.from.y, plan.to.x, plan.to.y,
                plan.pieces.size());
     return;
@@ -363,8 +378,8 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
   j["max_dev"] = s.max_dev;
   j["max_dev_at"] = {s.max_dev_at.x, s.max_dev_at.y};
   j["mean_dev"] = s.mean_dev;
-  j["bits"] = plan.spec.bits;
-  j["preload"] = to_string(plan.spec.preload);
+  j["bits"] = bits(plan);
+  j["preload"] = to_string(plan.preload());
   j["from"] = {plan.from.x, plan.from.y};
   j["to"] = {plan.to.x, plan.to.y};
   j["pieces"] = plan.pieces.size();
@@ -373,28 +388,28 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
 
 std::string describe(const Plan& plan) {
   std::ostringstream s;
-  if (plan.program) {  // a part program's blocks: the program file rebuilds them
+  if (plan.is_program()) {  // a part program's blocks: the program file rebuilds them
     s << "--program (" << plan.pieces.size() << " commands from (" << plan.from.x << ',' << plan.from.y << ") to ("
       << plan.to.x << ',' << plan.to.y << "))";
     return s.str();
   }
-  if (plan.line) {
+  if (plan.is_line()) {
     s << "--line --from " << plan.from.x << ',' << plan.from.y << " --to " << plan.to.x << ',' << plan.to.y
-      << " --preload " << to_string(plan.spec.preload);
+      << " --preload " << to_string(plan.preload());
     return s.str();
   }
-  s << "--a " << plan.spec.a << " --b " << plan.spec.b << " --bits " << plan.spec.bits << " --preload "
-    << to_string(plan.spec.preload);
-  if (plan.spec.center != Point{0, 0}) s << " --center " << plan.spec.center.x << ',' << plan.spec.center.y;
-  if (plan.spec.angle != 0) s << " --angle " << format_degrees(plan.spec.angle);
-  if (plan.spec.dir != Direction::Ccw) s << " --dir cw";
-  if (plan.spec.from_theta) {
-    s << " --from-theta " << format_degrees(*plan.spec.from_theta);
+  const ArcSpec& spec = plan.arc().spec;
+  s << "--a " << spec.a << " --b " << spec.b << " --bits " << spec.bits << " --preload " << to_string(spec.preload);
+  if (spec.center != Point{0, 0}) s << " --center " << spec.center.x << ',' << spec.center.y;
+  if (spec.angle != 0) s << " --angle " << format_degrees(spec.angle);
+  if (spec.dir != Direction::Ccw) s << " --dir cw";
+  if (spec.from_theta) {
+    s << " --from-theta " << format_degrees(*spec.from_theta);
   } else {
     s << " --from " << plan.from.x << ',' << plan.from.y;
   }
-  if (plan.spec.to_theta) {
-    s << " --to-theta " << format_degrees(*plan.spec.to_theta);
+  if (spec.to_theta) {
+    s << " --to-theta " << format_degrees(*spec.to_theta);
   } else {
     s << " --to " << plan.to.x << ',' << plan.to.y;
   }

@@ -26,53 +26,64 @@ struct PieceRun {
   const Command* next;
 };
 
-[[noreturn]] void fail(bool for_validation, const char* guard, const std::string& m) {
-  if (for_validation) throw InputError(m);
-  throw GuardError(std::string(guard) + ": " + m);
-}
-
 // The guards before an iteration: an active axis' integrand must stay within
 // [-cap, cap] (above cap an accumulator could carry twice in one iteration; the planner
 // refuses such an arc), the path must not stall, and the piece must not pass its bound.
-[[noreturn]] void guard_failed(const PieceRun& r, const Datapath& dp, bool for_validation);
-
-void check_guards(const PieceRun& r, const Datapath& dp, bool for_validation) {
+bool guards_hold(const PieceRun& r, const Datapath& dp) {
   const auto& rg = dp.regs();
   const std::int64_t cap = r.pc.cmd.cap;
   const bool wide_x = rg.cnt_x != 0 && (rg.jv_x < -cap || rg.jv_x > cap);
   const bool wide_y = rg.cnt_y != 0 && (rg.jv_y < -cap || rg.jv_y > cap);
-  if (wide_x || wide_y || dp.stalled() || dp.iterations() >= r.pc.iteration_bound) guard_failed(r, dp, for_validation);
+  return !(wide_x || wide_y || dp.stalled() || dp.iterations() >= r.pc.iteration_bound);
 }
 
-// Which guard failed, in the order check_guards() names them, and why.
-void guard_failed(const PieceRun& r, const Datapath& dp, bool for_validation) {
+// A guard that does not hold, in the order guards_hold() reads them, worded twice: for
+// a run (a GuardError: the hardware's or the planner's fault) and for the planner's
+// reachability check (a Refusal: the input's fault, naming the ends).
+struct Tripped {
+  std::string guard;     // "stall guard", ...
+  std::string detail;    // what a run reports after the guard's name
+  std::string as_input;  // what the planner reports
+};
+
+Tripped tripped(const PieceRun& r, const Datapath& dp) {
   const Piece& pc = r.pc;
   const auto& rg = dp.regs();
-  const auto ends = [&] { return "end point " + pt(r.to) + " is unreachable from " + pt(r.from); };
+  const std::string ends = "end point " + pt(r.to) + " is unreachable from " + pt(r.from);
   for (const auto& [axis, active, jv] :
        {std::tuple{'X', rg.cnt_x != 0, rg.jv_x}, std::tuple{'Y', rg.cnt_y != 0, rg.jv_y}}) {
     if (active && (jv < -pc.cmd.cap || jv > pc.cmd.cap)) {
       std::ostringstream m;
-      m << ends() << ": at " << pt(dp.pos()) << " the " << axis << " integrand's magnitude exceeds the capacity with "
+      m << ends << ": at " << pt(dp.pos()) << " the " << axis << " integrand's magnitude exceeds the capacity with "
         << (axis == 'X' ? rg.cnt_x : rg.cnt_y) << ' ' << axis << " step(s) still owed";
-      fail(for_validation, "integrand guard", m.str());
+      return Tripped{"integrand guard", m.str(), m.str()};
     }
   }
   if (dp.stalled()) {
     const char axis = (rg.cnt_y != 0 && rg.jv_y == 0) ? 'Y' : 'X';
     const std::int64_t owed = axis == 'Y' ? rg.cnt_y : rg.cnt_x;
     std::ostringstream m;
-    m << ends() << ": at " << pt(dp.pos()) << " the " << axis << " integrand is 0 with " << owed << ' ' << axis
+    m << ends << ": at " << pt(dp.pos()) << " the " << axis << " integrand is 0 with " << owed << ' ' << axis
       << " step(s) still owed (the DDA would never finish)";
-    fail(for_validation, "stall guard", m.str());
+    return Tripped{"stall guard", m.str(), m.str()};
   }
   // Else the bound. While planning, a piece that passes its bound does not reach its
   // end: the input's fault (the planner then tries another way, or refuses it); while
   // running, a guard.
   std::ostringstream m;
   m << "the piece to " << pt(pc.to) << " reached its bound of " << pc.iteration_bound << " iterations";
-  if (for_validation) throw InputError(ends() + ": " + m.str());
-  throw GuardError("iteration guard: " + m.str());
+  return Tripped{"iteration guard", m.str(), ends + ": " + m.str()};
+}
+
+[[noreturn]] void guard_failed(const PieceRun& r, const Datapath& dp) {
+  const Tripped t = tripped(r, dp);
+  throw GuardError(t.guard + ": " + t.detail);
+}
+
+void check_end(const Piece& pc, const Datapath& dp) {
+  if (dp.pos() != pc.to) {
+    throw GuardError("end-point guard: the counters reached 0 at " + pt(dp.pos()) + " instead of " + pt(pc.to));
+  }
 }
 
 // How a piece runs: every iteration a record (`every`), or only those with a step (the
@@ -80,22 +91,23 @@ void guard_failed(const PieceRun& r, const Datapath& dp, bool for_validation) {
 struct RunMode {
   const RecordFn* on_iter = nullptr;
   bool every = true;
-  bool for_validation = false;
 };
+
+// The guards hold through the iterations without a step (they read the integrands and
+// counters, which hold): only the bound can end them, and it is checked again after.
+// Skips them and says whether the guards still hold.
+bool skip_quiet(const PieceRun& r, Datapath& dp) {
+  const std::uint64_t room = r.pc.iteration_bound - dp.iterations();
+  return dp.skip_quiet(room) != room || guards_hold(r, dp);
+}
 
 RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
   const Piece& pc = r.pc;
-  const bool for_validation = mode.for_validation;
   const RecordFn* on_iter = mode.on_iter && *mode.on_iter ? mode.on_iter : nullptr;
   Datapath dp(pc.cmd, pc.from);
   while (!dp.done()) {
-    check_guards(r, dp, for_validation);
-    if (!on_iter || !mode.every) {
-      // The guards hold through the iterations without a step (they read the integrands
-      // and counters, which hold): only the bound can end them, and it is checked again.
-      const std::uint64_t room = pc.iteration_bound - dp.iterations();
-      if (dp.skip_quiet(room) == room) check_guards(r, dp, for_validation);
-    }
+    if (!guards_hold(r, dp)) guard_failed(r, dp);
+    if ((!on_iter || !mode.every) && !skip_quiet(r, dp)) guard_failed(r, dp);
     if (!on_iter) {
       dp.step();
       continue;
@@ -111,10 +123,19 @@ RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
     it.dir_y_neg = pc.cmd.dir_y_neg;
     (*on_iter)(it);
   }
-  if (dp.pos() != pc.to) {
-    throw GuardError("end-point guard: the counters reached 0 at " + pt(dp.pos()) + " instead of " + pt(pc.to));
-  }
+  check_end(pc, dp);
   return RunSummary{dp.iterations(), dp.pos(), dp.regs()};
+}
+
+// The planner's run of a piece: the same guards, a failure the input's.
+std::optional<Refusal> reach_piece(const PieceRun& r) {
+  Datapath dp(r.pc.cmd, r.pc.from);
+  while (!dp.done()) {
+    if (!guards_hold(r, dp) || !skip_quiet(r, dp)) return Refusal{tripped(r, dp).as_input};
+    dp.step();
+  }
+  check_end(r.pc, dp);
+  return std::nullopt;
 }
 
 void add(RunSummary& total, const RunSummary& r) {
@@ -138,7 +159,7 @@ RunSummary run_impl(const Plan& plan, const RunMode& mode) {
 void GoldenRun::run_pending(const Command* next) {
   const Piece& pc = *pending_;
   const PieceRun r{pc, static_cast<std::uint32_t>(pieces_ - 1), total_.iterations, pc.from, pc.to, next};
-  add(total_, run_piece(r, RunMode{&on_iter_, every_, false}));
+  add(total_, run_piece(r, RunMode{&on_iter_, every_}));
 }
 
 void GoldenRun::piece(const Piece& pc) {
@@ -153,7 +174,7 @@ RunSummary GoldenRun::finish() {
   return total_;
 }
 
-RunSummary run(const Plan& plan, const RecordFn& on_iter) { return run_impl(plan, RunMode{&on_iter, true, false}); }
+RunSummary run(const Plan& plan, const RecordFn& on_iter) { return run_impl(plan, RunMode{&on_iter, true}); }
 
 std::vector<Iteration> run_records(const Plan& plan) {
   std::vector<Iteration> v;
@@ -161,6 +182,16 @@ std::vector<Iteration> run_records(const Plan& plan) {
   return v;
 }
 
-void check_reachable(const Plan& plan) { run_impl(plan, RunMode{nullptr, false, /*for_validation=*/true}); }
+std::optional<Refusal> unreachable(const Plan& plan) {
+  for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
+    const PieceRun r{plan.pieces[k], static_cast<std::uint32_t>(k), 0, plan.from, plan.to, nullptr};
+    if (auto refused = reach_piece(r)) return refused;
+  }
+  return std::nullopt;
+}
+
+void check_reachable(const Plan& plan) {
+  if (const auto refused = unreachable(plan)) throw InputError(refused->why);
+}
 
 }  // namespace dda

@@ -48,8 +48,11 @@ class GoldenRun {
 RunSummary run(const Plan& plan, const RecordFn& on_iter = {});
 std::vector<Iteration> run_records(const Plan& plan);
 
-// The planner's reachability check: the same run, but a stall or an integrand beyond
-// the capacity is the input's fault (InputError naming the point) rather than a guard.
+// The planner's reachability check: the same run, but a stall, an integrand beyond the
+// capacity or a piece past its bound is the input's fault (a Refusal naming the point)
+// rather than a guard. nullopt: every piece reaches its end.
+std::optional<Refusal> unreachable(const Plan& plan);
+// The same, the refusal thrown as an InputError.
 void check_reachable(const Plan& plan);
 
 }  // namespace dda

@@ -141,7 +141,7 @@ void add_arc(Sweep& sw, const DrawnArc& d, const Plan (&plans)[2]) {
     double worst = 0, sum = 0;
     long pts = 0;
     measure(plans[m], worst, sum, pts);
-    const int row = (plans[m].rotated ? 2 : 0) + m;
+    const int row = (plans[m].arc().rotated ? 2 : 0) + m;
     for (const int r : {row, row == 3 && std::max(d.s.a, d.s.b) >= 16 ? 4 : -1}) {
       if (r < 0) continue;
       Acc& a = sw.acc[r][k];

@@ -28,13 +28,14 @@ int main(int argc, char** argv) {
     const auto plan = gen.next();
     if (!plan) continue;
     ++i;
-    const double a = double(plan->spec.a), b = double(plan->spec.b);
+    const ArcSpec& spec = plan->arc().spec;
+    const double a = double(spec.a), b = double(spec.b);
     double worst = 0;
     run(*plan, [&](const Iteration& it) {
       if (it.step_x || it.step_y) worst = std::max(worst, plan_distance(*plan, double(it.pos.x), double(it.pos.y)));
     });
     const double offset = start_offset(*plan);
-    const int k = plan->spec.preload == Preload::Half;
+    const int k = spec.preload == Preload::Half;
     Bin& bin = bins[int(std::floor(std::log2(std::max(a, b))))];
     bin.worst[k] = std::max(bin.worst[k], worst - offset);
     bin.bound[k] = std::min(bin.bound[k], deviation_bound(*plan) - offset);
@@ -59,13 +60,14 @@ int main(int argc, char** argv) {
     const auto plan = whole.next();
     if (!plan) continue;
     ++i;
-    if (!plan->rotated || plan->spec.preload != Preload::Half || start_offset(*plan) > 1.0) continue;
+    const ArcSpec& spec = plan->arc().spec;
+    if (!plan->arc().rotated || spec.preload != Preload::Half || start_offset(*plan) > 1.0) continue;
     double worst = 0;
     run(*plan, [&](const Iteration& it) {
       if (it.step_x || it.step_y) worst = std::max(worst, plan_distance(*plan, double(it.pos.x), double(it.pos.y)));
     });
-    const int e = plan->spec.bits - smallest_valid_bits(plan->spec.a, plan->spec.b);
-    const int thin = std::max(plan->spec.a, plan->spec.b) > 4 * std::min(plan->spec.a, plan->spec.b);
+    const int e = spec.bits - smallest_valid_bits(spec.a, spec.b);
+    const int thin = std::max(spec.a, spec.b) > 4 * std::min(spec.a, spec.b);
     rot[thin][e] = std::max(rot[thin][e], worst - start_offset(*plan) - coefficient_drift_bound(*plan));
     ++rot_n[thin][e];
   }

@@ -68,9 +68,10 @@ Row from_json(const nlohmann::json& j) {
 }
 
 int class_of(const Plan& p) {
-  if (p.line) return 0;
-  const bool thin = std::max(p.spec.a, p.spec.b) > 4 * std::min(p.spec.a, p.spec.b);
-  return (p.rotated ? 3 : 1) + (thin ? 1 : 0);
+  if (p.is_line()) return 0;
+  const ArcGeometry& g = p.arc();
+  const bool thin = std::max(g.spec.a, g.spec.b) > 4 * std::min(g.spec.a, g.spec.b);
+  return (g.rotated ? 3 : 1) + (thin ? 1 : 0);
 }
 
 // Runs a plan, measuring every path point; returns whether it started and ended on its
@@ -93,7 +94,7 @@ bool measure(const Plan& p, Row& row) {
       worst = std::max(worst, d);
       sum += d;
       ++points;
-      if (!p.line) {
+      if (p.is_arc()) {
         ++row.steps;
         row.line_steps += pc.kind == PieceKind::Line;
       }
@@ -107,12 +108,12 @@ bool measure(const Plan& p, Row& row) {
     row.worst = std::max(row.worst, worst);
     row.worst_case = "dda path " + describe(p);
   }
-  return joined && end == p.to && (!p.full || p.to == p.from);
+  return joined && end == p.to && (!p.is_arc() || !p.arc().full || p.to == p.from);
 }
 
 Plan with_preload(const Plan& p, Preload pre) {
-  if (p.line) return plan_line(p.from, p.to, pre);
-  ArcSpec s = p.spec;
+  if (p.is_line()) return plan_line(p.from, p.to, pre);
+  ArcSpec s = p.arc().spec;
   s.preload = pre;
   return plan_arc(s);
 }
@@ -190,8 +191,9 @@ void run_case(long i, std::uint64_t seed, std::int64_t max_axis, Rows& rows) {
     try {
       const Plan p = with_preload(*drawn, z ? Preload::Zero : Preload::Half);
       ++row.cases;
-      row.full_point += p.full && !p.spec.to_theta;
-      row.full_angle += p.full && bool(p.spec.to_theta);
+      const bool full = p.is_arc() && p.arc().full, to_theta = p.is_arc() && p.arc().spec.to_theta;
+      row.full_point += full && !to_theta;
+      row.full_angle += full && to_theta;
       row.exact_ends += measure(p, row);
     } catch (const InputError&) {
       ++row.refused;

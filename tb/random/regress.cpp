@@ -144,15 +144,17 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long cases, Shard shard
       for (const Piece& pc : plan->pieces) st.line_pieces += pc.kind == PieceKind::Line;
       if (!r.was_reset) {
         const Plan& p = *plan;
-        ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1][p.spec.dir == Direction::Cw];
-        st.lines += p.line;
-        st.program += kind == ArcKind::Program && !p.line;
-        if (!p.line) {
-          st.full += p.full;
-          st.circles += p.spec.a == p.spec.b;
-          st.turned += quarter_turns(p.spec) == 1 || quarter_turns(p.spec) == 3;
-          st.rotated += p.rotated;
-          st.thin += std::max(p.spec.a, p.spec.b) > 100 * std::min(p.spec.a, p.spec.b);
+        const bool cw = p.is_arc() && p.arc().spec.dir == Direction::Cw;
+        ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1][cw];
+        st.lines += p.is_line();
+        st.program += kind == ArcKind::Program && p.is_arc();
+        if (p.is_arc()) {
+          const ArcGeometry& g = p.arc();
+          st.full += g.full;
+          st.circles += g.spec.a == g.spec.b;
+          st.turned += quarter_turns(g.spec) == 1 || quarter_turns(g.spec) == 3;
+          st.rotated += g.rotated;
+          st.thin += std::max(g.spec.a, g.spec.b) > 100 * std::min(g.spec.a, g.spec.b);
         }
       }
       if (r.was_reset) {
