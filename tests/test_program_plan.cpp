@@ -13,6 +13,7 @@
 #include <random>
 #include <sstream>
 
+#include "pipeline/pipeline.hpp"
 #include "planner/planner.hpp"
 #include "program_plan/program_plan.hpp"
 #include "runner/runner.hpp"
@@ -235,4 +236,66 @@ TEST_CASE("program plan: the block targets", "[program]") {
   CHECK(block_target(pp.blocks[3], 0, Preload::Half) == Approx(1.0));    // aspect 6
   CHECK(block_target(pp.blocks[4], 0, Preload::Half) == Approx(1.0));    // turned by 1 degree
   CHECK(std::isinf(block_target(pp.blocks[2], 0, Preload::Zero)));
+}
+
+namespace {
+
+// Counts what a run tells a report; fails at block `fail_at` (1-based) if given.
+struct CountingSink : RunSink {
+  std::size_t blocks = 0, records = 0, fail_at = 0;
+  void block(const BlockPlan&) override {
+    if (++blocks == fail_at) throw GuardError("the report failed at block " + std::to_string(blocks));
+  }
+  void record(const Iteration&) override { ++records; }
+  bool steps_only() const override { return true; }
+};
+
+// A rapid to the origin and n lines of a millimetre along X, then (if `refused`) an arc
+// whose end is 1.4 mm off its circle.
+std::string lines_program(int n, bool refused) {
+  std::ostringstream s;
+  s << "G21 G90 G17\nG00 X0 Y0\n";
+  for (int k = 1; k <= n; ++k) s << "G01 X" << k << '\n';
+  if (refused) s << "G02 X" << n + 2 << " Y0 I0.3 J0\n";
+  s << "M30\n";
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("program plan: a refusal from the planner's thread stops the run where one thread would", "[program]") {
+  // The reader and the planner run ahead in their own thread; the engine must still run
+  // and report every block before the refused one, and then stop with its message.
+  std::istringstream in(lines_program(300, true));
+  ProgramRun run;
+  run.file = "p.nc";
+  CountingSink sink;
+  GoldenEngine engine(sink);
+  std::string what;
+  try {
+    run_program(in, run, engine, sink);
+  } catch (const ProgramError& e) {
+    what = e.what();
+  }
+  CHECK(what.rfind("p.nc:303:", 0) == 0);
+  // As in one thread: the reader refuses the arc while the planner's window holds the
+  // kDefaultWindow blocks before it (never planned), and the engine has run every piece
+  // before the last one announced (a piece runs when the next one is known).
+  CHECK(sink.blocks == 301 - kDefaultWindow);
+  CHECK(sink.records == (sink.blocks - 2) * 1000);
+}
+
+TEST_CASE("program plan: a report that fails stops the planner's thread", "[program]") {
+  // A failure on the engine's side ends the run at once with its own error; the planner,
+  // far ahead or waiting for room, is stopped and joined (a hang would time out).
+  for (const std::size_t fail_at : {std::size_t{1}, std::size_t{3}, std::size_t{200}}) {
+    std::istringstream in(lines_program(2000, false));
+    ProgramRun run;
+    run.file = "p.nc";
+    CountingSink sink;
+    sink.fail_at = fail_at;
+    GoldenEngine engine(sink);
+    CHECK_THROWS_WITH(run_program(in, run, engine, sink), "the report failed at block " + std::to_string(fail_at));
+    CHECK(sink.blocks == fail_at);
+  }
 }

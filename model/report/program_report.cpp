@@ -77,7 +77,7 @@ std::string mm(Length v) {
 }
 
 void BlockWindow::push(const BlockPlan& b) {
-  held_.push_back(Entry{b, BlockDistance(b, step_), BlockStats{}});
+  held_.push_back(Entry{b, BlockDistance(b, step_), BlockStats{}, b.first_piece + b.plan.pieces.size()});
   held_.back().stats.end = b.from;
 }
 

@@ -39,13 +39,14 @@ class BlockWindow {
     BlockPlan block;
     BlockDistance distance;
     BlockStats stats;
+    std::uint64_t pieces_end;  // the index of the first piece after the block's
   };
   explicit BlockWindow(Length step) : step_(step) {}
   void push(const BlockPlan& b);
   // The block of piece `piece`; the blocks before it are handed to `done` first.
   template <typename Done>
   Entry& of_piece(std::uint32_t piece, Done done) {
-    while (!held_.empty() && held_.front().block.first_piece + held_.front().block.plan.pieces.size() <= piece) {
+    while (!held_.empty() && held_.front().pieces_end <= piece) {
       done(held_.front());
       held_.pop_front();
     }

@@ -29,7 +29,7 @@ struct PieceRun {
 // The guards before an iteration: an active axis' integrand must stay within
 // [-cap, cap] (above cap an accumulator could carry twice in one iteration; the planner
 // refuses such an arc), the path must not stall, and the piece must not pass its bound.
-bool guards_hold(const PieceRun& r, const Datapath& dp) {
+inline bool guards_hold(const PieceRun& r, const Datapath& dp) {
   const auto& rg = dp.regs();
   const std::int64_t cap = r.pc.cmd.cap;
   const bool wide_x = rg.cnt_x != 0 && (rg.jv_x < -cap || rg.jv_x > cap);
