@@ -28,6 +28,7 @@
 
 #include "accuracy/golden.hpp"
 #include "arc_options.hpp"
+#include "blocks_cmd.hpp"
 #include "datapath/hw_command.hpp"
 #include "datapath/hw_params.hpp"
 #include "engines.hpp"
@@ -133,6 +134,7 @@ struct Cli {
   VectorsCli vectors;
   FeedCli feed;
   GenParamsCli gen_params;
+  BlocksCli blocks;
 };
 
 void set_up_trace(CLI::App* sub, Cli& c) { add_arc_options(sub, c.trace, "csv, table or json", "csv"); }
@@ -303,6 +305,10 @@ void run_plot(const Cli& c, int argc, char** argv) {
 
 void run_gen_params(const Cli& c, int, char**) { run_gen_params(c.gen_params); }
 
+void set_up_blocks(CLI::App* sub, Cli& c) { add_blocks_options(sub, c.blocks); }
+
+void run_blocks(const Cli& c, int, char**) { run_blocks(c.blocks); }
+
 // The subcommands, in the order of the help: each one's options set up, and its run
 // once the command line is parsed (argc and argv: the command line, for records of it).
 struct Subcommand {
@@ -319,6 +325,8 @@ const Subcommand kSubcommands[] = {
     {"feed", "the DDA's speed along the path at a constant feed increment, per piece", set_up_feed, run_feed},
     {"plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)", set_up_plot, run_plot},
     {"gen-params", "print the hardware widths and command fields", set_up_gen_params, run_gen_params},
+    {"blocks", "the motion blocks a part program reads as, in machine coordinates (--program FILE)", set_up_blocks,
+     run_blocks},
 };
 
 // The first argument must be a command (or --help, -h, --version): an option before
@@ -326,8 +334,9 @@ const Subcommand kSubcommands[] = {
 void check_command_word(CLI::App& app, int argc, char** argv) {
   if (argc > 1 && argv[1][0] == '-' && std::strcmp(argv[1], "--help") != 0 && std::strcmp(argv[1], "-h") != 0 &&
       std::strcmp(argv[1], "--version") != 0) {
-    throw InputError(std::string("option '") + argv[1] +
-                     "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params)");
+    throw InputError(
+        std::string("option '") + argv[1] +
+        "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params, blocks)");
   }
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;

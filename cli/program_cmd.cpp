@@ -38,6 +38,9 @@ void add_program_options(CLI::App* sub, ProgramCli& o) {
                   "with --program: the tool's start in millimetres, mill X,Y or lathe X,Z (X a diameter; "
                   "default 0,0)");
   sub->add_option("--step", o.step, "with --program: the lattice unit in millimetres (default 0.001)");
+  sub->add_option("--dialect", o.dialect,
+                  "with --program: linuxcnc, hnc or fanuc (default: detected from the program; docs/programs.md)");
+  sub->add_flag("--block-delete", o.block_delete, "with --program: skip the blocks that start with '/'");
 }
 
 std::string program_name(const ProgramCli& o) { return o.file == "-" ? "<stdin>" : o.file; }
@@ -51,6 +54,18 @@ ProgramRun program_run(const ProgramCli& o, Preload preload, bool hardware) {
   } else if (o.machine != "mill") {
     throw InputError("machine = '" + o.machine + "' is invalid: use mill or lathe");
   }
+  if (!o.dialect.empty()) {
+    if (o.dialect == "linuxcnc") {
+      run.read.dialect = program::Dialect::LinuxCnc;
+    } else if (o.dialect == "hnc") {
+      run.read.dialect = program::Dialect::Hnc;
+    } else if (o.dialect == "fanuc") {
+      run.read.dialect = program::Dialect::Fanuc;
+    } else {
+      throw InputError("dialect = '" + o.dialect + "' is invalid: use linuxcnc, hnc or fanuc");
+    }
+  }
+  run.read.block_delete = o.block_delete;
   if (!o.start.empty()) {
     const auto [p, q] = parse_mm_pair("start", o.start);
     run.read.start = program::start_point(run.read.machine, p, q);

@@ -17,7 +17,8 @@ namespace dda::cli {
 
 struct ProgramCli {
   std::string file;  // "-": standard input; empty: no program
-  std::string machine = "mill", start, step = "0.001";
+  std::string machine = "mill", start, step = "0.001", dialect;
+  bool block_delete = false;
   bool given() const { return !file.empty(); }
 };
 void add_program_options(CLI::App* sub, ProgramCli& o);

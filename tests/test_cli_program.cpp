@@ -23,10 +23,11 @@ void write_file(const fs::path& p, const std::string& text) {
 }  // namespace
 
 TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, status 2, no file", "[cli]") {
-  // (text, expected message after "FILE:") for each class of bad input (docs/programs.md).
+  // (text, expected message after "FILE:") for each class of bad input (docs/programs.md),
+  // in HNC's dialect (LinuxCNC's would refuse the moves without F first).
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"G01 X1\nG01 E5\n", "2:5: unknown word E"},                          // unknown word
-      {"G93 X1\n", "1:1: unknown or unsupported code G93"},                 // unknown code
+      {"G12 X1\n", "1:1: unknown or unsupported code G12"},                 // unknown code
       {"G01 X1.2.3\n", "1:9: unexpected '.'"},                              // malformed number
       {"G01 X Y1\n", "1:7: a number must follow the letter"},               // axis word without its value
       {"G02 X10 Y0\n", "1:1: an arc needs a centre (I, J) or a radius R"},  // missing centre or radius words
@@ -36,7 +37,9 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
        "1:1: the end is 0.0022 mm off the arc's circle (radius 5.0011 mm; tolerance 0.002 mm)"},  // off-curve end
       {"G6.2 X10 Y0 A0 B2\n", "1:13: the semi-axis A must be positive"},
       {"G6.2 X10 Y0 A5 B-2\n", "1:16: the semi-axis B must be positive"},
-      {"G01 X1 Z5\n", "1:8: Z is not an axis of the plane in force (G17 X Y, G18 Z X, G19 Y Z)"},
+      {"G01 X1 Z5\n",
+       "1:8: Z5 moves Z, the axis normal to the plane (G17: X, Y): moving the axis normal to the plane is not "
+       "supported until the third axis"},
       {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
   };
   // The macro language's classes.
@@ -53,7 +56,8 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
     Scratch s;
     const fs::path prog = s.dir / "m.nc", out = s.dir / "out.txt";
     write_file(prog, text);
-    const Result r = run_dda(s, "stats --engine systemc --program " + prog.string() + " --out " + out.string());
+    const Result r =
+        run_dda(s, "stats --engine systemc --dialect hnc --program " + prog.string() + " --out " + out.string());
     INFO(text);
     CHECK(r.status == 2);
     CHECK(r.err == prog.string() + ":" + want + "\n");
@@ -64,7 +68,7 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
       Scratch s;
       const fs::path prog = s.dir / "p.nc", out = s.dir / (cmd == "plot" ? "out.svg" : "out.txt");
       write_file(prog, text);
-      const Result r = run_dda(s, cmd + " --program " + prog.string() + " --out " + out.string());
+      const Result r = run_dda(s, cmd + " --dialect hnc --program " + prog.string() + " --out " + out.string());
       INFO("dda " << cmd << " on: " << text << "stderr: " << r.err);
       CHECK(r.status == 2);
       CHECK(r.out.empty());
@@ -76,7 +80,8 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
   Scratch s;
   const fs::path prog = s.dir / "p.nc";
   write_file(prog, "G01 X1\nG01 E5\n");
-  const Result r = run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
+  const Result r =
+      run_dda(s, "vectors --dialect hnc --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
   CHECK(r.status == 2);
   CHECK(r.err == prog.string() + ":2:5: unknown word E\n");
   CHECK(s.user_files() == 1);
@@ -87,13 +92,13 @@ TEST_CASE("cli program: a block the hardware cannot hold is refused for systemc 
   const fs::path prog = s.dir / "big.nc";
   write_file(prog, "N10 G00 X200 Y0\nN20 G03 X-200 Y0 R200\n");
   for (const std::string engine : {"systemc", "rtl"}) {
-    const Result r = run_dda(s, "stats --program " + prog.string() + " --engine " + engine);
+    const Result r = run_dda(s, "stats --dialect hnc --program " + prog.string() + " --engine " + engine);
     INFO(r.err);
     CHECK(r.status == 2);
     CHECK(r.err.rfind(prog.string() + ":2:5: block N20 (arc ccw): beyond the hardware's widths: ", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
-  const Result g = run_dda(s, "stats --program " + prog.string() + " --format json");
+  const Result g = run_dda(s, "stats --dialect hnc --program " + prog.string() + " --format json");
   CHECK(g.status == 0);
   const auto j = nlohmann::json::parse(g.out);
   CHECK(j["totals"]["on_ends"] == true);
@@ -150,7 +155,7 @@ TEST_CASE("cli program: standard input, a lathe in diameters, the block table", 
   CHECK(zero.out.find("\ntargets: not targeted (zero preload: reported only)\n") != std::string::npos);
   // An error in a program from standard input names <stdin>.
   write_file(prog, "G01 X1\nG01 E5\n");
-  const Result bad = run_dda(s, "path --program - < " + prog.string());
+  const Result bad = run_dda(s, "path --dialect hnc --program - < " + prog.string());
   CHECK(bad.status == 2);
   CHECK(bad.err == "<stdin>:2:5: unknown word E\n");
 }
@@ -160,7 +165,8 @@ TEST_CASE("cli program: a program longer than a core vector set holds is refused
   const fs::path prog = s.dir / "long.nc";
   // 4100 moves of one step each: 4100 core commands.
   write_file(prog, "#1=0\nWHILE #1 LT 4100\n#1=#1+1\nG01 X[#1*0.001]\nENDW\n");
-  const Result r = run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
+  const Result r =
+      run_dda(s, "vectors --dialect hnc --program " + prog.string() + " --out-dir " + (s.dir / "set").string());
   CHECK(r.status == 2);
   CHECK(r.err ==
         "dda: error: vectors: 4100 commands are too many: tb/hdl/dda_vec_tb.v holds 4096 (split the work into several "

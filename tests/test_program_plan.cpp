@@ -23,6 +23,15 @@ using namespace dda::program;
 
 namespace {
 
+// The reader's tests are written in HNC-21T's dialect, the project's first (a plain
+// program would be read as LinuxCNC's on a mill: docs/programs.md, "Dialects").
+ReadOptions options_for(Machine m) {
+  ReadOptions o;
+  o.machine = m;
+  o.dialect = Dialect::Hnc;
+  return o;
+}
+
 struct Measured {
   std::vector<double> max_dev;
   std::vector<Point> end;
@@ -46,7 +55,7 @@ Measured measure(const ProgramPlan& pp) {
 ProgramPlan plan_text(const std::string& text, Machine m = Machine::Mill, Length step = 1000) {
   LatticeOptions lo;
   lo.step = step;
-  return plan_program(read(text, "p.nc", ReadOptions{m, {}}), lo, "p.nc");
+  return plan_program(read(text, "p.nc", options_for(m)), lo, "p.nc");
 }
 
 std::string error_of(const std::string& text, bool hardware = false) {
@@ -268,6 +277,7 @@ TEST_CASE("program plan: a refusal from the planner's thread stops the run where
   // and report every block before the refused one, and then stop with its message.
   std::istringstream in(lines_program(300, true));
   ProgramRun run;
+  run.read = options_for(Machine::Mill);
   run.file = "p.nc";
   CountingSink sink;
   GoldenEngine engine(sink);
@@ -291,6 +301,7 @@ TEST_CASE("program plan: a report that fails stops the planner's thread", "[prog
   for (const std::size_t fail_at : {std::size_t{1}, std::size_t{3}, std::size_t{200}}) {
     std::istringstream in(lines_program(2000, false));
     ProgramRun run;
+    run.read = options_for(Machine::Mill);
     run.file = "p.nc";
     CountingSink sink;
     sink.fail_at = fail_at;

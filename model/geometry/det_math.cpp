@@ -90,4 +90,15 @@ double atan(double x) {
   return neg ? -t : t;
 }
 
+double atan2(double y, double x) {
+  if (x == 0 && y == 0) return 0;
+  if (std::fabs(x) >= std::fabs(y)) {
+    const double a = atan(y / x);
+    if (x > 0) return a;
+    return y < 0 ? a - kPi : a + kPi;
+  }
+  const double a = atan(x / y);  // |x / y| < 1
+  return y > 0 ? kPi / 2 - a : -kPi / 2 - a;
+}
+
 }  // namespace dda::det

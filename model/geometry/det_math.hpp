@@ -13,6 +13,8 @@ double sin(double x);
 double cos(double x);
 double tan(double x);   // sin / cos
 double atan(double x);  // in (-pi/2, pi/2)
+// The angle of (x, y) from +x, in [-pi, pi] (0 for (0, 0)), from atan and the quadrant.
+double atan2(double y, double x);
 
 inline constexpr double kPi = 3.141592653589793115997963468544185161590576171875;  // the double nearest pi
 

@@ -37,8 +37,13 @@ class ProgramError : public InputError {
 using Length = std::int64_t;
 inline constexpr Length kNmPerMm = 1000000;
 // An arc's end may be off its curve by this much (as real controls check the radius to
-// the end against the radius to the start): 0.002 mm.
+// the end against the radius to the start): 0.002 mm in the HNC and Fanuc dialects and
+// for ellipses. The LinuxCNC dialect takes LinuxCNC's own rule (docs/programs.md, "Arcs
+// and ellipses"): refused only when the difference exceeds both kLinuxCncEndTolerance
+// (mm programs; kLinuxCncEndToleranceInch in inch programs) and 0.1% of the radius.
 inline constexpr Length kEndTolerance = 2000;
+inline constexpr Length kLinuxCncEndTolerance = 28284;      // 0.02 mm times the square root of 2
+inline constexpr Length kLinuxCncEndToleranceInch = 71842;  // 0.002 in times the square root of 2
 
 // A point of the machine's plane: (u, v) = mill G17 (X, Y), G18 (Z, X), G19 (Y, Z);
 // lathe (Z, X as a radius). The lattice's x is u, its y is v.
@@ -48,6 +53,10 @@ struct Point2 {
 };
 
 enum class Machine { Mill, Lathe };
+// The G-code dialects the reader knows (docs/programs.md, "Dialects"): LinuxCNC's
+// RS274NGC, HNC-21T's (the lathe paper's control) and Fanuc's.
+enum class Dialect { LinuxCnc, Hnc, Fanuc };
+std::string_view dialect_name(Dialect d);  // "linuxcnc", "hnc", "fanuc"
 enum class MoveKind { Rapid, Line, ArcCw, ArcCcw, EllipseCw, EllipseCcw };
 std::string_view kind_name(MoveKind k);  // "rapid", "line", "arc cw", ...
 
@@ -72,6 +81,15 @@ struct Move {
   // Ellipses: semi-axes a (along the direction q) and b, q in 0.001 degree from +u.
   Length a = 0, b = 0;
   std::int64_t q_millideg = 0;
+  // Arcs: the turns it starts (P, default 1): turns - 1 full circles, then the arc.
+  int turns = 1;
+  // Arcs and ellipses: how far the end lies off the curve through the start (within the
+  // dialect's tolerance); the planner allows it.
+  Length end_off = 0;
+  int plane = 170;  // the plane of the two axes (as ReadSummary::plane)
+  // The machine coordinate along the axis normal to the plane (G17: Z), which the two
+  // axes do not move: the same for every block of a run.
+  Length w = 0;
   // The feed in force (F, program units per minute as written, 0 if none yet).
   double feed = 0;
 };
@@ -87,6 +105,8 @@ struct Program {
   std::vector<Ignored> ignored;
   Point2 start;
   bool ended = false;  // M02 or M30 seen (text after it is not read)
+  Dialect dialect = Dialect::LinuxCnc;
+  int plane = 170;  // the plane of the two axes (G17 170, G18 180, G19 190)
 };
 
 struct ReadOptions {
@@ -95,6 +115,11 @@ struct ReadOptions {
   // Macro programs: lines executed in all before the run is refused as a loop that does
   // not end (docs/programs.md, "Macros").
   std::uint64_t max_lines = 10000000;
+  // The dialect; none: detected from the program (docs/programs.md, "Dialects").
+  std::optional<Dialect> dialect;
+  // The block delete switch: on, a block starting with '/' is skipped; off (as on a
+  // control at power-on), the '/' is ignored and the block runs.
+  bool block_delete = false;
 };
 
 // Reads a program's text; `file` names it in error messages. (It reads the text as a
@@ -107,6 +132,8 @@ struct ReadSummary {
   std::uint64_t ignored_count = 0;  // all of them
   Point2 start;
   bool ended = false;
+  Dialect dialect = Dialect::LinuxCnc;
+  int plane = 170;
 };
 inline constexpr std::size_t kMaxIgnoredKept = 1000;
 // Reads the program from `in` (a seekable stream: tellg/seekg must work) and calls

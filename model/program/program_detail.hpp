@@ -17,15 +17,18 @@ namespace dda::program::detail {
 // A node of a macro expression (docs/programs.md, "Macros"); a line's nodes form trees
 // in Line::nodes, operands by index.
 enum class Op {
-  Num,  // value
-  Var,  // #a: the variable whose number is expression a
-  Pi,   // PI
-  Neg,  // -a
-  Not,  // NOT a
-  Add,  // a + b, and so on
+  Num,    // value
+  Var,    // #a: the variable whose number is expression a
+  Named,  // #<name>: Line::names[name]
+  Pi,     // PI
+  Neg,    // -a
+  Not,    // NOT a
+  Add,    // a + b, and so on
   Sub,
   Mul,
   Div,
+  Mod,
+  Pow,
   Eq,
   Ne,
   Gt,
@@ -34,18 +37,29 @@ enum class Op {
   Le,
   And,
   Or,
-  Sin,  // functions of a, radians
+  Xor,
+  Sin,  // functions of a: angles in radians (HNC) or degrees (LinuxCNC, Fanuc)
   Cos,
   Tan,
   Atan,
+  Atan2,  // ATAN[a]/[b] (LinuxCNC, Fanuc)
+  Asin,
+  Acos,
   Sqrt,
   Abs,
   Int,
+  Fix,
+  Fup,
+  Round,
+  Exp,
+  Ln,
+  Exists,  // EXISTS[#<name>]: 1 if the named parameter a has a value
 };
 struct Node {
   Op op = Op::Num;
   double value = 0;
   int a = -1, b = -1;
+  int name = -1;  // Named: its index in Line::names
   SourcePos pos;  // the operator's (or the operand's) position
 };
 
@@ -61,18 +75,59 @@ struct Word {
   SourcePos pos;
 };
 
-enum class Stmt { None, Assign, While, EndW, If, Else, EndIf };
+// Statements: HNC's (Assign .. EndIf, a line of their own) and LinuxCNC's O-words.
+enum class Stmt {
+  None,
+  Assign,
+  While,
+  EndW,
+  If,
+  Else,
+  EndIf,
+  OSub,  // o100 sub, o<name> sub
+  OEndSub,
+  OCall,
+  OReturn,
+  OIf,
+  OElseIf,
+  OElse,
+  OEndIf,
+  OWhile,  // a loop's head, or the tail of a do loop (matched in the structure)
+  OEndWhile,
+  ODo,
+  ORepeat,
+  OEndRepeat,
+  OBreak,
+  OContinue,
+};
+inline bool is_oword(Stmt s) { return s >= Stmt::OSub; }
+
+// A parameter set on a words line (LinuxCNC, Fanuc): #target = value, where target is
+// the node of the variable (Var or Named); applied after every word of the line is read.
+struct Assign {
+  int target = -1, value = -1;
+  SourcePos pos;
+};
 
 struct Line {
   std::size_t number = 0;     // 1-based
-  bool header = false;        // a '%' line: a program's start
+  bool header = false;        // a '%' line, or a Fanuc 'O1234' line: a program's start
   std::int64_t program = -1;  // its number (%2: 2), -1 if it has none
+  bool block_delete = false;  // starts with '/'
   std::vector<Word> words;
   std::vector<Node> nodes;
+  std::vector<std::string> names;  // of the named parameters in nodes
+  std::vector<Assign> assigns;
   Stmt stmt = Stmt::None;
-  int target = -1, value = -1;  // Assign: #target = value; While, If: the condition in value
+  int target = -1, value = -1;  // Assign: #target = value; While, If: the condition in value;
+                                // O-words: the condition, count or returned value (-1: none)
+  std::string oname;            // O-words: the number ("100") or the name ("<name>" lower case)
+  std::vector<int> args;        // o.. call [a] [b]: the arguments
   SourcePos stmt_pos;
 };
+
+// One line's text parsed in the dialect (program_grammar.cpp); throws ProgramError.
+Line parse_line(std::string_view raw, std::size_t number, const std::string& file, Dialect dialect);
 
 // Lines longer than this are refused (RS274 allows 256 characters).
 inline constexpr std::size_t kMaxLineLength = 4096;
@@ -93,6 +148,11 @@ class LineStream {
  public:
   // Throws InputError if the stream cannot tell its position.
   LineStream(std::istream& in, const std::string& file);
+  // The dialect the lines are parsed in (LinuxCNC until set).
+  void set_dialect(Dialect d) { dialect_ = d; }
+  // Reads the line at `at` as it is written, without parsing it, into `raw` (at most
+  // kMaxLineLength + 1 characters; comments kept). Returns where the next line starts.
+  LinePos read_raw(const LinePos& at, std::string& raw);
   LinePos first() const { return first_; }
   // Reads the line at `at` (seeking there unless it is the one after the last read) into
   // `out`: a '%' header, or its words or macro statement; throws ProgramError at the
@@ -103,6 +163,8 @@ class LineStream {
 
  private:
   void seek(std::uint64_t offset);
+  void scan(const LinePos& at);  // reads the line at `at` into text_ (and its lead)
+  Dialect dialect_ = Dialect::LinuxCnc;
   void take(char c);  // one character of the line being read
   std::streambuf* sb_;
   std::string file_;

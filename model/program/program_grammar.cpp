@@ -1,111 +1,98 @@
 // SPDX-License-Identifier: Apache-2.0
-// The grammar of a part program, in PEGTL: a line is blanks, words (a letter and a
-// number or a macro expression, blanks allowed between them), comments in parentheses
-// that close on the line, and an optional ';' comment to the end of the line; or a macro
-// statement (#n = expression, WHILE, ENDW, IF, ELSE, ENDIF: HNC-21T's). A line starting
-// with '%' marks a program's start and may give its number (%2). The lines are read from
-// a stream one at a time (LineStream), as often as the interpreter runs them.
-#include <tao/pegtl.hpp>
-
+// A part program line parsed (program_rules.hpp): the actions that collect its words,
+// parameter settings and statement, and build each expression's tree with the
+// dialect's precedence (docs/programs.md, "Dialects"); the messages of the rules that
+// must match.
 #include <cctype>
 #include <limits>
 #include <string>
 #include <string_view>
 
 #include "program_detail.hpp"
+#include "program_rules.hpp"
 
 namespace dda::program::detail {
+
+namespace rules {
+
+// The binary operators' precedence by dialect, loosest first (docs/programs.md):
+// HNC OR, AND, NOT, comparisons, + -, * /; LinuxCNC AND OR XOR, comparisons, + -,
+// * / MOD, **; Fanuc comparisons, + - OR XOR, * / AND MOD, **. Unary minus binds
+// tightest; operators of one level group from the left.
+int precedence(Dialect d, Op op) {
+  const bool lcnc = d == Dialect::LinuxCnc, fanuc = d == Dialect::Fanuc;
+  switch (op) {
+    case Op::Or:
+    case Op::Xor:
+      return lcnc ? 1 : fanuc ? 2 : 1;
+    case Op::And:
+      return lcnc ? 1 : fanuc ? 3 : 2;
+    case Op::Not:
+      return 3;
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Lt:
+    case Op::Le:
+      return lcnc ? 2 : fanuc ? 1 : 4;
+    case Op::Add:
+    case Op::Sub:
+      return lcnc ? 3 : fanuc ? 2 : 5;
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      return lcnc ? 4 : fanuc ? 3 : 6;
+    case Op::Pow:
+      return 7;
+    default:
+      return 8;  // a sentinel's: an open expression
+  }
+}
+
+struct ParseState {
+  Dialect dialect = Dialect::LinuxCnc;
+  Line line;
+  Word cur;
+  std::vector<int> values;  // the expression stack (node indices)
+  std::vector<Node> ops;    // pending operators (op and position); Op::Num: an expression's start
+
+  template <typename Input>
+  SourcePos at(const Input& in) const {
+    return SourcePos{line.number, in.position().column};
+  }
+  int push(Node n) {
+    line.nodes.push_back(n);
+    values.push_back(int(line.nodes.size()) - 1);
+    return values.back();
+  }
+  int pop() {
+    const int v = values.back();
+    values.pop_back();
+    return v;
+  }
+  // Pops the pending operator and its operands (one for NOT, else two) into a node.
+  void reduce() {
+    Node n = ops.back();
+    ops.pop_back();
+    if (n.op != Op::Not) n.b = pop();
+    n.a = pop();
+    push(n);
+  }
+  bool pending_binds(int prec) const {
+    return !ops.empty() && ops.back().op != Op::Num && precedence(dialect, ops.back().op) >= prec;
+  }
+};
+
+bool dialect_is(const ParseState& s, Dialect d) { return s.dialect == d; }
+
+}  // namespace rules
 
 namespace {
 
 namespace pg = tao::pegtl;
+using namespace rules;
 
-struct blank : pg::one<' ', '\t'> {};
-struct ws : pg::star<blank> {};
-struct paren_open : pg::one<'('> {};
-struct comment_body : pg::until<pg::one<')'>, pg::not_one<'\r', '\n'>> {};
-struct paren_comment : pg::if_must<paren_open, comment_body> {};
-struct semi_comment : pg::seq<pg::one<';'>, pg::star<pg::not_one<'\r', '\n'>>> {};
-struct digits : pg::plus<pg::digit> {};
-struct unsigned_number
-    : pg::sor<pg::seq<digits, pg::opt<pg::one<'.'>, pg::opt<digits>>>, pg::seq<pg::one<'.'>, digits>> {};
-struct number : pg::seq<pg::opt<pg::one<'+', '-'>>, unsigned_number> {};
-
-// Macro expressions. Keywords are whole words in any case.
-template <typename Kw>
-struct keyword : pg::seq<Kw, pg::not_at<pg::alnum>> {};
-struct kw_pi : keyword<TAO_PEGTL_ISTRING("PI")> {};
-struct kw_not : keyword<TAO_PEGTL_ISTRING("NOT")> {};
-struct kw_and : keyword<TAO_PEGTL_ISTRING("AND")> {};
-struct kw_or : keyword<TAO_PEGTL_ISTRING("OR")> {};
-struct func_name
-    : pg::sor<TAO_PEGTL_ISTRING("SIN"), TAO_PEGTL_ISTRING("COS"), TAO_PEGTL_ISTRING("TAN"), TAO_PEGTL_ISTRING("ATAN"),
-              TAO_PEGTL_ISTRING("SQRT"), TAO_PEGTL_ISTRING("ABS"), TAO_PEGTL_ISTRING("INT")> {};
-struct cmp_op : pg::seq<pg::sor<TAO_PEGTL_ISTRING("EQ"), TAO_PEGTL_ISTRING("NE"), TAO_PEGTL_ISTRING("GT"),
-                                TAO_PEGTL_ISTRING("GE"), TAO_PEGTL_ISTRING("LT"), TAO_PEGTL_ISTRING("LE")>,
-                        pg::not_at<pg::alpha>> {};
-struct add_op : pg::one<'+', '-'> {};
-struct mul_op : pg::one<'*', '/'> {};
-
-struct expr;
-struct expr_number : unsigned_number {};
-struct bracket_close : pg::one<']'> {};
-struct bracket : pg::if_must<pg::one<'['>, ws, expr, ws, bracket_close> {};
-struct var;
-struct var_index : pg::sor<expr_number, bracket, var> {};
-struct var : pg::if_must<pg::one<'#'>, var_index> {};
-struct func : pg::if_must<func_name, ws, bracket> {};
-struct primary : pg::sor<expr_number, var, bracket, kw_pi, func> {};
-struct unary;
-struct negate : pg::if_must<pg::one<'-'>, ws, unary> {};
-struct unary : pg::sor<negate, pg::seq<pg::one<'+'>, ws, unary>, primary> {};
-struct mul_tail : pg::if_must<mul_op, ws, unary> {};
-struct product : pg::seq<unary, pg::star<ws, mul_tail>> {};
-struct add_tail : pg::if_must<add_op, ws, product> {};
-struct sum : pg::seq<product, pg::star<ws, add_tail>> {};
-struct cmp_tail : pg::if_must<cmp_op, ws, sum> {};
-struct comparison : pg::seq<sum, pg::opt<ws, cmp_tail>> {};
-struct negation;
-struct not_expr : pg::sor<negation, comparison> {};
-struct negation : pg::if_must<kw_not, ws, not_expr> {};
-struct and_tail : pg::if_must<kw_and, ws, not_expr> {};
-struct conjunction : pg::seq<not_expr, pg::star<ws, and_tail>> {};
-struct or_tail : pg::if_must<kw_or, ws, conjunction> {};
-struct expr : pg::seq<conjunction, pg::star<ws, or_tail>> {};
-
-// Words: a letter, then a number or an expression (#n, [..], -#n, -[..], a function).
-struct letter : pg::alpha {};
-struct word_expr : pg::sor<var, bracket, negate, func> {};
-struct word_value : pg::sor<number, word_expr> {};
-struct word : pg::if_must<letter, ws, word_value> {};
-struct end_of_line : pg::eolf {};
-struct tail : pg::seq<pg::star<pg::sor<blank, paren_comment>>, pg::opt<semi_comment>, pg::must<end_of_line>> {};
-
-// Statements.
-struct assign_eq : pg::one<'='> {};
-struct assignment : pg::if_must<pg::one<'#'>, var_index, ws, assign_eq, ws, expr> {};
-struct kw_while : keyword<TAO_PEGTL_ISTRING("WHILE")> {};
-struct kw_endw : keyword<TAO_PEGTL_ISTRING("ENDW")> {};
-struct kw_if : keyword<TAO_PEGTL_ISTRING("IF")> {};
-struct kw_else : keyword<TAO_PEGTL_ISTRING("ELSE")> {};
-struct kw_endif : keyword<TAO_PEGTL_ISTRING("ENDIF")> {};
-struct while_stmt : pg::if_must<kw_while, ws, expr> {};
-struct if_stmt : pg::if_must<kw_if, ws, expr> {};
-struct statement : pg::sor<assignment, while_stmt, kw_endw, if_stmt, kw_else, kw_endif> {};
-struct n_word : pg::seq<pg::at<pg::one<'N', 'n'>>, word> {};
-// A statement line is recognised by looking ahead (actions are off inside at<>), so that
-// no action of a line read as words has run when it turns out to be a statement.
-struct statement_start : pg::sor<pg::one<'#'>, kw_while, kw_endw, kw_if, kw_else, kw_endif> {};
-struct n_raw : pg::seq<pg::one<'N', 'n'>, ws, number> {};
-struct lead : pg::star<pg::sor<blank, paren_comment>> {};  // blanks and comments before a statement
-struct statement_line
-    : pg::seq<pg::at<lead, pg::opt<n_raw, lead>, statement_start>, lead, pg::opt<n_word, lead>, statement, tail> {};
-struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, word>>, tail> {};
-struct line : pg::sor<statement_line, words_line> {};
-
-// A character as a user reads it: printable ASCII in quotes, a UTF-8 sequence as the
-// character and its code point, a control character or a byte that is not UTF-8 text
-// by its value.
 std::string describe_char(std::string_view rest) {
   const auto hex = [](unsigned v, int digits) {
     static const char* kDigits = "0123456789ABCDEF";
@@ -142,15 +129,27 @@ std::string message(std::string_view rest) {
     return "a comment opened with '(' must close on its line";
   } else if constexpr (std::is_same_v<Rule, bracket_close>) {
     return "']' expected: an expression's bracket must close";
+  } else if constexpr (std::is_same_v<Rule, name_close> || std::is_same_v<Rule, name_text> ||
+                       std::is_same_v<Rule, o_name_text>) {
+    return "'>' expected: a name in angle brackets must close on its line";
+  } else if constexpr (std::is_same_v<Rule, exists_close> || std::is_same_v<Rule, named_var>) {
+    return "EXISTS takes one named parameter: EXISTS[#<name>]";
   } else if constexpr (std::is_same_v<Rule, assign_eq>) {
     return "'=' expected: a macro variable at the start of a line is assigned (#n = expression)";
-  } else if constexpr (std::is_same_v<Rule, expr> || std::is_same_v<Rule, unary> || std::is_same_v<Rule, product> ||
-                       std::is_same_v<Rule, sum> || std::is_same_v<Rule, not_expr> ||
-                       std::is_same_v<Rule, conjunction> || std::is_same_v<Rule, var_index> ||
-                       std::is_same_v<Rule, bracket>) {
+  } else if constexpr (std::is_same_v<Rule, set_eq>) {
+    return "'=' expected: a parameter among the words is set (#n = expression, #<name> = expression)";
+  } else if constexpr (std::is_same_v<Rule, o_keyword_expected>) {
+    return "an O-word keyword expected (sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, "
+           "repeat, endrepeat, break, continue)";
+  } else if constexpr (std::is_same_v<Rule, o_condition>) {
+    return "a bracketed expression expected after the O-word keyword";
+  } else if constexpr (std::is_same_v<Rule, expr> || std::is_same_v<Rule, unary> || std::is_same_v<Rule, operand> ||
+                       std::is_same_v<Rule, var_index> || std::is_same_v<Rule, bracket> ||
+                       std::is_same_v<Rule, func_arg>) {
     return "an expression expected (a number, #n, [..], PI or a function)";
   } else {
     if (c == ')') return "')' closes no comment";
+    if (c == '(') return "a comment inside a comment: LinuxCNC refuses nested comments";
     return "unexpected " + describe_char(rest);
   }
 }
@@ -163,69 +162,58 @@ struct control : pg::normal<Rule> {
   }
 };
 
-struct State {
-  std::vector<Word> words;
-  Word cur;
-  std::size_t line = 0;
-  std::vector<Node> nodes;
-  std::vector<int> values;  // the expression stack (node indices)
-  std::vector<Node> ops;    // pending operators (op and position)
-  Stmt stmt = Stmt::None;
-  int target = -1, value = -1;
-  SourcePos stmt_pos;
-
-  template <typename Input>
-  SourcePos at(const Input& in) const {
-    return SourcePos{line, in.position().column};
-  }
-  int push(Node n) {
-    nodes.push_back(n);
-    values.push_back(int(nodes.size()) - 1);
-    return values.back();
-  }
-  int pop() {
-    const int v = values.back();
-    values.pop_back();
-    return v;
-  }
-  // Pops the pending operator and its operands (one or two) into a node.
-  void reduce(int arity) {
-    Node n = ops.back();
-    ops.pop_back();
-    if (arity == 2) n.b = pop();
-    n.a = pop();
-    push(n);
-  }
-};
-
 template <typename Rule>
 struct action : pg::nothing<Rule> {};
 
 template <>
+struct action<nested_open> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& /*s*/) {
+    throw pg::parse_error("a comment inside a comment: LinuxCNC refuses nested comments", in);
+  }
+};
+
+template <>
+struct action<block_delete> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.line.block_delete = true;
+  }
+};
+
+template <>
 struct action<letter> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     s.cur = Word{};
     s.cur.letter = char(std::toupper(static_cast<unsigned char>(in.peek_char())));
     s.cur.pos = s.at(in);
   }
 };
 
-// Digits of a number read exactly: at most 15, as a decimal mantissa and exponent.
+// A number read exactly as a decimal mantissa and exponent: up to 18 significant digits;
+// digits after the point beyond them are rounded off (a length is kept to the nanometre
+// anyway), more before the point are refused.
 template <typename Input>
 void read_decimal(const Input& in, const std::string& text, std::int64_t& mantissa, int& decimals) {
-  bool neg = false, point = false;
+  bool neg = false, point = false, rounded = false;
   std::int64_t m = 0;
   int digits_seen = 0;
   decimals = 0;
   for (const char c : text) {
     if (c == '-') neg = true;
     if (c == '.') point = true;
-    if (std::isdigit(static_cast<unsigned char>(c))) {
-      if (++digits_seen > 15) throw pg::parse_error("a number of more than 15 digits", in);
-      m = 10 * m + (c - '0');
-      if (point) ++decimals;
+    if (!std::isdigit(static_cast<unsigned char>(c))) continue;
+    if (m == 0 && c == '0' && !point) continue;  // leading zeros
+    if (digits_seen >= 18) {
+      if (!point) throw pg::parse_error("a number of more than 18 digits before its point", in);
+      if (!rounded && c >= '5') ++m;  // (the first digit dropped rounds the rest)
+      rounded = true;
+      continue;
     }
+    if (m != 0 || c != '0' || point) ++digits_seen;
+    m = 10 * m + (c - '0');
+    if (point) ++decimals;
   }
   mantissa = neg ? -m : m;
 }
@@ -233,34 +221,34 @@ void read_decimal(const Input& in, const std::string& text, std::int64_t& mantis
 template <>
 struct action<number> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     s.cur.text = in.string();
     read_decimal(in, s.cur.text, s.cur.mantissa, s.cur.decimals);
-    s.words.push_back(s.cur);
+    s.line.words.push_back(s.cur);
   }
 };
 
 template <>
 struct action<word_expr> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     s.cur.text = in.string();
     s.cur.expr = s.pop();
-    s.words.push_back(s.cur);
+    s.line.words.push_back(s.cur);
   }
 };
 
 template <>
 struct action<expr_number> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     std::int64_t m = 0;
     int d = 0;
     read_decimal(in, in.string(), m, d);
     Node n;
     n.op = Op::Num;
     // One division of two exact doubles (m < 10^15 < 2^53, 10^d <= 10^15): the correctly
-    // rounded value of the decimal, as IEEE 754 reads it.
+    // rounded value of the decimal, as IEEE 754 reads it (longer numbers: within an ulp).
     double p = 1;
     for (int i = 0; i < d; ++i) p *= 10;
     n.value = double(m) / p;
@@ -269,82 +257,95 @@ struct action<expr_number> {
   }
 };
 
-// An operator's position and kind, pushed when it is read and reduced with its operands.
-template <typename Input>
-void pending(State& s, const Input& in, Op op) {
-  Node n;
-  n.op = op;
-  n.pos = s.at(in);
-  s.ops.push_back(n);
-}
-Op binary_op(const std::string& t) {
+Op op_named(const std::string& t) {
   std::string u;
   for (const char c : t) u += char(std::toupper(static_cast<unsigned char>(c)));
-  if (u == "+") return Op::Add;
-  if (u == "-") return Op::Sub;
-  if (u == "*") return Op::Mul;
-  if (u == "/") return Op::Div;
-  if (u == "EQ") return Op::Eq;
-  if (u == "NE") return Op::Ne;
-  if (u == "GT") return Op::Gt;
-  if (u == "GE") return Op::Ge;
-  if (u == "LT") return Op::Lt;
-  if (u == "LE") return Op::Le;
-  if (u == "AND") return Op::And;
-  if (u == "OR") return Op::Or;
-  if (u == "SIN") return Op::Sin;
-  if (u == "COS") return Op::Cos;
-  if (u == "TAN") return Op::Tan;
-  if (u == "ATAN") return Op::Atan;
-  if (u == "SQRT") return Op::Sqrt;
-  if (u == "ABS") return Op::Abs;
-  return Op::Int;
+  static const std::pair<const char*, Op> kOps[] = {
+      {"+", Op::Add},     {"-", Op::Sub},       {"*", Op::Mul},   {"/", Op::Div},     {"**", Op::Pow},
+      {"MOD", Op::Mod},   {"EQ", Op::Eq},       {"NE", Op::Ne},   {"GT", Op::Gt},     {"GE", Op::Ge},
+      {"LT", Op::Lt},     {"LE", Op::Le},       {"AND", Op::And}, {"OR", Op::Or},     {"XOR", Op::Xor},
+      {"SIN", Op::Sin},   {"COS", Op::Cos},     {"TAN", Op::Tan}, {"ATAN", Op::Atan}, {"ASIN", Op::Asin},
+      {"ACOS", Op::Acos}, {"SQRT", Op::Sqrt},   {"ABS", Op::Abs}, {"INT", Op::Int},   {"FIX", Op::Fix},
+      {"FUP", Op::Fup},   {"ROUND", Op::Round}, {"EXP", Op::Exp}, {"LN", Op::Ln},
+  };
+  for (const auto& [name, op] : kOps)
+    if (u == name) return op;
+  return Op::Num;
 }
 
-template <typename Rule>
-struct op_action {
+// An expression's start: a sentinel below its operators.
+template <>
+struct action<expr_open> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
-    pending(s, in, binary_op(in.string()));
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.ops.push_back(Node{});
+  }
+};
+// Its end: every pending operator reduced, the sentinel removed.
+template <>
+struct action<expr> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    while (s.ops.back().op != Op::Num) s.reduce();
+    s.ops.pop_back();
   }
 };
 template <>
-struct action<add_op> : op_action<add_op> {};
+struct action<binary_op> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    Node n;
+    n.op = op_named(in.string());
+    n.pos = s.at(in);
+    while (s.pending_binds(precedence(s.dialect, n.op))) s.reduce();
+    s.ops.push_back(n);
+  }
+};
 template <>
-struct action<mul_op> : op_action<mul_op> {};
-template <>
-struct action<cmp_op> : op_action<cmp_op> {};
-template <>
-struct action<kw_and> : op_action<kw_and> {};
-template <>
-struct action<kw_or> : op_action<kw_or> {};
-template <>
-struct action<func_name> : op_action<func_name> {};
+struct action<not_prefix> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    Node n;
+    n.op = Op::Not;
+    n.pos = s.at(in);
+    s.ops.push_back(n);
+  }
+};
 
-template <int Arity>
-struct reduce_action {
+// A function: its name held until its argument is read.
+template <>
+struct action<func_name> {
   template <typename Input>
-  static void apply(const Input& /*in*/, State& s) {
-    s.reduce(Arity);
+  static void apply(const Input& in, ParseState& s) {
+    Node n;
+    n.op = op_named(in.string());
+    n.pos = s.at(in);
+    s.ops.push_back(n);
   }
 };
 template <>
-struct action<add_tail> : reduce_action<2> {};
+struct action<func> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    Node n = s.ops.back();
+    s.ops.pop_back();
+    if (n.op == Op::Atan2) n.b = s.pop();
+    n.a = s.pop();
+    s.push(n);
+  }
+};
 template <>
-struct action<mul_tail> : reduce_action<2> {};
-template <>
-struct action<cmp_tail> : reduce_action<2> {};
-template <>
-struct action<and_tail> : reduce_action<2> {};
-template <>
-struct action<or_tail> : reduce_action<2> {};
-template <>
-struct action<func> : reduce_action<1> {};
+struct action<atan2_tail> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.ops.back().op = Op::Atan2;
+  }
+};
 
 template <>
 struct action<kw_pi> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     Node n;
     n.op = Op::Pi;
     n.pos = s.at(in);
@@ -353,57 +354,71 @@ struct action<kw_pi> {
 };
 
 // Unary operators and variables, reduced once their operand is read.
-template <>
-struct action<negate> {
+template <Op K>
+struct unary_action {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
     Node n;
-    n.op = Op::Neg;
+    n.op = K;
     n.pos = s.at(in);
     n.a = s.pop();
     s.push(n);
   }
 };
 template <>
-struct action<negation> {
+struct action<negate> : unary_action<Op::Neg> {};
+template <>
+struct action<var> : unary_action<Op::Var> {};
+template <>
+struct action<exists> : unary_action<Op::Exists> {};
+
+// A named parameter: its name without blanks, in lower case (as LinuxCNC reads it).
+template <>
+struct action<named_var> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
+  static void apply(const Input& in, ParseState& s) {
+    std::string name;
+    for (const char c : in.string().substr(2)) {
+      if (c != ' ' && c != '\t' && c != '>') name += char(std::tolower(static_cast<unsigned char>(c)));
+    }
     Node n;
-    n.op = Op::Not;
+    n.op = Op::Named;
     n.pos = s.at(in);
-    n.a = s.pop();
+    n.name = int(s.line.names.size());
+    s.line.names.push_back(name);
     s.push(n);
   }
 };
+
 template <>
-struct action<var> {
+struct action<param_set> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
-    Node n;
-    n.op = Op::Var;
-    n.pos = s.at(in);
-    n.a = s.pop();
-    s.push(n);
+  static void apply(const Input& in, ParseState& s) {
+    Assign a;
+    a.value = s.pop();
+    a.target = s.pop();
+    a.pos = s.at(in);
+    s.line.assigns.push_back(a);
   }
 };
 
 template <>
 struct action<assignment> {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
-    s.stmt = Stmt::Assign;
-    s.value = s.pop();
-    s.target = s.pop();
-    s.stmt_pos = s.at(in);
+  static void apply(const Input& in, ParseState& s) {
+    s.line.stmt = Stmt::Assign;
+    s.line.value = s.pop();
+    s.line.target = s.pop();
+    s.line.stmt_pos = s.at(in);
   }
 };
 template <Stmt K>
 struct stmt_action {
   template <typename Input>
-  static void apply(const Input& in, State& s) {
-    s.stmt = K;
-    if (K == Stmt::While || K == Stmt::If) s.value = s.pop();
-    s.stmt_pos = s.at(in);
+  static void apply(const Input& in, ParseState& s) {
+    s.line.stmt = K;
+    if (K == Stmt::While || K == Stmt::If) s.line.value = s.pop();
+    s.line.stmt_pos = s.at(in);
   }
 };
 template <>
@@ -417,11 +432,125 @@ struct action<kw_else> : stmt_action<Stmt::Else> {};
 template <>
 struct action<kw_endif> : stmt_action<Stmt::EndIf> {};
 
-// One line's text (not a '%' header, at most kMaxLineLength characters) parsed into its
-// words or its statement.
-Line parse_line(std::string_view raw, std::size_t number, const std::string& file) {
-  State s;
-  s.line = number;
+// O-words: the name (a number without its leading zeros, or "<name>" in lower case
+// without blanks), the keyword, the condition or value and a call's arguments.
+template <>
+struct action<o_letter> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    s.line.stmt_pos = s.at(in);
+  }
+};
+template <>
+struct action<o_name> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    std::string name;
+    for (const char c : in.string()) {
+      if (c != ' ' && c != '\t') name += char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    if (name[0] != '<') {
+      const auto nz = name.find_first_not_of('0');
+      name = nz == std::string::npos ? "0" : name.substr(nz);
+    }
+    s.line.oname = name;
+  }
+};
+template <typename R>
+struct o_kw_action {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.line.stmt = R::kind;
+  }
+};
+template <>
+struct action<o_sub> : o_kw_action<o_sub> {};
+template <>
+struct action<o_endsub> : o_kw_action<o_endsub> {};
+template <>
+struct action<o_call> : o_kw_action<o_call> {};
+template <>
+struct action<o_return> : o_kw_action<o_return> {};
+template <>
+struct action<o_if> : o_kw_action<o_if> {};
+template <>
+struct action<o_elseif> : o_kw_action<o_elseif> {};
+template <>
+struct action<o_else> : o_kw_action<o_else> {};
+template <>
+struct action<o_endif> : o_kw_action<o_endif> {};
+template <>
+struct action<o_while> : o_kw_action<o_while> {};
+template <>
+struct action<o_endwhile> : o_kw_action<o_endwhile> {};
+template <>
+struct action<o_do> : o_kw_action<o_do> {};
+template <>
+struct action<o_repeat> : o_kw_action<o_repeat> {};
+template <>
+struct action<o_endrepeat> : o_kw_action<o_endrepeat> {};
+template <>
+struct action<o_break> : o_kw_action<o_break> {};
+template <>
+struct action<o_continue> : o_kw_action<o_continue> {};
+template <>
+struct action<o_condition> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.line.value = s.pop();
+  }
+};
+template <>
+struct action<o_arg> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.line.args.push_back(s.pop());
+  }
+};
+
+template <>
+struct action<fanuc_number> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::string t = in.string();
+    if (t.size() > 8) throw pg::parse_error("a program number of more than 8 digits", in);
+    s.line.header = true;
+    s.line.program = std::stoll(t);
+  }
+};
+
+// A Grbl '$' line or a Fanuc macro statement, which the grammar does not read: their
+// message, or empty.
+std::string foreign_line(std::string_view raw, Dialect d) {
+  std::size_t i = raw.find_first_not_of(" \t");
+  if (i == std::string_view::npos) return {};
+  if (raw[i] == '$') {
+    return "a '$' line is a command to a Grbl controller (settings, homing, jogging) sent by a G-code sender, "
+           "not G-code: remove it from the program";
+  }
+  if (d != Dialect::Fanuc) return {};
+  std::string head;
+  for (; i < raw.size() && head.size() < 5 && std::isalpha(static_cast<unsigned char>(raw[i])) != 0; ++i) {
+    head += char(std::toupper(static_cast<unsigned char>(raw[i])));
+  }
+  if (head == "WHILE" || head == "IF" || head == "GOTO" || (head == "END" && i < raw.size() && raw[i] != 'I')) {
+    return "Fanuc macro B flow control (IF, GOTO, WHILE .. DO, END) is not supported: write the loop out, or use "
+           "--dialect linuxcnc with O-words";
+  }
+  return {};
+}
+
+}  // namespace
+
+// One line's text (not a '%' header, at most kMaxLineLength characters) parsed in the
+// dialect into its words, parameter settings or its statement.
+Line parse_line(std::string_view raw, std::size_t number, const std::string& file, Dialect dialect) {
+  if (const std::string why = foreign_line(raw, dialect); !why.empty()) {
+    throw ProgramError(file, number, raw.find_first_not_of(" \t") + 1, why);
+  }
+  ParseState s;
+  s.dialect = dialect;
+  s.line.number = number;
   pg::memory_input<> in(raw.data(), raw.size(), file);
   try {
     pg::parse<line, action, control>(in, s);
@@ -429,88 +558,7 @@ Line parse_line(std::string_view raw, std::size_t number, const std::string& fil
     const auto& p = e.positions().front();
     throw ProgramError(file, number, p.column, std::string(e.message()));
   }
-  Line l;
-  l.number = number;
-  l.words = std::move(s.words);
-  l.nodes = std::move(s.nodes);
-  l.stmt = s.stmt;
-  l.target = s.target;
-  l.value = s.value;
-  l.stmt_pos = s.stmt_pos;
-  return l;
-}
-
-bool is_end(std::char_traits<char>::int_type c) {
-  return std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof());
-}
-
-}  // namespace
-
-LineStream::LineStream(std::istream& in, const std::string& file) : sb_(in.rdbuf()), file_(file) {
-  const std::streampos bad(std::streamoff(-1));
-  base_ = sb_ ? sb_->pubseekoff(0, std::ios::cur, std::ios::in) : bad;
-  if (base_ == bad) throw InputError(file + ": the program's stream cannot seek");
-  char bom[3];
-  pos_ = std::uint64_t(sb_->sgetn(bom, 3));
-  if (pos_ == 3 && std::string_view(bom, 3) == "\xEF\xBB\xBF") first_.offset = 3;  // a UTF-8 byte-order mark
-  text_.reserve(kMaxLineLength + 1);
-}
-
-void LineStream::seek(std::uint64_t offset) {
-  if (offset == pos_) return;
-  if (sb_->pubseekpos(base_ + std::streamoff(offset), std::ios::in) == std::streampos(std::streamoff(-1))) {
-    throw InputError(file_ + ": the program's stream cannot seek");
-  }
-  pos_ = offset;
-}
-
-void LineStream::take(char c) {
-  if (text_.size() <= kMaxLineLength) text_ += c;
-  ++length_;
-  if (lead_ == Lead::Blanks && c != ' ' && c != '\t') {
-    lead_ = c == '%' ? Lead::Header : Lead::Other;
-    digits_ = lead_ == Lead::Header;
-  } else if (digits_) {
-    // The rest of a '%' line names the program: its number, if digits follow (read
-    // while the number is below 10^8).
-    const std::int64_t n = program_ < 0 ? 0 : program_;
-    digits_ = std::isdigit(static_cast<unsigned char>(c)) && n < 100000000;
-    if (digits_) program_ = 10 * n + (c - '0');
-  }
-}
-
-LinePos LineStream::read(const LinePos& at, Line& out) {
-  seek(at.offset);
-  text_.clear();
-  length_ = 0;
-  lead_ = Lead::Blanks;
-  digits_ = false;
-  program_ = -1;
-  bool cr = false;  // a '\r' held back: dropped if the line ends after it
-  for (;;) {
-    const auto c = sb_->sbumpc();
-    at_end_ = is_end(c);
-    if (at_end_) break;
-    ++pos_;
-    const char ch = std::char_traits<char>::to_char_type(c);
-    if (ch == '\n') break;
-    if (cr) take('\r');
-    cr = ch == '\r';
-    if (!cr) take(ch);
-  }
-  if (lead_ == Lead::Header) {
-    out = Line{};
-    out.number = at.number;
-    out.header = true;
-    out.program = program_;
-  } else if (length_ > kMaxLineLength) {
-    // (Bounds the grammar's and the evaluator's recursion: brackets and signs nest.)
-    throw ProgramError(file_, at.number, kMaxLineLength + 1,
-                       "a line of more than " + std::to_string(kMaxLineLength) + " characters");
-  } else {
-    out = parse_line(text_, at.number, file_);
-  }
-  return LinePos{pos_, at.number + 1};
+  return std::move(s.line);
 }
 
 }  // namespace dda::program::detail

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: Apache-2.0
+// Inside the program reader: the interpreter of a program's lines (docs/programs.md). Its
+// parts: the flow (program_flow.cpp: the passes, HNC's statements and calls, LinuxCNC's
+// O-words), a block's words and modal state (program_block.cpp: G and M codes, the
+// offsets) and its motion (program_motion.cpp: lines, arcs and ellipses on the plane).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "program/program.hpp"
+#include "program_detail.hpp"
+#include "program_macro.hpp"
+
+namespace dda::program::detail {
+
+// Every length and position stays within 1000000 mm (1e12 nm), far inside 64 bits.
+inline constexpr Length kMaxLength = 1000000 * kNmPerMm;
+
+std::int64_t pow10(int n);
+double length_mm(Length l);
+
+// The modal state besides the position and offsets.
+struct Modal {
+  int motion = -1;  // G-code in tenths: 0, 10, 20, 30, 62, 63; -1: none yet
+  int plane = 170;
+  bool inch = false;
+  bool incremental = false;
+  bool ijk_absolute = false;  // G90.1: arc centres absolute
+  bool diameter = false;      // X (and U) as diameters: G7 (LinuxCNC) or G36 (HNC, Fanuc lathes)
+  bool inverse_time = false;  // G93
+  int cs = 0;                 // the work offset in force: 0 G54 .. 8 G59.3
+  double feed = 0;
+};
+
+// Where the interpreter's results go besides the summary: each move, and how many
+// ignored words to keep.
+struct Output {
+  const std::function<void(const Move&)>& on_move;
+  std::size_t keep_ignored;
+};
+
+// The axes X, Y and Z by index.
+using Axes = std::array<Length, 3>;
+
+class Reader {
+ public:
+  Reader(std::istream& in, const std::string& file, const ReadOptions& opt, const Output& out);
+  ReadSummary run();
+
+  // The modal groups of the G codes, one code of each in a block.
+  enum Group : std::size_t {
+    kMotion,
+    kPlane,
+    kUnits,
+    kDistance,
+    kArcDistance,
+    kFeedMode,
+    kXMode,
+    kComp,
+    kToolLength,
+    kWork,
+    kPath,
+    kReturn,
+    kSpindle,
+    kNonModal,
+    kGroups
+  };
+  // A block's words sorted by kind: its N, its G codes by group, its other words by
+  // letter (axes, centre offsets, parameters), and what its M codes ask for.
+  struct Block {
+    std::optional<std::int64_t> n;
+    std::array<const Word*, kGroups> group{};
+    std::map<char, const Word*> axes;
+    const Word* feed = nullptr;
+    bool end = false;              // M02 or M30: the program ends after the block
+    std::optional<SourcePos> m98;  // M98: the block calls a subprogram
+  };
+
+ private:
+  [[noreturn]] void fail(const SourcePos& p, const std::string& msg) const {
+    throw ProgramError(file_, p.line, p.column, msg);
+  }
+  std::string name(const Word& w) const { return std::string(1, w.letter) + w.text; }
+  Length length(const Word& w) const;
+  int tenths(const Word& w) const;
+  std::int64_t integer(const Word& w) const;
+  void ignore(const Word& w);
+
+  // Flow (program_flow.cpp).
+  Dialect detect();
+  struct Call {
+    std::int64_t program = 0, repeats = 1;
+    SourcePos pos;
+  };
+  void exec(const LinePos& begin, std::size_t end, int depth);
+  LinePos step(const Line& l, const LinePos& at, const LinePos& next, int depth);
+  LinePos o_step(const Line& l, const LinePos& at, const LinePos& next, int depth);
+  LinePos o_branch(std::size_t mark);
+  void call(const Call& c, int depth);
+  void o_call(const Line& l, int depth);
+
+  // Blocks (program_block.cpp).
+  void block(const Line& l);
+  void sort_word(const Word& w, Block& b);
+  void g_code(const Word& w, Block& b);
+  bool g_recorded(int g, const Word& w, Block& b);
+  void m_code(const Word& w, Block& b);
+  void set_group(Block& b, Group g, const Word& w, const char* what) const;
+  void set_modes(const Block& b);
+  void dwell(const Block& b);
+  Call m98_call(const Block& b) const;
+  void non_modal(const Block& b);
+  void set_offsets(const Block& b);
+  void home(const Block& b, int g);
+  void traverse(const Axes& to, const Block& b, const SourcePos& where);
+  void consume(Block& b);
+  void sync_params();
+  void sync_position();
+  Length offset(int axis) const;
+  Axes word_axes(const Block& b, bool machine, Axes base) const;
+
+  // Motion (program_motion.cpp).
+  void fix_lattice();
+  void motion(const Block& b, const SourcePos& where, bool machine);
+  void emit(Move& mv, const Axes& to);
+  Axes target(const Block& b, bool machine, const SourcePos& where);
+  void check_letters(const Block& b) const;
+  void arc(Move& mv, const Block& b, const SourcePos& where);
+  void arc_by_centre(Move& mv, const Block& b, const SourcePos& where);
+  void arc_by_radius(Move& mv, const Word& r, const SourcePos& where);
+  void ellipse(Move& mv, const Block& b, const SourcePos& where);
+
+  // The plane's axes: u, v and the normal w as indices of X, Y, Z; the letters of the
+  // centre words along u and v.
+  struct PlaneAxes {
+    int u, v, w;
+    char iu, iv;
+  };
+  static PlaneAxes plane_axes(int plane);
+
+  std::string file_;
+  ReadOptions opt_;
+  Output out_;
+  Dialect dialect_ = Dialect::LinuxCnc;
+  Modal m_;
+  ReadSummary sum_;
+  Axes pos_{};       // the tool, in machine coordinates (nm; X a radius)
+  int lattice_ = 0;  // the plane of the two axes, fixed by the first block that needs the position
+  // Offsets (nm): the work offsets G54-G59.3, G92's (or G52's) and the tool length's.
+  std::array<Axes, 9> work_{};
+  Axes g92_{};
+  Axes g92_stored_{};  // G92.3 restores it
+  Length tool_length_ = 0;
+  Axes g28_{}, g30_{};  // G28.1 and G30.1's stored positions (machine)
+  Macro macro_;
+  LineStream lines_;
+  Structure st_;
+  std::uint64_t executed_ = 0;
+  std::optional<Call> call_;                     // M98 in the block just run
+  bool return_ = false;                          // M99, or LinuxCNC's endsub or return, in the line just run
+  std::map<std::size_t, std::int64_t> repeats_;  // o.. repeat: passes left, by its mark
+};
+
+}  // namespace dda::program::detail
