@@ -71,16 +71,20 @@ void Reader::block(const Line& l) {
     fail(*b.m98, "M98 in a dwell (G04) block: a call stands in its own block");
   }
   consume(b);
-  const int non_modal_code = b.group[kNonModal] ? tenths(*b.group[kNonModal]) : -1;
+  int non_modal_code = b.group[kNonModal] ? tenths(*b.group[kNonModal]) : -1;
   if (non_modal_code == 40) {
     dwell(b);
-  } else if (b.m98) {
+    non_modal_code = -1;  // (in LinuxCNC the block's axis words move after the dwell)
+  }
+  if (b.m98) {
     call_ = m98_call(b);
   } else if (non_modal_code >= 0 && non_modal_code != 530) {
     non_modal(b);
   } else {
     const bool arc = m_.motion == 20 || m_.motion == 30;
-    if (!b.axes.empty() || (b.group[kMotion] && arc)) {
+    // (LinuxCNC moves on G00 or G01 without an axis word too: a move of length 0.)
+    const bool still = dialect_ == Dialect::LinuxCnc && b.group[kMotion] && (m_.motion == 0 || m_.motion == 10);
+    if (!b.axes.empty() || (b.group[kMotion] && arc) || still) {
       motion(b, b.group[kMotion] ? b.group[kMotion]->pos : words.front().pos, non_modal_code == 530);
     } else if (non_modal_code == 530) {
       fail(b.group[kNonModal]->pos, "G53 moves in machine coordinates: it needs an axis word");
@@ -206,8 +210,9 @@ bool Reader::g_recorded(int g, const Word& w, Block& b) {
       set_group(b, hnc_lathe_feed ? kFeedMode : kReturn, w, hnc_lathe_feed ? "feed mode" : "return mode");
       if (!hnc_lathe_feed) ignore(w);
       return true;
-    case 800:  // canned cycle cancel
-      set_group(b, kMotion, w, "motion");
+    case 800:  // canned cycle cancel: no motion mode, unless the block gives one
+      b.cancel_cycle = true;
+      ignore(w);
       return true;
     case 330:
     case 331:
@@ -237,6 +242,12 @@ bool Reader::g_recorded(int g, const Word& w, Block& b) {
       fail(w.pos, name(w) +
                       ": canned cycles (G73, G74, G81-G89) are not supported until the third axis: they move "
                       "along the axis normal to the plane");
+    case 700:
+    case 710:
+    case 711:
+    case 720:
+    case 721:
+      fail(w.pos, name(w) + ": lathe turning cycles (G70, G71, G72) are not supported: program the passes");
     case 150:
     case 160:
       fail(w.pos, name(w) + ": polar coordinates (G15, G16) are not supported");
@@ -307,7 +318,8 @@ void Reader::set_modes(const Block& b) {
   }
   if (b.group[kDistance]) m_.incremental = tenths(*b.group[kDistance]) == 910;
   if (b.group[kArcDistance]) m_.ijk_absolute = tenths(*b.group[kArcDistance]) == 901;
-  if (b.group[kMotion]) m_.motion = tenths(*b.group[kMotion]) == 800 ? -1 : tenths(*b.group[kMotion]);
+  if (b.group[kMotion]) m_.motion = tenths(*b.group[kMotion]);
+  if (b.cancel_cycle && !b.group[kMotion]) m_.motion = -1;
 }
 
 // The words a block's other codes read, recorded and taken out of its axes: H with
@@ -327,14 +339,21 @@ void Reader::consume(Block& b) {
   }
 }
 
-// G04: P (or, on HNC and Fanuc, X or U) is the dwell time, nothing moves.
-void Reader::dwell(const Block& b) {
+// G04: P (or, on HNC and Fanuc, X or U) is the dwell time, nothing moves (in LinuxCNC
+// the block's axis words move after the dwell: P is taken out of its words).
+void Reader::dwell(Block& b) {
+  if (dialect_ == Dialect::LinuxCnc) {
+    const auto p = b.axes.find('P');
+    if (p == b.axes.end()) fail(b.group[kNonModal]->pos, "G04 needs P, the dwell time in seconds");
+    ignore(*p->second);
+    b.axes.erase(p);
+    return;
+  }
   for (const auto& [c, w] : b.axes) {
-    if (c != 'P' && (dialect_ == Dialect::LinuxCnc || (c != 'X' && c != 'U'))) {
-      fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
-    }
+    if (c != 'P' && c != 'X' && c != 'U') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
     ignore(*w);
   }
+  b.axes.clear();  // (the time, not a move)
 }
 
 // M98 P (program number) L (repeats, default 1), or Fanuc's P of more than four digits:

@@ -132,8 +132,8 @@ std::string message(std::string_view rest) {
   } else if constexpr (std::is_same_v<Rule, name_close> || std::is_same_v<Rule, name_text> ||
                        std::is_same_v<Rule, o_name_text>) {
     return "'>' expected: a name in angle brackets must close on its line";
-  } else if constexpr (std::is_same_v<Rule, exists_close> || std::is_same_v<Rule, named_var>) {
-    return "EXISTS takes one named parameter: EXISTS[#<name>]";
+  } else if constexpr (std::is_same_v<Rule, exists_close> || std::is_same_v<Rule, var_ref>) {
+    return "EXISTS takes one parameter: EXISTS[#<name>]";
   } else if constexpr (std::is_same_v<Rule, assign_eq>) {
     return "'=' expected: a macro variable at the start of a line is assigned (#n = expression)";
   } else if constexpr (std::is_same_v<Rule, set_eq>) {
@@ -150,6 +150,7 @@ std::string message(std::string_view rest) {
   } else {
     if (c == ')') return "')' closes no comment";
     if (c == '(') return "a comment inside a comment: LinuxCNC refuses nested comments";
+    if (c == '@' || c == '^') return "polar coordinates (@ and ^ words) are not supported";
     return "unexpected " + describe_char(rest);
   }
 }
@@ -319,6 +320,16 @@ struct action<func_name> {
   static void apply(const Input& in, ParseState& s) {
     Node n;
     n.op = op_named(in.string());
+    n.pos = s.at(in);
+    s.ops.push_back(n);
+  }
+};
+template <>
+struct action<atan_name> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    Node n;
+    n.op = Op::Atan;
     n.pos = s.at(in);
     s.ops.push_back(n);
   }

@@ -43,10 +43,14 @@ double Macro::eval(const Line& l, int node) {
       return variable(l, n);
     case Op::Named:
       return named(l, n);
-    case Op::Exists: {
-      const std::string& name = l.names[std::size_t(l.nodes[std::size_t(n.a)].name)];
-      const auto* scope = named_scope(name);
-      return scope->count(name) ? 1 : 0;
+    case Op::Exists: {  // a named parameter with a value, or a numbered one in range
+      const Node& v = l.nodes[std::size_t(n.a)];
+      if (v.op == Op::Var) {
+        const double k = std::round(eval(l, v.a));
+        return k >= 1 && k <= double(kMaxParameter) ? 1 : 0;
+      }
+      const std::string& name = l.names[std::size_t(v.name)];
+      return named_scope(name)->count(name) ? 1 : 0;
     }
     case Op::Neg:
       return -eval(l, n.a);
@@ -330,16 +334,14 @@ class Builder {
     std::vector<std::size_t> chain;  // an if's marks so far
   };
   std::vector<OOpen> o_open_;                      // open O-word blocks
-  bool percent_ = false;                           // LinuxCNC, Fanuc: the opening '%' seen
   std::optional<ProgramError> twice_, unmatched_;  // a program defined twice; a statement unmatched
 };
 
 bool Builder::add(const Line& l, const LinePos& at, const LinePos& next) {
   if (l.header && l.program < 0 && dialect_ != Dialect::Hnc) {
-    // LinuxCNC and Fanuc: '%' opens the text and the next '%' ends it (what follows is
-    // not read), unless nothing came before it.
-    if (percent_ && cur_.content) return false;
-    percent_ = true;
+    // LinuxCNC and Fanuc: a '%' before anything else opens the text, one after it ends
+    // the text (what follows is not read).
+    if (cur_.content) return false;
     cur_.begin = next;
     return true;
   }

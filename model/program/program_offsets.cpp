@@ -16,6 +16,7 @@ namespace dda::program::detail {
 namespace {
 
 int axis_of(char c) { return c == 'X' ? 0 : c == 'Y' ? 1 : c == 'Z' ? 2 : -1; }
+bool other_axis(char c) { return std::string_view("ABCUVW").find(c) != std::string_view::npos; }
 
 }  // namespace
 
@@ -69,6 +70,10 @@ void Reader::non_modal(const Block& b) {
     case 920:
       for (const auto& [c, w] : b.axes) {
         const int a = axis_of(c);
+        if (a < 0 && other_axis(c)) {
+          ignore(*w);  // (an offset of an axis the machine does not have: recorded)
+          continue;
+        }
         if (a < 0) fail(w->pos, std::string(1, c) + " in a " + (g == 520 ? "G52" : "G92") + " block");
         Length v = length(*w);
         if (a == 0 && m_.diameter) v /= 2;
@@ -112,6 +117,10 @@ void Reader::set_offsets(const Block& b) {
     if (c == 'R' && length(*w) != 0) fail(w->pos, "coordinate system rotation (G10 L2 R) is not supported");
     if (c == 'R') continue;
     const int a = axis_of(c);
+    if (a < 0 && other_axis(c)) {
+      ignore(*w);
+      continue;
+    }
     if (a < 0) fail(w->pos, std::string(1, c) + " in a G10 block");
     Length v = length(*w);
     if (a == 0 && m_.diameter) v /= 2;
@@ -120,8 +129,9 @@ void Reader::set_offsets(const Block& b) {
   }
 }
 
-// G28 / G30: a rapid to the point the axis words give (if any), then to the stored
-// position, on those axes only (all of them without axis words).
+// G28 / G30: a rapid to the point the axis words give (the tool's position without
+// them), then to the stored position, on those axes only (all of them without axis
+// words).
 void Reader::home(const Block& b, int g) {
   const Axes& stored = g == 280 ? g28_ : g30_;
   Axes to = stored;
@@ -131,9 +141,9 @@ void Reader::home(const Block& b, int g) {
     words = true;
   }
   const SourcePos where = b.group[kNonModal]->pos;
+  // (LinuxCNC moves to the point between even without axis words: a move of length 0.)
+  traverse(word_axes(b, false, pos_), b, where);
   if (words) {
-    const Axes mid = word_axes(b, false, pos_);
-    traverse(mid, b, where);
     to = pos_;
     for (const auto& [c, w] : b.axes) to[std::size_t(axis_of(c))] = stored[std::size_t(axis_of(c))];
   }

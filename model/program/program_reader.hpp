@@ -79,6 +79,7 @@ class Reader {
     std::map<char, const Word*> axes;
     const Word* feed = nullptr;
     bool end = false;              // M02 or M30: the program ends after the block
+    bool cancel_cycle = false;     // G80
     std::optional<SourcePos> m98;  // M98: the block calls a subprogram
   };
 
@@ -113,7 +114,7 @@ class Reader {
   void m_code(const Word& w, Block& b);
   void set_group(Block& b, Group g, const Word& w, const char* what) const;
   void set_modes(const Block& b);
-  void dwell(const Block& b);
+  void dwell(Block& b);
   Call m98_call(const Block& b) const;
   void non_modal(const Block& b);
   void set_offsets(const Block& b);

@@ -53,10 +53,10 @@ struct keyword : pg::seq<Kw, pg::not_at<pg::alnum>> {};
 struct kw_pi : keyword<TAO_PEGTL_ISTRING("PI")> {};
 struct kw_not : keyword<TAO_PEGTL_ISTRING("NOT")> {};
 struct func_name
-    : pg::sor<TAO_PEGTL_ISTRING("SIN"), TAO_PEGTL_ISTRING("COS"), TAO_PEGTL_ISTRING("TAN"), TAO_PEGTL_ISTRING("ATAN"),
-              TAO_PEGTL_ISTRING("ASIN"), TAO_PEGTL_ISTRING("ACOS"), TAO_PEGTL_ISTRING("SQRT"), TAO_PEGTL_ISTRING("ABS"),
-              TAO_PEGTL_ISTRING("INT"), TAO_PEGTL_ISTRING("FIX"), TAO_PEGTL_ISTRING("FUP"), TAO_PEGTL_ISTRING("ROUND"),
-              TAO_PEGTL_ISTRING("EXP"), TAO_PEGTL_ISTRING("LN")> {};
+    : pg::sor<TAO_PEGTL_ISTRING("SIN"), TAO_PEGTL_ISTRING("COS"), TAO_PEGTL_ISTRING("TAN"), TAO_PEGTL_ISTRING("ASIN"),
+              TAO_PEGTL_ISTRING("ACOS"), TAO_PEGTL_ISTRING("SQRT"), TAO_PEGTL_ISTRING("ABS"), TAO_PEGTL_ISTRING("INT"),
+              TAO_PEGTL_ISTRING("FIX"), TAO_PEGTL_ISTRING("FUP"), TAO_PEGTL_ISTRING("ROUND"), TAO_PEGTL_ISTRING("EXP"),
+              TAO_PEGTL_ISTRING("LN")> {};
 struct word_op
     : pg::seq<
           pg::sor<TAO_PEGTL_ISTRING("EQ"), TAO_PEGTL_ISTRING("NE"), TAO_PEGTL_ISTRING("GT"), TAO_PEGTL_ISTRING("GE"),
@@ -73,16 +73,19 @@ struct name_close : pg::one<'>'> {};
 struct name_text : pg::star<pg::not_one<'>', '\r', '\n'>> {};
 struct named_var : pg::seq<pg::one<'#'>, pg::one<'<'>, pg::must<name_text, name_close>> {};
 struct var;
-struct var_index : pg::sor<expr_number, bracket, named_var, var> {};
+struct func;
+struct var_index : pg::sor<expr_number, bracket, named_var, var, func> {};
 struct var : pg::if_must<pg::one<'#'>, var_index> {};
 struct var_ref : pg::sor<named_var, var> {};
 struct func_arg : bracket {};
 // ATAN[a]/[b]: LinuxCNC's and Fanuc's two-argument arc tangent (in HNC, '/' divides).
 struct atan2_tail
     : pg::seq<in_dialect<Dialect::LinuxCnc, Dialect::Fanuc>, ws, pg::one<'/'>, ws, pg::at<pg::one<'['>>, bracket> {};
-struct func : pg::if_must<func_name, ws, func_arg, pg::opt<atan2_tail>> {};
+struct atan_name : TAO_PEGTL_ISTRING("ATAN") {};
+struct func : pg::sor<pg::if_must<atan_name, ws, func_arg, pg::opt<atan2_tail>>, pg::if_must<func_name, ws, func_arg>> {
+};
 struct exists_close : pg::one<']'> {};
-struct exists : pg::if_must<keyword<TAO_PEGTL_ISTRING("EXISTS")>, ws, pg::one<'['>, ws, named_var, ws, exists_close> {};
+struct exists : pg::if_must<keyword<TAO_PEGTL_ISTRING("EXISTS")>, ws, pg::one<'['>, ws, var_ref, ws, exists_close> {};
 struct primary : pg::sor<expr_number, var_ref, bracket, kw_pi, exists, func> {};
 struct unary;
 struct negate : pg::if_must<pg::one<'-'>, ws, unary> {};
@@ -134,28 +137,29 @@ struct o_kw : keyword<Kw> {
   static constexpr Stmt kind = K;
 };
 struct o_sub : o_kw<Stmt::OSub, TAO_PEGTL_ISTRING("SUB")> {};
-struct o_endsub : o_kw<Stmt::OEndSub, TAO_PEGTL_ISTRING("ENDSUB")> {};
+struct o_endsub : o_kw<Stmt::OEndSub, pg::seq<TAO_PEGTL_ISTRING("END"), ws, TAO_PEGTL_ISTRING("SUB")>> {};
 struct o_call : o_kw<Stmt::OCall, TAO_PEGTL_ISTRING("CALL")> {};
 struct o_return : o_kw<Stmt::OReturn, TAO_PEGTL_ISTRING("RETURN")> {};
 struct o_if : o_kw<Stmt::OIf, TAO_PEGTL_ISTRING("IF")> {};
-struct o_elseif : o_kw<Stmt::OElseIf, TAO_PEGTL_ISTRING("ELSEIF")> {};
+struct o_elseif : o_kw<Stmt::OElseIf, pg::seq<TAO_PEGTL_ISTRING("ELSE"), ws, TAO_PEGTL_ISTRING("IF")>> {};
 struct o_else : o_kw<Stmt::OElse, TAO_PEGTL_ISTRING("ELSE")> {};
-struct o_endif : o_kw<Stmt::OEndIf, TAO_PEGTL_ISTRING("ENDIF")> {};
+struct o_endif : o_kw<Stmt::OEndIf, pg::seq<TAO_PEGTL_ISTRING("END"), ws, TAO_PEGTL_ISTRING("IF")>> {};
 struct o_while : o_kw<Stmt::OWhile, TAO_PEGTL_ISTRING("WHILE")> {};
-struct o_endwhile : o_kw<Stmt::OEndWhile, TAO_PEGTL_ISTRING("ENDWHILE")> {};
+struct o_endwhile : o_kw<Stmt::OEndWhile, pg::seq<TAO_PEGTL_ISTRING("END"), ws, TAO_PEGTL_ISTRING("WHILE")>> {};
 struct o_do : o_kw<Stmt::ODo, TAO_PEGTL_ISTRING("DO")> {};
 struct o_repeat : o_kw<Stmt::ORepeat, TAO_PEGTL_ISTRING("REPEAT")> {};
-struct o_endrepeat : o_kw<Stmt::OEndRepeat, TAO_PEGTL_ISTRING("ENDREPEAT")> {};
+struct o_endrepeat : o_kw<Stmt::OEndRepeat, pg::seq<TAO_PEGTL_ISTRING("END"), ws, TAO_PEGTL_ISTRING("REPEAT")>> {};
 struct o_break : o_kw<Stmt::OBreak, TAO_PEGTL_ISTRING("BREAK")> {};
 struct o_continue : o_kw<Stmt::OContinue, TAO_PEGTL_ISTRING("CONTINUE")> {};
 struct o_condition : bracket {};  // the condition, count or value
 struct o_arg : bracket {};        // a call's argument
 struct o_keyword_expected : pg::failure {};
-struct o_statement : pg::sor<pg::if_must<pg::sor<o_if, o_elseif, o_while, o_repeat>, ws, o_condition>,
-                             pg::seq<pg::sor<o_endsub, o_return>, pg::opt<ws, pg::at<pg::one<'['>>, o_condition>>,
-                             pg::seq<o_call, pg::star<ws, pg::at<pg::one<'['>>, o_arg>>,
-                             pg::sor<o_sub, o_else, o_endif, o_endwhile, o_do, o_endrepeat, o_break, o_continue>,
-                             pg::must<o_keyword_expected>> {};
+struct o_statement
+    : pg::sor<pg::if_must<pg::sor<o_if, o_elseif, o_while, o_repeat>, ws, o_condition>,
+              pg::seq<pg::sor<o_endsub, o_return>, pg::opt<ws, pg::at<pg::one<'['>>, o_condition>>,
+              pg::seq<o_call, pg::star<pg::star<pg::sor<blank, paren_comment>>, pg::at<pg::one<'['>>, o_arg>>,
+              pg::sor<o_sub, o_else, o_endif, o_endwhile, o_do, o_endrepeat, o_break, o_continue>,
+              pg::must<o_keyword_expected>> {};
 struct o_letter : pg::one<'O', 'o'> {};
 struct oword_line
     : pg::seq<in_dialect<Dialect::LinuxCnc>, pg::at<lead, pg::opt<n_raw, lead>, o_letter, ws, o_name, ws, pg::alpha>,
