@@ -3,7 +3,8 @@
 # Fuzzing of the part-program reader (not in the default suite): builds the libFuzzer
 # target tests/fuzz/fuzz_program.cpp with clang under AddressSanitizer and
 # UndefinedBehaviorSanitizer, runs it for SECONDS (default 600) from the seed programs
-# of tests/fuzz/corpus (G-code and macro programs), and prints libFuzzer's executions and coverage; then builds the
+# of tests/fuzz/corpus and the project's LinuxCNC programs tests/programs/dda (G-code,
+# HNC macro programs, LinuxCNC O-words, offsets, Fanuc programs), and prints libFuzzer's executions and coverage; then builds the
 # reader's tests (tests/test_program.cpp) under the same sanitizers and runs them.
 # Exits non-zero on a crash, a sanitizer report or a failed test.
 #   usage: scripts/fuzz-program.sh [SECONDS]
@@ -12,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-600}
 out=${DDA_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
-cp "$root"/tests/fuzz/corpus/* "$out/corpus/"
+cp "$root"/tests/fuzz/corpus/* "$root"/tests/programs/dda/*.ngc "$out/corpus/"
 # The fuzz target and the sanitized tests are CMake targets (DDA_FUZZ: the model's
 # libraries only, built with clang).
 CXX=clang++ cmake -S "$root" -B "$out/build" -DDDA_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null

@@ -113,6 +113,7 @@ struct Line {
   std::size_t number = 0;     // 1-based
   bool header = false;        // a '%' line, or a Fanuc 'O1234' line: a program's start
   std::int64_t program = -1;  // its number (%2: 2), -1 if it has none
+  bool header_text = false;   // a '%' line with more than the '%' and a number
   bool block_delete = false;  // starts with '/'
   std::vector<Word> words;
   std::vector<Node> nodes;
@@ -178,6 +179,7 @@ class LineStream {
   std::size_t length_ = 0;
   enum class Lead { Blanks, Header, Other } lead_ = Lead::Blanks;
   bool digits_ = false;  // in the header's digits
+  bool header_text_ = false;
   std::int64_t program_ = -1;
 };
 

@@ -47,6 +47,7 @@ void LineStream::take(char c) {
     digits_ = std::isdigit(static_cast<unsigned char>(c)) && n < 100000000;
     if (digits_) program_ = 10 * n + (c - '0');
   }
+  if (lead_ == Lead::Header && !digits_ && c != '%' && c != ' ' && c != '\t') header_text_ = true;
 }
 
 void LineStream::scan(const LinePos& at) {
@@ -56,6 +57,7 @@ void LineStream::scan(const LinePos& at) {
   lead_ = Lead::Blanks;
   digits_ = false;
   program_ = -1;
+  header_text_ = false;
   std::size_t cr = 0;
   for (;;) {
     const auto c = sb_->sbumpc();
@@ -86,6 +88,7 @@ LinePos LineStream::read(const LinePos& at, Line& out) {
     out.number = at.number;
     out.header = true;
     out.program = program_;
+    out.header_text = header_text_;
   } else if (length_ > kMaxLineLength) {
     // (Bounds the grammar's and the evaluator's recursion: brackets and signs nest.)
     throw ProgramError(file_, at.number, kMaxLineLength + 1,

@@ -338,6 +338,9 @@ class Builder {
 };
 
 bool Builder::add(const Line& l, const LinePos& at, const LinePos& next) {
+  if (l.header && l.header_text && dialect_ == Dialect::LinuxCnc) {
+    defer(unmatched_, SourcePos{l.number, 1}, "a '%' line holds nothing but the '%' (LinuxCNC's rule)");
+  }
   if (l.header && l.program < 0 && dialect_ != Dialect::Hnc) {
     // LinuxCNC and Fanuc: a '%' before anything else opens the text, one after it ends
     // the text (what follows is not read).
