@@ -67,12 +67,26 @@ ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point
   while (s.bits > nmin && drift(s.bits) > kMaxCoefficientDrift) --s.bits;
   if (drift(s.bits) > kMaxCoefficientDrift) {
     throw InputError(
-        fmt::format("the ellipse is too thin for the datapath: semi-axes {:.6g} and {:.6g} steps; the "
+        fmt::format("the ellipse is too thin for the datapath at --step {} mm: semi-axes {:.6g} and {:.6g} steps; the "
                     "rounding of its fixed-point coefficients could move the curve by {:.3g} steps (at "
-                    "most {})",
-                    mx, mn, drift(s.bits), kMaxCoefficientDrift));
+                    "most {}): a coarser --step makes it fit",
+                    double(step) / double(kNmPerMm), mx, mn, drift(s.bits), kMaxCoefficientDrift));
   }
   return s;
+}
+
+// The block as a full turn from its start (the extra turns of an arc with P).
+Move full_turn(const Move& mv) {
+  Move m = mv;
+  m.to = m.from;
+  m.full = true;
+  return m;
+}
+
+// Puts `more`'s pieces before `plan`'s (an arc's extra turns run first, from its start).
+void prepend(Plan& plan, const Plan& more) {
+  plan.pieces.insert(plan.pieces.begin(), more.pieces.begin(), more.pieces.end());
+  plan.iteration_bound += more.iteration_bound;
 }
 
 // Whether a block turns half a turn or more about its centre from its start to its end,
@@ -152,10 +166,12 @@ void BlockPlanner::plan_front() {
   try {
     if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
       if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
-    } else if (b.from != b.to || mv.full || half_turn_or_more(mv)) {
+    } else if (b.from != b.to || mv.full || half_turn_or_more(mv) || mv.turns > 1) {
       // (A block whose rounded ends coincide and that sweeps less than half a turn is
       // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
-      b.plan = plan_arc(arc_spec(mv, step, opt_.preload, b.from, b.to));
+      b.plan = plan_curve(mv, b.from, b.to);
+      // An arc of several turns (P): its full turns first, from its start.
+      for (int k = 1; k < mv.turns; ++k) prepend(b.plan, plan_curve(full_turn(mv), b.from, b.from));
     }
   } catch (const ProgramError&) {
     throw;
@@ -168,6 +184,11 @@ void BlockPlanner::plan_front() {
   at_ = b.to;
   held_.pop_front();
   on_block_(std::move(b));
+}
+
+Plan BlockPlanner::plan_curve(const Move& mv, Point from, Point to) const {
+  if (beyond_datapath(mv, opt_.step)) return plan_chords(mv, opt_.step, opt_.preload, from, to);
+  return plan_arc(arc_spec(mv, opt_.step, opt_.preload, from, to));
 }
 
 void BlockPlanner::finish() {

@@ -43,6 +43,14 @@ std::int64_t to_sub_steps(Length v, Length step);
 Point on_lattice(Point2 p, Length step);
 double rounding(Point q, Point2 p, Length step);
 
+// Arcs of a radius beyond kMaxDatapathRadius steps (the sub-step geometry's semi-axes
+// hold 2^20 steps) run as chords: lines between lattice points next to the circle, each
+// chord's sagitta at most kChordSagitta steps (program_chords.cpp).
+inline constexpr std::int64_t kMaxDatapathRadius = (std::int64_t{1} << 20) - 2;
+inline constexpr double kChordSagitta = 0.05;
+bool beyond_datapath(const Move& mv, Length step);
+Plan plan_chords(const Move& mv, Length step, Preload preload, Point from, Point to);
+
 struct BlockPlan {
   Move move;
   Point from, to;               // lattice ends; `to` is the programmed end rounded
@@ -82,6 +90,7 @@ class BlockPlanner {
 
  private:
   void plan_front();
+  Plan plan_curve(const Move& mv, Point from, Point to) const;
   LatticeOptions opt_;
   std::string file_;
   std::size_t window_;
