@@ -214,8 +214,9 @@ TEST_CASE("program plan: refusals name the block", "[program]") {
         "17-bit field: it must be in [0, 2^17) (hw_params.hpp)");
   // An ellipse too thin for the fixed-point coefficients at any width, at the block.
   CHECK(error_of("N5 G01 X100 Y0\nN6 G6.3 X-100 Y0 A100 B0.00001 I-100 J0\n") ==
-        "p.nc:2:4: block N6 (ellipse ccw): the ellipse is too thin for the datapath: semi-axes 100000 and 0.00976562 "
-        "steps; the rounding of its fixed-point coefficients could move the curve by 238 steps (at most 0.125)");
+        "p.nc:2:4: block N6 (ellipse ccw): the ellipse is too thin for the datapath at --step 0.001 mm: semi-axes "
+        "100 mm and 9.76563e-06 mm (100000 and 0.00976562 steps); the rounding of its fixed-point coefficients "
+        "could move the curve by 238 steps (at most 0.125); a coarser --step lowers it");
   // A thin one (aspect 1000) runs: its width is lowered until the coefficients hold it.
   CHECK(error_of("N5 G01 X30 Y0\nN6 G6.3 X-30 Y0 A30 B0.03 I-30 J0\n").empty());
 }
@@ -232,6 +233,40 @@ TEST_CASE("program plan: large arcs keep the width where the targets hold", "[pr
     CHECK(m.max_dev[1] <= 0.8);
     CHECK(m.end[1] == pp.blocks[1].to);
   }
+}
+
+TEST_CASE("program plan: arcs beyond the datapath's radius run as chords within the target", "[program]") {
+  // A quarter of a circle of radius 2 m and a 20 mm arc of radius 35 m, at 0.001 mm (2^20
+  // steps is about 1048 mm): lines between lattice points next to the circle.
+  for (const std::string text : {"G01 X2000 Y0\nG03 X0 Y2000 I-2000 J0\n", "G03 X20 Y0.3 R35000\n"}) {
+    const ProgramPlan pp = plan_text(text);
+    const BlockPlan& arc = pp.blocks.back();
+    INFO(text);
+    CHECK(beyond_datapath(arc.move, pp.lattice.step));
+    CHECK(arc.plan.pieces.size() > 1);
+    const Measured m = measure(pp);
+    CHECK(m.max_dev.back() <= block_target(arc, 0, Preload::Half));
+    CHECK(m.max_dev.back() > 0.2);  // the measure sees the path
+    CHECK(m.end.back() == arc.to);
+  }
+}
+
+TEST_CASE("program plan: an arc of several turns runs its full turns first", "[program]") {
+  const ProgramPlan one = plan_text("G01 X10 Y0\nG03 X0 Y10 I-10 J0\n");
+  ReadOptions lcnc;
+  lcnc.dialect = Dialect::LinuxCnc;  // (P on an arc is LinuxCNC's)
+  const ProgramPlan three =
+      plan_program(read("F1\nG01 X10 Y0\nG03 X0 Y10 I-10 J0 P3\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+  const auto iterations = [](const ProgramPlan& pp) {
+    std::uint64_t n = 0;
+    run(pp.plan, [&](const Iteration&) { ++n; });
+    return n;
+  };
+  const ProgramPlan full = plan_text("G01 X10 Y0\nG03 X10 Y0 I-10 J0\n");
+  CHECK(iterations(three) - iterations(one) == 2 * (iterations(full) - iterations(plan_text("G01 X10 Y0\n"))));
+  const Measured m = measure(three);
+  CHECK(m.max_dev.back() <= 0.8);
+  CHECK(m.end.back() == three.blocks.back().to);
 }
 
 TEST_CASE("program plan: the block targets", "[program]") {

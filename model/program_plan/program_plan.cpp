@@ -66,11 +66,12 @@ ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point
   const auto drift = [&](int n) { return std::ldexp(mx * mx / mn, n - kRotCapBits); };
   while (s.bits > nmin && drift(s.bits) > kMaxCoefficientDrift) --s.bits;
   if (drift(s.bits) > kMaxCoefficientDrift) {
-    throw InputError(
-        fmt::format("the ellipse is too thin for the datapath at --step {} mm: semi-axes {:.6g} and {:.6g} steps; the "
-                    "rounding of its fixed-point coefficients could move the curve by {:.3g} steps (at "
-                    "most {}): a coarser --step makes it fit",
-                    double(step) / double(kNmPerMm), mx, mn, drift(s.bits), kMaxCoefficientDrift));
+    throw InputError(fmt::format(
+        "the ellipse is too thin for the datapath at --step {} mm: semi-axes {:.6g} mm and {:.6g} mm ({:.6g} "
+        "and {:.6g} steps); the rounding of its fixed-point coefficients could move the curve by {:.3g} "
+        "steps (at most {}); a coarser --step lowers it",
+        double(step) / double(kNmPerMm), mx * double(step) / double(kNmPerMm), mn * double(step) / double(kNmPerMm), mx,
+        mn, drift(s.bits), kMaxCoefficientDrift));
   }
   return s;
 }
