@@ -195,10 +195,16 @@ TEST_CASE("dialects: offsets move the program's origin, G53 and G28 the machine'
                                     {mm(3), mm(4)},
                                     {mm(3), mm(4)},
                                     {mm(10), mm(11)}});
-  // An offset of an axis the machine lacks is recorded; rotation is refused.
+  // An offset of an axis the machine lacks is recorded.
   CHECK(error_in("G10 L2 P1 X1 A5\nM2\n", Dialect::LinuxCnc).empty());
-  CHECK(error_in("G10 L2 P1 R30\nM2\n", Dialect::LinuxCnc) ==
-        "p.nc:1:11: coordinate system rotation (G10 L2 R) is not supported");
+  // A turned system (G10 L2 R): program X1 is machine (offset + 1 turned by 90 degrees);
+  // arc centres turn with it; G10 L20 keeps the other axis' program position.
+  const Program r = lcnc("F1\nG10 L2 P1 X10 R90\nG1 X1 Y0\nG3 X0 Y1 I-1 J0\nG10 L20 P1 X0\nG1 Y0\nM2\n");
+  REQUIRE(r.moves.size() == 3);
+  CHECK(r.moves[0].to == Point2{mm(10), mm(1)});
+  CHECK(r.moves[1].center == Point2{mm(10), 0});
+  CHECK(r.moves[1].to == Point2{mm(9), 0});
+  CHECK(r.moves[2].to == Point2{mm(10), 0});  // L20 at program (0, 1) with X0: the offset stays
 }
 
 TEST_CASE("dialects: Fanuc's programs, calls and arc centres", "[program]") {

@@ -193,14 +193,18 @@ void Reader::arc(Move& mv, const Block& b, const SourcePos& where) {
 void Reader::arc_by_centre(Move& mv, const Block& b, const SourcePos& where) {
   const PlaneAxes pa = plane_axes(lattice_);
   const auto iu = b.axes.find(pa.iu), iv = b.axes.find(pa.iv);
+  const Length du = iu != b.axes.end() ? length(*iu->second) : 0, dv = iv != b.axes.end() ? length(*iv->second) : 0;
   if (m_.ijk_absolute) {
-    mv.center = Point2{offset(pa.u), offset(pa.v)};
-    if (iu != b.axes.end()) mv.center.u += length(*iu->second);
-    if (iv != b.axes.end()) mv.center.v += length(*iv->second);
+    Axes c = to_program(pos_);
+    c[std::size_t(pa.u)] = du;
+    c[std::size_t(pa.v)] = dv;
+    const Axes m = to_machine(c);
+    mv.center = Point2{m[std::size_t(pa.u)], m[std::size_t(pa.v)]};
+  } else if (rotation_[std::size_t(m_.cs)] != 0 && lattice_ == 170) {
+    const auto [x, y] = turn(double(du), double(dv), 1);  // offsets turn with the system
+    mv.center = Point2{mv.from.u + std::llround(x), mv.from.v + std::llround(y)};
   } else {
-    mv.center = mv.from;
-    if (iu != b.axes.end()) mv.center.u += length(*iu->second);
-    if (iv != b.axes.end()) mv.center.v += length(*iv->second);
+    mv.center = Point2{mv.from.u + du, mv.from.v + dv};
   }
   const double r0 = std::hypot(double(mv.from.u - mv.center.u), double(mv.from.v - mv.center.v));
   const double r1 = std::hypot(double(mv.to.u - mv.center.u), double(mv.to.v - mv.center.v));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "geometry/det_math.hpp"
 #include "program_reader.hpp"
 
 namespace dda::program::detail {
@@ -24,11 +25,42 @@ Length Reader::offset(int axis) const {
   return work_[std::size_t(m_.cs)][std::size_t(axis)] + g92_[std::size_t(axis)] + (axis == 2 ? tool_length_ : 0);
 }
 
+// (x, y) turned by the rotation in force (sign -1: back), with the deterministic sines.
+std::pair<double, double> Reader::turn(double x, double y, double sign) const {
+  const double a = sign * rotation_[std::size_t(m_.cs)] * det::kPi / 180;
+  const double c = det::cos(a), s = det::sin(a);
+  return {c * x - s * y, s * x + c * y};
+}
+
+Axes Reader::to_program(const Axes& machine) const {
+  Axes p;
+  for (int a = 0; a < 3; ++a) p[std::size_t(a)] = machine[std::size_t(a)] - offset(a);
+  if (rotation_[std::size_t(m_.cs)] == 0) return p;
+  const Axes& w = work_[std::size_t(m_.cs)];
+  const auto [x, y] = turn(double(machine[0] - w[0]), double(machine[1] - w[1]), -1);
+  p[0] = std::llround(x) - g92_[0];
+  p[1] = std::llround(y) - g92_[1];
+  return p;
+}
+
+Axes Reader::to_machine(const Axes& program) const {
+  Axes m;
+  for (int a = 0; a < 3; ++a) m[std::size_t(a)] = program[std::size_t(a)] + offset(a);
+  if (rotation_[std::size_t(m_.cs)] == 0) return m;
+  const Axes& w = work_[std::size_t(m_.cs)];
+  const auto [x, y] = turn(double(program[0] + g92_[0]), double(program[1] + g92_[1]), 1);
+  m[0] = std::llround(x) + w[0];
+  m[1] = std::llround(y) + w[1];
+  return m;
+}
+
 // The machine position the block's X, Y and Z words (and on HNC's and Fanuc's lathes U
 // and W, incremental X and Z) give, starting from `base` for the axes they leave;
 // `machine`: G53's machine coordinates.
 Axes Reader::word_axes(const Block& b, bool machine, Axes base) const {
   const bool lathe_uw = opt_.machine == Machine::Lathe && dialect_ != Dialect::LinuxCnc;
+  Axes prog = machine ? base : to_program(base);
+  bool xy = false;
   for (const auto& [c, w] : b.axes) {
     int a = axis_of(c);
     bool incremental = m_.incremental && !machine;
@@ -41,11 +73,19 @@ Axes Reader::word_axes(const Block& b, bool machine, Axes base) const {
     if (a < 0) continue;
     Length v = length(*w);
     if (a == 0 && m_.diameter) v /= 2;
-    const Length prev = pos_[std::size_t(a)];
-    base[std::size_t(a)] = machine ? v : incremental ? prev + v : v + offset(a);
-    if (std::llabs(base[std::size_t(a)]) > kMaxLength) fail(w->pos, "the move leaves the 1000000 mm the reader holds");
+    const std::size_t i = std::size_t(a);
+    prog[i] = incremental ? prog[i] + v : v;
+    if (std::llabs(prog[i]) > kMaxLength) fail(w->pos, "the move leaves the 1000000 mm the reader holds");
+    xy = xy || a < 2;
   }
-  return base;
+  if (machine) return prog;
+  Axes to = to_machine(prog);
+  if (!xy) to[0] = base[0], to[1] = base[1];  // (untouched axes stay exactly where they are)
+  for (const Length c : to) {
+    if (std::llabs(c) > kMaxLength)
+      fail(b.axes.begin()->second->pos, "the move leaves the 1000000 mm the reader holds");
+  }
+  return to;
 }
 
 // G10, G28, G30, G52 and G92: offsets set and stored positions reached.
@@ -78,7 +118,8 @@ void Reader::non_modal(const Block& b) {
         Length v = length(*w);
         if (a == 0 && m_.diameter) v /= 2;
         const std::size_t i = std::size_t(a);
-        g92_[i] = g == 520 ? v : pos_[i] - v - work_[std::size_t(m_.cs)][i] - (a == 2 ? tool_length_ : 0);
+        // G92: the offset that makes the tool's program position read v.
+        g92_[i] = g == 520 ? v : g92_[i] + to_program(pos_)[i] - v;
       }
       g92_stored_ = g92_;
       break;
@@ -112,10 +153,25 @@ void Reader::set_offsets(const Block& b) {
   const std::int64_t pv = p == b.axes.end() ? 0 : integer(*p->second);
   if (pv < 0 || pv > 9) fail(p->second->pos, "G10: P is the coordinate system, 0 (the one in force) to 9");
   const std::size_t cs = pv == 0 ? std::size_t(m_.cs) : std::size_t(pv - 1);
+  if (const auto r = b.axes.find('R'); r != b.axes.end()) {
+    if (lv != 2) fail(r->second->pos, "R (the rotation) is read with G10 L2 only");
+    rotation_[cs] = double(r->second->mantissa) / double(pow10(r->second->decimals));
+  }
+  // L20: the offsets that make the tool's program position read the values given (the
+  // other axes' program positions kept), in the system's own rotation.
+  const int saved_cs = m_.cs;
+  m_.cs = int(cs);
+  Axes target = to_program(pos_);
   for (const auto& [c, w] : b.axes) {
-    if (c == 'L' || c == 'P') continue;
-    if (c == 'R' && length(*w) != 0) fail(w->pos, "coordinate system rotation (G10 L2 R) is not supported");
-    if (c == 'R') continue;
+    const int a = axis_of(c);
+    if (a < 0) continue;
+    Length v = length(*w);
+    if (a == 0 && m_.diameter) v /= 2;
+    target[std::size_t(a)] = v;
+  }
+  m_.cs = saved_cs;
+  for (const auto& [c, w] : b.axes) {
+    if (c == 'L' || c == 'P' || c == 'R') continue;
     const int a = axis_of(c);
     if (a < 0 && other_axis(c)) {
       ignore(*w);
@@ -125,7 +181,19 @@ void Reader::set_offsets(const Block& b) {
     Length v = length(*w);
     if (a == 0 && m_.diameter) v /= 2;
     const std::size_t i = std::size_t(a);
-    work_[cs][i] = lv == 2 ? v : pos_[i] - v - g92_[i] - (a == 2 ? tool_length_ : 0);
+    if (lv == 2) work_[cs][i] = v;
+  }
+  if (lv == 20) {
+    // pos = turn(target + g92) + work: solve for work, X and Y together when turned.
+    const std::array<double, 9> r = rotation_;
+    const double rad = r[cs] * det::kPi / 180;
+    const double c = det::cos(rad), s = det::sin(rad);
+    const double px = double(target[0] + g92_[0]), py = double(target[1] + g92_[1]);
+    const Length tx = r[cs] == 0 ? target[0] + g92_[0] : std::llround(c * px - s * py);
+    const Length ty = r[cs] == 0 ? target[1] + g92_[1] : std::llround(s * px + c * py);
+    work_[cs][0] = pos_[0] - tx;
+    work_[cs][1] = pos_[1] - ty;
+    work_[cs][2] = pos_[2] - target[2] - g92_[2] - tool_length_;
   }
 }
 

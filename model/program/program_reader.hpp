@@ -124,6 +124,12 @@ class Reader {
   void sync_params();
   void sync_position();
   Length offset(int axis) const;
+  // Machine and program coordinates of a point (X, Y, Z): the program's point plus the
+  // G92 offset, turned by the work offset's rotation, plus the work offset (and on Z the
+  // tool length), as LinuxCNC maps them; exact integers when nothing turns.
+  Axes to_program(const Axes& machine) const;
+  Axes to_machine(const Axes& program) const;
+  std::pair<double, double> turn(double x, double y, double sign) const;
   Axes word_axes(const Block& b, bool machine, Axes base) const;
 
   // Motion (program_motion.cpp).
@@ -155,6 +161,7 @@ class Reader {
   int lattice_ = 0;  // the plane of the two axes, fixed by the first block that needs the position
   // Offsets (nm): the work offsets G54-G59.3, G92's (or G52's) and the tool length's.
   std::array<Axes, 9> work_{};
+  std::array<double, 9> rotation_{};  // each work offset's XY rotation (G10 L2 R), degrees
   Axes g92_{};
   Axes g92_stored_{};  // G92.3 restores it
   Length tool_length_ = 0;
