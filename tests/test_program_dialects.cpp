@@ -134,6 +134,17 @@ TEST_CASE("dialects: O-word loops and branches", "[program]") {
   CHECK(error_in("o1 sob\nM2\n", Dialect::LinuxCnc).rfind("p.nc:1:4: an O-word keyword expected", 0) == 0);
 }
 
+TEST_CASE("dialects: LinuxCNC's M70-M73 save and restore the modal state", "[program]") {
+  // M70 saves G20, M72 brings it back; M73 in a subroutine restores G90 (and G21) when
+  // it returns. rs274 prints the same four moves.
+  const Program p =
+      lcnc("F1\nG20\nM70\nG21\nM72\nG1 X1\no1 sub\nM73\nG91\nG1 X1\no1 endsub\nG21\no1 call\nG1 X1\nG1 X1\nM2\n");
+  std::vector<Length> xs;
+  for (const Move& m : p.moves) xs.push_back(m.to.u);
+  CHECK(xs == std::vector<Length>{mm(25.4), mm(26.4), mm(1), mm(1)});
+  CHECK(error_in("M72\nM2\n", Dialect::LinuxCnc) == "p.nc:1:1: M72: no modal state saved by M70 to restore");
+}
+
 TEST_CASE("dialects: a G1, G2 or G3 without a feed rate is refused in LinuxCNC's dialect only", "[program]") {
   CHECK(error_in("G1 X1\nM2\n", Dialect::LinuxCnc) ==
         "p.nc:1:1: G1 with no feed rate in force: give F (LinuxCNC refuses a feed move at zero feed)");
@@ -248,7 +259,8 @@ TEST_CASE("dialects: what the reader cannot run yet is refused naming the featur
         0);
   CHECK(refused("$H").rfind("p.nc:2:1: a '$' line is a command to a Grbl controller", 0) == 0);
   CHECK(refused("(a (nested) comment)") == "p.nc:2:4: a comment inside a comment: LinuxCNC refuses nested comments");
-  CHECK(refused("O1234").rfind("p.nc:2:1: O1234: a program number line is Fanuc's (--dialect fanuc)", 0) == 0);
+  CHECK(refused("G0 X1 O1234").rfind("p.nc:2:7: O1234: a program number line is Fanuc's (--dialect fanuc)", 0) == 0);
+  CHECK(refused("O1234 (a title)").empty());  // alone on its line: LinuxCNC's program title
   // Recorded, not moving: tool changes, path control, spindle and coolant, tool length.
   const Program p = lcnc("T1 M6 G43 H1 G64 P0.01 Q0.01 S1000 M3 M8 G96\nG61.1 G97 M9 M5 G49\nM2\n");
   CHECK(p.moves.empty());

@@ -277,11 +277,24 @@ void Reader::m_code(const Word& w, Block& b) {
     fail(w.pos, name(w) +
                     ": M98/M99 subprograms are Fanuc's and HNC's (--dialect fanuc or hnc); LinuxCNC calls "
                     "o<name> call");
-  } else if (m >= 70 && m <= 73) {
-    fail(w.pos, name(w) + ": saving and restoring the modal state (M70-M73) is not supported");
+  } else if (m >= 70 && m <= 73 && dialect_ == Dialect::LinuxCnc) {
+    modal_state(w, m);
   } else {
     fail(w.pos, "unknown or unsupported code " + name(w));
   }
+}
+
+// LinuxCNC's M70 (save the modal state), M71 (forget it), M72 (restore it), M73 (save
+// it until the subroutine returns).
+void Reader::modal_state(const Word& w, std::int64_t m) {
+  ignore(w);
+  if (m == 70) saved_ = m_;
+  if (m == 71) saved_.reset();
+  if (m == 73) call_saved_.back() = m_;
+  if (m != 72) return;
+  if (!saved_) fail(w.pos, "M72: no modal state saved by M70 to restore");
+  m_ = *saved_;
+  sync_params();
 }
 
 void Reader::set_group(Block& b, Group g, const Word& w, const char* what) const {

@@ -112,16 +112,25 @@ std::optional<Dialect> dialect_of(const std::string& code) {
 
 }  // namespace
 
-// The first line that only one dialect reads decides; a program without one is
-// LinuxCNC's on a mill and HNC's on a lathe.
+// The first line that only one dialect reads decides, but a Fanuc program number line
+// ('O1234' alone, which LinuxCNC reads as a title) gives way to an O-word statement or a
+// named parameter anywhere after it; a program without any is LinuxCNC's on a mill and
+// HNC's on a lathe.
 Dialect Reader::detect() {
   std::string raw;
+  std::optional<Dialect> fanuc;
   for (LinePos at = lines_.first();;) {
     const LinePos next = lines_.read_raw(at, raw);
-    if (const auto d = dialect_of(code_of(raw))) return *d;
+    const std::optional<Dialect> d = dialect_of(code_of(raw));
+    if (d == Dialect::Fanuc) {
+      if (!fanuc) fanuc = d;
+    } else if (d && (!fanuc || d == Dialect::LinuxCnc)) {
+      return *d;
+    }
     if (lines_.at_end()) break;
     at = next;
   }
+  if (fanuc) return *fanuc;
   return opt_.machine == Machine::Lathe ? Dialect::Hnc : Dialect::LinuxCnc;
 }
 
@@ -258,7 +267,10 @@ void Reader::o_call(const Line& l, int depth) {
   for (const int a : l.args) args.push_back(macro_.eval(l, a));
   const StmtMark& sub = st_.marks[it->second];
   macro_.push_frame(args);
+  call_saved_.emplace_back();
   exec(sub.next, st_.marks[sub.jump].at.number + 1, depth + 1);
+  if (call_saved_.back()) m_ = *call_saved_.back();  // M73's state comes back
+  call_saved_.pop_back();
   macro_.pop_frame();
 }
 

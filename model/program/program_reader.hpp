@@ -112,6 +112,7 @@ class Reader {
   void g_code(const Word& w, Block& b);
   bool g_recorded(int g, const Word& w, Block& b);
   void m_code(const Word& w, Block& b);
+  void modal_state(const Word& w, std::int64_t m);
   void set_group(Block& b, Group g, const Word& w, const char* what) const;
   void set_modes(const Block& b);
   void dwell(Block& b);
@@ -173,6 +174,9 @@ class Reader {
   std::optional<Call> call_;                     // M98 in the block just run
   bool return_ = false;                          // M99, or LinuxCNC's endsub or return, in the line just run
   std::map<std::size_t, std::int64_t> repeats_;  // o.. repeat: passes left, by its mark
+  // LinuxCNC's saved modal state: M70 (saved_), M73 (restored when the call returns).
+  std::optional<Modal> saved_;
+  std::vector<std::optional<Modal>> call_saved_{1};
 };
 
 }  // namespace dda::program::detail

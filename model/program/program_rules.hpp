@@ -171,9 +171,14 @@ struct fanuc_program_line
     : pg::seq<in_dialect<Dialect::Fanuc>, pg::at<lead, o_letter, digits, ws, pg::opt<paren_comment>, ws, pg::eolf>,
               lead, o_letter, fanuc_number, ws, tail> {};
 
+// LinuxCNC reads such a line as the main program's title: nothing to run.
+struct lcnc_title_line
+    : pg::seq<in_dialect<Dialect::LinuxCnc>, pg::at<lead, o_letter, digits, ws, pg::opt<paren_comment>, ws, pg::eolf>,
+              lead, o_letter, digits, ws, tail> {};
+
 struct block_delete : pg::one<'/'> {};
 struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, param_set, word>>, tail> {};
-struct line
-    : pg::seq<ws, pg::opt<block_delete>, pg::sor<fanuc_program_line, oword_line, hnc_statement_line, words_line>> {};
+struct line : pg::seq<ws, pg::opt<block_delete>,
+                      pg::sor<fanuc_program_line, lcnc_title_line, oword_line, hnc_statement_line, words_line>> {};
 
 }  // namespace dda::program::detail::rules
