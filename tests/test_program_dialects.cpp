@@ -6,7 +6,11 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -114,6 +118,35 @@ TEST_CASE("dialects: O-word subroutines take #1-#30 as their own and return a va
   CHECK(p.moves[1].to == Point2{mm(15), mm(9)});
 }
 
+TEST_CASE("dialects: a subroutine in a file of its name beside the program", "[program]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("dda_subfile_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "side.ngc") << "o<side> sub\n  G91 G1 X#1\n  G90\n  G1 X[#1 + 1] Y9\no<side> endsub\nM2\n";
+  std::ofstream(dir / "bad.ngc") << "o<bad> sub\n  G1 X#<nowhere>\no<bad> endsub\n";
+  ReadOptions o;
+  o.dialect = Dialect::LinuxCnc;
+  const Program p = read("F1\no<side> call [2]\no<side> call [3]\nM2\n", (dir / "main.ngc").string(), o);
+  std::vector<Point2> ends;
+  for (const Move& m : p.moves) ends.push_back(m.to);
+  CHECK(ends == std::vector<Point2>{{mm(2), 0}, {mm(3), mm(9)}, {mm(6), mm(9)}, {mm(4), mm(9)}});
+  // An error inside the file names the file and its line; a file that is missing, by its path.
+  const auto error = [&](const std::string& text) {
+    try {
+      read(text, (dir / "main.ngc").string(), o);
+    } catch (const ProgramError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(error("F1\no<bad> call\nM2\n") == (dir / "bad.ngc").string() +
+                                              ":2:8: #<nowhere> is undefined: no value was "
+                                              "assigned to it");
+  CHECK(error("F1\no<gone> call\nM2\n")
+            .find("no o<gone> sub in this program, nor a file " + (dir / "gone.ngc").string()) != std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("dialects: O-word loops and branches", "[program]") {
   const Program p = lcnc(
       "F1\n#<i> = 0\n"
@@ -132,6 +165,8 @@ TEST_CASE("dialects: O-word loops and branches", "[program]") {
         "p.nc:1:1: o1: a block opened here is not closed (sub, if, while, do or repeat)");
   CHECK(error_in("o1 call\nM2\n", Dialect::LinuxCnc).rfind("p.nc:1:1: o1 call: no o1 sub in this program", 0) == 0);
   CHECK(error_in("o1 sob\nM2\n", Dialect::LinuxCnc).rfind("p.nc:1:4: an O-word keyword expected", 0) == 0);
+  CHECK(error_in("o100 sub\n", Dialect::Hnc).rfind("p.nc:1:1: an O-word statement is LinuxCNC's", 0) == 0);
+  CHECK(error_in("o<x> call\n", Dialect::Fanuc).rfind("p.nc:1:1: an O-word statement is LinuxCNC's", 0) == 0);
 }
 
 TEST_CASE("dialects: LinuxCNC's M70-M73 save and restore the modal state", "[program]") {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <filesystem>
 #include <string>
 
 #include "program_reader.hpp"
@@ -12,29 +13,29 @@
 namespace dda::program::detail {
 
 Reader::Reader(std::istream& in, const std::string& file, const ReadOptions& opt, const Output& out)
-    : file_(file), opt_(opt), out_(out), macro_(file), lines_(in, file) {
+    : file_(file), opt_(opt), out_(out), macro_(file), main_(in, file) {
   if (opt.start) sum_.start = *opt.start;
 }
 
 ReadSummary Reader::run() {
   dialect_ = opt_.dialect ? *opt_.dialect : detect();
   sum_.dialect = dialect_;
-  lines_.set_dialect(dialect_);
+  src_->lines.set_dialect(dialect_);
   macro_.set_dialect(dialect_);
   // A lathe's X is a diameter on HNC's and Fanuc's controls; LinuxCNC reads a radius
   // until G7.
   m_.diameter = opt_.machine == Machine::Lathe && dialect_ != Dialect::LinuxCnc;
   if (opt_.machine == Machine::Lathe) m_.plane = 180;
-  st_ = structure(lines_, file_, dialect_);  // pass 1: every line parsed, the statements matched
+  main_.st = structure(main_.lines, file_, dialect_);  // pass 1: every line parsed, the statements matched
   // Pass 2. The main program: the first with a word or a statement; the others are called.
-  for (const ProgramText& p : st_.programs) {
+  for (const ProgramText& p : src_->st.programs) {
     if (p.content) {
       exec(p.begin, p.end, 0);
       break;
     }
   }
-  if (dialect_ == Dialect::LinuxCnc && !sum_.ended && !st_.closed) {
-    fail(SourcePos{st_.last_line, 1},
+  if (dialect_ == Dialect::LinuxCnc && !sum_.ended && !src_->st.closed) {
+    fail(SourcePos{src_->st.last_line, 1},
          "the program ends without M02, M30 or a closing '%' (LinuxCNC refuses it: end it with M30)");
   }
   fix_lattice();
@@ -119,15 +120,15 @@ std::optional<Dialect> dialect_of(const std::string& code) {
 Dialect Reader::detect() {
   std::string raw;
   std::optional<Dialect> fanuc;
-  for (LinePos at = lines_.first();;) {
-    const LinePos next = lines_.read_raw(at, raw);
+  for (LinePos at = src_->lines.first();;) {
+    const LinePos next = src_->lines.read_raw(at, raw);
     const std::optional<Dialect> d = dialect_of(code_of(raw));
     if (d == Dialect::Fanuc) {
       if (!fanuc) fanuc = d;
     } else if (d && (!fanuc || d == Dialect::LinuxCnc)) {
       return *d;
     }
-    if (lines_.at_end()) break;
+    if (src_->lines.at_end()) break;
     at = next;
   }
   if (fanuc) return *fanuc;
@@ -139,7 +140,7 @@ Dialect Reader::detect() {
 void Reader::exec(const LinePos& begin, std::size_t end, int depth) {
   Line l;
   for (LinePos pc = begin; pc.number < end;) {
-    const LinePos next = lines_.read(pc, l);
+    const LinePos next = src_->lines.read(pc, l);
     if (++executed_ > opt_.max_lines) {
       fail(SourcePos{l.number, 1},
            fmt::format("more than {} lines executed: a loop that does not end?", opt_.max_lines));
@@ -176,7 +177,7 @@ void Reader::exec(const LinePos& begin, std::size_t end, int depth) {
 // A statement line at `at`: where the program goes on.
 LinePos Reader::step(const Line& l, const LinePos& at, const LinePos& next, int depth) {
   if (is_oword(l.stmt)) return o_step(l, at, next, depth);
-  const auto match = [&]() -> const StmtMark& { return st_.marks[st_.mark(at.offset).jump]; };
+  const auto match = [&]() -> const StmtMark& { return src_->st.marks[src_->st.mark(at.offset).jump]; };
   switch (l.stmt) {
     case Stmt::Assign:
       macro_.assign(l);
@@ -197,19 +198,19 @@ LinePos Reader::step(const Line& l, const LinePos& at, const LinePos& next, int 
 // condition): the first elseif whose condition holds, the else, or past the endif.
 LinePos Reader::o_branch(std::size_t i) {
   Line l;
-  while (st_.marks[i].stmt == Stmt::OElseIf) {
-    lines_.read(st_.marks[i].at, l);
-    if (macro_.truth(l)) return st_.marks[i].next;
-    i = st_.marks[i].jump;
+  while (src_->st.marks[i].stmt == Stmt::OElseIf) {
+    src_->lines.read(src_->st.marks[i].at, l);
+    if (macro_.truth(l)) return src_->st.marks[i].next;
+    i = src_->st.marks[i].jump;
   }
-  return st_.marks[i].next;
+  return src_->st.marks[i].next;
 }
 
 // LinuxCNC's O-words (docs/programs.md, "Dialects").
 LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, int depth) {
-  const std::size_t i = std::size_t(&st_.mark(at.offset) - st_.marks.data());
-  const StmtMark& m = st_.marks[i];
-  const auto after = [&](std::size_t k) { return st_.marks[k].next; };
+  const std::size_t i = std::size_t(&src_->st.mark(at.offset) - src_->st.marks.data());
+  const StmtMark& m = src_->st.marks[i];
+  const auto after = [&](std::size_t k) { return src_->st.marks[k].next; };
   switch (l.stmt) {
     case Stmt::OSub:  // a definition: skipped where it stands
       return after(m.jump);
@@ -231,7 +232,7 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
       if (m.do_tail) return macro_.truth(l) ? after(m.jump) : next;
       return macro_.truth(l) ? next : after(m.jump);
     case Stmt::OEndWhile:
-      return st_.marks[m.jump].at;
+      return src_->st.marks[m.jump].at;
     case Stmt::ORepeat: {
       const double n = macro_.eval(l, l.value);
       repeats_[i] = std::int64_t(std::llround(n));
@@ -240,13 +241,13 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
     case Stmt::OEndRepeat:
       return --repeats_[m.jump] > 0 ? after(m.jump) : next;
     case Stmt::OBreak: {
-      const StmtMark& head = st_.marks[m.jump];
+      const StmtMark& head = src_->st.marks[m.jump];
       return after(head.jump);  // past the loop's end (a do loop's closing while)
     }
     case Stmt::OContinue: {
-      const StmtMark& head = st_.marks[m.jump];
+      const StmtMark& head = src_->st.marks[m.jump];
       // A while loop tests again; a do loop tests at its tail; a repeat counts a pass.
-      return head.stmt == Stmt::OWhile ? head.at : st_.marks[head.jump].at;
+      return head.stmt == Stmt::OWhile ? head.at : src_->st.marks[head.jump].at;
     }
     default:
       return next;
@@ -255,33 +256,59 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
 
 // o<name> call [a] [b] ...: the subroutine of the file runs with #1, #2 ... its arguments.
 void Reader::o_call(const Line& l, int depth) {
-  const auto it = st_.subs.find(l.oname);
-  if (it == st_.subs.end()) {
-    fail(l.stmt_pos, "o" + l.oname + " call: no o" + l.oname +
-                         " sub in this program (LinuxCNC would look for a file of that name in its subroutine "
-                         "path: put the subroutine in the program)");
+  Source* const caller = src_;
+  auto it = src_->st.subs.find(l.oname);
+  if (it == src_->st.subs.end()) {
+    Source* f = subroutine_file(l.oname, l.stmt_pos);
+    it = f->st.subs.find(l.oname);
+    src_ = f;
+    macro_.set_file(f->file);
   }
   if (depth + 1 > kMaxCallDepth) fail(l.stmt_pos, fmt::format("subprogram calls nested deeper than {}", kMaxCallDepth));
   if (l.args.size() > std::size_t(kCallArgs)) fail(l.stmt_pos, fmt::format("more than {} arguments", kCallArgs));
   std::vector<double> args;
   for (const int a : l.args) args.push_back(macro_.eval(l, a));
-  const StmtMark& sub = st_.marks[it->second];
+  const StmtMark& sub = src_->st.marks[it->second];
   macro_.push_frame(args);
   call_saved_.emplace_back();
-  exec(sub.next, st_.marks[sub.jump].at.number + 1, depth + 1);
+  exec(sub.next, src_->st.marks[sub.jump].at.number + 1, depth + 1);
   if (call_saved_.back()) m_ = *call_saved_.back();  // M73's state comes back
   call_saved_.pop_back();
   macro_.pop_frame();
+  src_ = caller;
+  macro_.set_file(caller->file);
+}
+
+// A subroutine LinuxCNC would find in its subroutine path: the file <name>.ngc (the name
+// without its angle brackets) in the program's folder, read and structured once, which
+// must define o<name> sub.
+Reader::Source* Reader::subroutine_file(const std::string& name, const SourcePos& at) {
+  if (const auto it = files_.find(name); it != files_.end()) return it->second.get();
+  const std::string bare = name.front() == '<' ? name.substr(1, name.size() - 2) : name;
+  const std::filesystem::path dir =
+      main_.file == "<stdin>" ? std::filesystem::path(".") : std::filesystem::path(main_.file).parent_path();
+  const std::filesystem::path path = dir / (bare + ".ngc");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    fail(at, "o" + name + " call: no o" + name + " sub in this program, nor a file " + path.string() +
+                 " (LinuxCNC's subroutine path: the program's folder)");
+  }
+  auto src = std::make_unique<Source>(open_program(path.string()), path.string());
+  src->lines.set_dialect(dialect_);
+  src->st = structure(src->lines, src->file, dialect_);
+  if (!src->st.subs.count(name)) fail(at, "o" + name + " call: " + path.string() + " defines no o" + name + " sub");
+  return files_.emplace(name, std::move(src)).first->second.get();
 }
 
 // M98: runs the subprogram c.program c.repeats times.
 void Reader::call(const Call& c, int depth) {
-  std::size_t target = st_.programs.size();
-  for (std::size_t i = 0; i < st_.programs.size(); ++i) {
-    if (st_.programs[i].number == c.program) target = i;
+  std::size_t target = src_->st.programs.size();
+  for (std::size_t i = 0; i < src_->st.programs.size(); ++i) {
+    if (src_->st.programs[i].number == c.program) target = i;
   }
   const char* sign = dialect_ == Dialect::Fanuc ? "O" : "%";
-  if (target == st_.programs.size()) fail(c.pos, fmt::format("M98 calls program {}{}: there is none", sign, c.program));
+  if (target == src_->st.programs.size())
+    fail(c.pos, fmt::format("M98 calls program {}{}: there is none", sign, c.program));
   if (depth + 1 > kMaxCallDepth) {
     fail(c.pos, fmt::format("subprogram calls nested deeper than {}", kMaxCallDepth));
   }
@@ -298,7 +325,7 @@ void Reader::call(const Call& c, int depth) {
       macro_.set(30, lathe ? (m_.diameter ? 2 * v : v) : u);
       macro_.set(lathe ? 32 : 31, lathe ? u : v);
     }
-    exec(st_.programs[target].begin, st_.programs[target].end, depth + 1);
+    exec(src_->st.programs[target].begin, src_->st.programs[target].end, depth + 1);
   }
 }
 

@@ -139,6 +139,18 @@ std::string foreign_line(std::string_view raw, Dialect d) {
     return "a '$' line is a command to a Grbl controller (settings, homing, jogging) sent by a G-code sender, "
            "not G-code: remove it from the program";
   }
+  if (d != Dialect::LinuxCnc && (raw[i] == 'o' || raw[i] == 'O')) {
+    // An O-word statement (o100 sub, o<name> call): a name, blanks, then a letter.
+    std::size_t j = i + 1;
+    if (j < raw.size() && raw[j] == '<') j = raw.find('>', j);
+    while (j != std::string_view::npos && j < raw.size() && std::isdigit(static_cast<unsigned char>(raw[j])) != 0) ++j;
+    if (j != std::string_view::npos && j > i + 1 && j < raw.size() && raw[j] == '>') ++j;
+    const std::size_t k = j == std::string_view::npos ? j : raw.find_first_not_of(" \t", j);
+    if (k != std::string_view::npos && k > j && std::isalpha(static_cast<unsigned char>(raw[k])) != 0) {
+      return "an O-word statement is LinuxCNC's (o100 sub, o<name> call, o101 while ...): read it with --dialect "
+             "linuxcnc";
+    }
+  }
   if (d != Dialect::Fanuc) return {};
   std::string head;
   for (; i < raw.size() && head.size() < 5 && std::isalpha(static_cast<unsigned char>(raw[i])) != 0; ++i) {

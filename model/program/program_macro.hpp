@@ -32,6 +32,7 @@ class Macro {
  public:
   explicit Macro(const std::string& file);
   void set_dialect(Dialect d) { dialect_ = d; }
+  void set_file(const std::string& file) { file_ = file; }  // the file whose lines run
   // The value of a line's expression; an undefined variable, a division by zero, the
   // square root of a negative number or an overflow is a ProgramError at the operator.
   double eval(const Line& l, int node);

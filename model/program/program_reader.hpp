@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,7 +86,7 @@ class Reader {
 
  private:
   [[noreturn]] void fail(const SourcePos& p, const std::string& msg) const {
-    throw ProgramError(file_, p.line, p.column, msg);
+    throw ProgramError(src_->file, p.line, p.column, msg);
   }
   std::string name(const Word& w) const { return std::string(1, w.letter) + w.text; }
   Length length(const Word& w) const;
@@ -168,8 +169,20 @@ class Reader {
   Length tool_length_ = 0;
   Axes g28_{}, g30_{};  // G28.1 and G30.1's stored positions (machine)
   Macro macro_;
-  LineStream lines_;
-  Structure st_;
+  // The text being run: the program's own, or a subroutine file's (LinuxCNC's o<name>
+  // call of a file name.ngc beside the program), each read and structured once.
+  struct Source {
+    Source(std::istream& in, const std::string& f) : file(f), lines(in, f) {}
+    Source(std::unique_ptr<std::istream> in, const std::string& f) : file(f), own(std::move(in)), lines(*own, f) {}
+    std::string file;
+    std::unique_ptr<std::istream> own;
+    LineStream lines;
+    Structure st;
+  };
+  Source main_;
+  Source* src_ = &main_;
+  std::map<std::string, std::unique_ptr<Source>> files_;
+  Source* subroutine_file(const std::string& name, const SourcePos& at);
   std::uint64_t executed_ = 0;
   std::optional<Call> call_;                     // M98 in the block just run
   bool return_ = false;                          // M99, or LinuxCNC's endsub or return, in the line just run
