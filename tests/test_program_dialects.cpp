@@ -140,7 +140,7 @@ TEST_CASE("dialects: a subroutine in a file of its name beside the program", "[p
     return std::string();
   };
   CHECK(error("F1\no<bad> call\nM2\n") == (dir / "bad.ngc").string() +
-                                              ":2:8: #<nowhere> is undefined: no value was "
+                                              ":2:7: #<nowhere> is undefined: no value was "
                                               "assigned to it");
   CHECK(error("F1\no<gone> call\nM2\n")
             .find("no o<gone> sub in this program, nor a file " + (dir / "gone.ngc").string()) != std::string::npos);
