@@ -116,6 +116,12 @@ TEST_CASE("dialects: O-word subroutines take #1-#30 as their own and return a va
   REQUIRE(p.moves.size() == 2);
   CHECK(p.moves[0].to == Point2{mm(5), mm(780)});
   CHECK(p.moves[1].to == Point2{mm(15), mm(9)});
+  // A name computed from a parameter: the subroutine of that number.
+  const Program c = lcnc("F1\no1 sub\nG1 X1\no1 endsub\no2 sub\nG1 X2\no2 endsub\n#<s> = 2\no#<s> call\nM2\n");
+  REQUIRE(c.moves.size() == 1);
+  CHECK(c.moves[0].to.u == mm(2));
+  CHECK(error_in("o#1 sub\no#1 endsub\nM2\n", Dialect::LinuxCnc) ==
+        "p.nc:1:1: a computed O-word name (o#<name>) goes with call only");
 }
 
 TEST_CASE("dialects: a subroutine in a file of its name beside the program", "[program]") {
@@ -253,6 +259,16 @@ TEST_CASE("dialects: offsets move the program's origin, G53 and G28 the machine'
   CHECK(r.moves[2].to == Point2{mm(10), 0});  // L20 at program (0, 1) with X0: the offset stays
 }
 
+TEST_CASE("dialects: LinuxCNC 2.9's numbered labels and M98 subprograms", "[program]") {
+  // (rs274: X1 then X5; the label in the middle is run through: X1, X2.)
+  std::vector<Length> xs;
+  for (const Move& m : lcnc("F1\nG0 X1\nM98 P100\nM2\nO100\nG0 X5\nM99\n").moves) xs.push_back(m.to.u);
+  CHECK(xs == std::vector<Length>{mm(1), mm(5)});
+  xs.clear();
+  for (const Move& m : lcnc("F1\nG0 X1\nO1234 (a label)\nG0 X2\nM99\nG0 X3\n").moves) xs.push_back(m.to.u);
+  CHECK(xs == std::vector<Length>{mm(1), mm(2)});  // M99 in the main program ends it
+}
+
 TEST_CASE("dialects: Fanuc's programs, calls and arc centres", "[program]") {
   const std::string text =
       "%\nO1000 (MAIN)\nF1\nM98 P21001\nM98 P1001 L2\nG90.1 G2 X50 Y0 I45 J0\nM30\n"
@@ -295,7 +311,7 @@ TEST_CASE("dialects: what the reader cannot run yet is refused naming the featur
   CHECK(refused("$H").rfind("p.nc:2:1: a '$' line is a command to a Grbl controller", 0) == 0);
   CHECK(refused("(a (nested) comment)") == "p.nc:2:4: a comment inside a comment: LinuxCNC refuses nested comments");
   CHECK(refused("G0 X1 O1234").rfind("p.nc:2:7: O1234: a program number line is Fanuc's (--dialect fanuc)", 0) == 0);
-  CHECK(refused("O1234 (a title)").empty());  // alone on its line: LinuxCNC's program title
+  CHECK(refused("O1234 (a title)").empty());  // alone on its line: a program (LinuxCNC 2.9 too)
   // Recorded, not moving: tool changes, path control, spindle and coolant, tool length.
   const Program p = lcnc("T1 M6 G43 H1 G64 P0.01 Q0.01 S1000 M3 M8 G96\nG61.1 G97 M9 M5 G49\nM2\n");
   CHECK(p.moves.empty());

@@ -350,11 +350,20 @@ struct action<o_name> {
     for (const char c : in.string()) {
       if (c != ' ' && c != '\t') name += char(std::tolower(static_cast<unsigned char>(c)));
     }
-    if (name[0] != '<') {
+    if (name[0] == '#') {
+      name = "#";  // computed when the call runs (Line::target)
+    } else if (name[0] != '<') {
       const auto nz = name.find_first_not_of('0');
       name = nz == std::string::npos ? "0" : name.substr(nz);
     }
     s.line.oname = name;
+  }
+};
+template <>
+struct action<o_computed> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.line.target = s.pop();
   }
 };
 template <typename R>

@@ -162,7 +162,7 @@ void Reader::g_code(const Word& w, Block& b) {
   }
 }
 
-// The codes read and recorded (or refused naming their feature); false: unknown.
+// The codes read and recorded (or refused naming their feature: g_refused); false: unknown.
 bool Reader::g_recorded(int g, const Word& w, Block& b) {
   const bool hnc_lathe_feed = opt_.machine == Machine::Lathe && dialect_ != Dialect::LinuxCnc;
   switch (g) {
@@ -214,6 +214,15 @@ bool Reader::g_recorded(int g, const Word& w, Block& b) {
       b.cancel_cycle = true;
       ignore(w);
       return true;
+    default:
+      g_refused(g, w);
+      return false;
+  }
+}
+
+// The codes refused naming their feature (docs/programs.md, "The modal state").
+void Reader::g_refused(int g, const Word& w) const {
+  switch (g) {
     case 330:
     case 331:
     case 760:
@@ -256,7 +265,7 @@ bool Reader::g_recorded(int g, const Word& w, Block& b) {
     case 191:
       fail(w.pos, name(w) + ": planes of the secondary linear axes (U, V, W) are not supported");
     default:
-      return false;
+      return;
   }
 }
 
@@ -269,14 +278,10 @@ void Reader::m_code(const Word& w, Block& b) {
   } else if ((m >= 0 && m <= 9) || m == 19 || (m >= 48 && m <= 53) || m == 60 || m == 61 || (m >= 62 && m <= 68) ||
              (m >= 100 && m <= 199)) {
     ignore(w);  // stops, spindle, tool change, coolant, overrides, I/O: they do not move the tool
-  } else if (m == 98 && dialect_ != Dialect::LinuxCnc) {
+  } else if (m == 98) {
     b.m98 = w.pos;
-  } else if (m == 99 && dialect_ != Dialect::LinuxCnc) {
+  } else if (m == 99) {
     return_ = true;
-  } else if (m == 98 || m == 99) {
-    fail(w.pos, name(w) +
-                    ": M98/M99 subprograms are Fanuc's and HNC's (--dialect fanuc or hnc); LinuxCNC calls "
-                    "o<name> call");
   } else if (m >= 70 && m <= 73 && dialect_ == Dialect::LinuxCnc) {
     modal_state(w, m);
   } else {

@@ -158,6 +158,10 @@ void Reader::exec(const LinePos& begin, std::size_t end, int depth) {
     if (sum_.ended) return;
     if (return_) {
       return_ = false;
+      if (depth == 0 && dialect_ == Dialect::LinuxCnc && l.stmt == Stmt::None) {
+        sum_.ended = true;  // M99 in the main program ends it, as rs274 (LinuxCNC's task runs it again)
+        return;
+      }
       if (depth == 0) {
         fail(l.stmt == Stmt::None ? SourcePos{l.number, 1} : l.stmt_pos,
              l.stmt == Stmt::None ? "M99 in the main program: no caller to return to"
@@ -257,10 +261,12 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
 // o<name> call [a] [b] ...: the subroutine of the file runs with #1, #2 ... its arguments.
 void Reader::o_call(const Line& l, int depth) {
   Source* const caller = src_;
-  auto it = src_->st.subs.find(l.oname);
+  // A computed name: the number the parameter holds (o#<sub> call with #<sub> = 2: o2).
+  const std::string name = l.oname == "#" ? std::to_string(std::llround(macro_.eval(l, l.target))) : l.oname;
+  auto it = src_->st.subs.find(name);
   if (it == src_->st.subs.end()) {
-    Source* f = subroutine_file(l.oname, l.stmt_pos);
-    it = f->st.subs.find(l.oname);
+    Source* f = subroutine_file(name, l.stmt_pos);
+    it = f->st.subs.find(name);
     src_ = f;
     macro_.set_file(f->file);
   }
@@ -306,7 +312,7 @@ void Reader::call(const Call& c, int depth) {
   for (std::size_t i = 0; i < src_->st.programs.size(); ++i) {
     if (src_->st.programs[i].number == c.program) target = i;
   }
-  const char* sign = dialect_ == Dialect::Fanuc ? "O" : "%";
+  const char* sign = dialect_ == Dialect::Hnc ? "%" : "O";
   if (target == src_->st.programs.size())
     fail(c.pos, fmt::format("M98 calls program {}{}: there is none", sign, c.program));
   if (depth + 1 > kMaxCallDepth) {

@@ -112,6 +112,7 @@ class Reader {
   void sort_word(const Word& w, Block& b);
   void g_code(const Word& w, Block& b);
   bool g_recorded(int g, const Word& w, Block& b);
+  void g_refused(int g, const Word& w) const;
   void m_code(const Word& w, Block& b);
   void modal_state(const Word& w, std::int64_t m);
   void set_group(Block& b, Group g, const Word& w, const char* what) const;

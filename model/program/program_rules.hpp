@@ -131,7 +131,10 @@ struct hnc_statement_line : pg::seq<in_dialect<Dialect::Hnc>, pg::at<lead, pg::o
 
 // LinuxCNC's O-words: o<number or <name>> keyword [arguments].
 struct o_name_text : pg::plus<pg::not_one<'>', '\r', '\n'>> {};
-struct o_name : pg::sor<pg::seq<pg::one<'<'>, pg::must<o_name_text, name_close>>, digits> {};
+// A name computed from a parameter (o#<sub> call, o#1 call): the subroutine whose number
+// the parameter holds.
+struct o_computed : pg::seq<pg::at<pg::one<'#'>>, var_ref> {};
+struct o_name : pg::sor<pg::seq<pg::one<'<'>, pg::must<o_name_text, name_close>>, digits, o_computed> {};
 template <Stmt K, typename Kw>
 struct o_kw : keyword<Kw> {
   static constexpr Stmt kind = K;
@@ -165,20 +168,16 @@ struct oword_line
     : pg::seq<in_dialect<Dialect::LinuxCnc>, pg::at<lead, pg::opt<n_raw, lead>, o_letter, ws, o_name, ws, pg::alpha>,
               lead, pg::opt<n_word, lead>, o_letter, ws, o_name, ws, o_statement, tail> {};
 
-// Fanuc's program number: 'O1234' alone on its line (comments allowed).
+// Fanuc's program number: 'O1234' alone on its line (comments allowed), which LinuxCNC
+// 2.9 reads too (its main program's title, or a subprogram M98 calls).
 struct fanuc_number : digits {};
-struct fanuc_program_line
-    : pg::seq<in_dialect<Dialect::Fanuc>, pg::at<lead, o_letter, digits, ws, pg::opt<paren_comment>, ws, pg::eolf>,
-              lead, o_letter, fanuc_number, ws, tail> {};
-
-// LinuxCNC reads such a line as the main program's title: nothing to run.
-struct lcnc_title_line
-    : pg::seq<in_dialect<Dialect::LinuxCnc>, pg::at<lead, o_letter, digits, ws, pg::opt<paren_comment>, ws, pg::eolf>,
-              lead, o_letter, digits, ws, tail> {};
+struct fanuc_program_line : pg::seq<in_dialect<Dialect::Fanuc, Dialect::LinuxCnc>,
+                                    pg::at<lead, o_letter, digits, ws, pg::opt<paren_comment>, ws, pg::eolf>, lead,
+                                    o_letter, fanuc_number, ws, tail> {};
 
 struct block_delete : pg::one<'/'> {};
 struct words_line : pg::seq<pg::star<pg::sor<blank, paren_comment, param_set, word>>, tail> {};
-struct line : pg::seq<ws, pg::opt<block_delete>,
-                      pg::sor<fanuc_program_line, lcnc_title_line, oword_line, hnc_statement_line, words_line>> {};
+struct line
+    : pg::seq<ws, pg::opt<block_delete>, pg::sor<fanuc_program_line, oword_line, hnc_statement_line, words_line>> {};
 
 }  // namespace dda::program::detail::rules

@@ -45,6 +45,7 @@ class Builder {
     std::vector<std::size_t> chain;  // an if's marks so far
   };
   std::vector<OOpen> o_open_;                      // open O-word blocks
+  std::vector<ProgramText> labels_;                // LinuxCNC's numbered labels (M98's subprograms)
   std::optional<ProgramError> twice_, unmatched_;  // a program defined twice; a statement unmatched
 };
 
@@ -57,6 +58,12 @@ bool Builder::add(const Line& l, const LinePos& at, const LinePos& next) {
     // the text (what follows is not read).
     if (cur_.content) return false;
     cur_.begin = next;
+    return true;
+  }
+  if (l.header && dialect_ == Dialect::LinuxCnc) {
+    // LinuxCNC 2.9: 'O1234' alone is a label the main program runs through, and the
+    // start of the subprogram M98 P1234 runs until M99.
+    labels_.push_back(ProgramText{l.program, next, 0, true});
     return true;
   }
   if (l.header) {  // programs are cut at headers; text before the first is a program without a number
@@ -135,6 +142,9 @@ void Builder::match(const Line& l, const LinePos& at, const LinePos& next) {
 // The O-word statements: each closing one matches the innermost open block, which must
 // carry the same name (LinuxCNC's rule).
 void Builder::o_match(const Line& l, std::size_t i) {
+  if (l.oname == "#" && l.stmt != Stmt::OCall) {
+    return defer(unmatched_, l.stmt_pos, "a computed O-word name (o#<name>) goes with call only");
+  }
   const auto top_is = [&](std::initializer_list<Stmt> ks) {
     if (o_open_.empty() || o_open_.back().name != l.oname) return false;
     for (const Stmt k : ks)
@@ -228,6 +238,10 @@ std::optional<std::size_t> Builder::o_enclosing(const Line& l, bool sub) const {
 
 Structure Builder::finish(std::size_t end) {
   close(end);
+  for (ProgramText& p : labels_) {
+    p.end = end;
+    st_.programs.push_back(p);
+  }
   if (twice_) throw *twice_;
   if (unmatched_) throw *unmatched_;
   return std::move(st_);
