@@ -298,7 +298,9 @@ void Reader::modal_state(const Word& w, std::int64_t m) {
   if (m == 73) call_saved_.back() = m_;
   if (m != 72) return;
   if (!saved_) fail(w.pos, "M72: no modal state saved by M70 to restore");
+  const int motion = m_.motion;  // (LinuxCNC's M72 leaves the motion mode)
   m_ = *saved_;
+  m_.motion = motion;
   sync_params();
 }
 

@@ -220,7 +220,7 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
       return after(m.jump);
     case Stmt::OEndSub:
     case Stmt::OReturn:
-      if (l.value >= 0) macro_.set_named("_value", macro_.eval(l, l.value));
+      macro_.set_named("_value", l.value >= 0 ? macro_.eval(l, l.value) : 0);  // (none: 0, as LinuxCNC)
       macro_.set_named("_value_returned", l.value >= 0 ? 1 : 0);
       return_ = true;
       return next;

@@ -113,6 +113,7 @@ void Reader::motion(const Block& b, const SourcePos& where, bool machine) {
   check_letters(b);
   const bool arc_mode = m_.motion == 20 || m_.motion == 30, feed_mode = m_.motion != 0;
   if (machine && m_.motion != 0 && m_.motion != 10) fail(where, "G53 goes with G00 or G01 only");
+  if (machine && m_.incremental) fail(where, "G53 moves to machine coordinates: not in G91 (LinuxCNC refuses it)");
   if (arc_mode && m_.plane != lattice_) {
     fail(where, "G" + std::to_string(m_.motion / 10) + " in " + plane_name(m_.plane) +
                     ": an arc outside the plane of the two axes (" + plane_name(lattice_) +

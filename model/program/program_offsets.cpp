@@ -239,7 +239,8 @@ void Reader::sync_params() {
 void Reader::sync_position() {
   if (dialect_ != Dialect::LinuxCnc) return;
   const double unit = double(kNmPerMm) * (m_.inch ? 25.4 : 1.0);
-  for (int a = 0; a < 3; ++a) macro_.set(5420 + a, double(pos_[std::size_t(a)] - offset(a)) / unit);
+  const Axes p = to_program(pos_);
+  for (int a = 0; a < 3; ++a) macro_.set(5420 + a, double(p[std::size_t(a)]) / unit);
 }
 
 }  // namespace dda::program::detail
