@@ -20,18 +20,6 @@
 
 namespace dda::program {
 
-std::string_view dialect_name(Dialect d) {
-  switch (d) {
-    case Dialect::LinuxCnc:
-      return "linuxcnc";
-    case Dialect::Hnc:
-      return "hnc";
-    case Dialect::Fanuc:
-      return "fanuc";
-  }
-  return "?";
-}
-
 namespace {
 
 using detail::Output;

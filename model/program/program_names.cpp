@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The reader's error type and the names of its motion kinds (program.hpp).
+// The reader's error type and the names of its motion kinds and dialects (program.hpp).
 #include <fmt/format.h>
 
 #include "program/program.hpp"
@@ -23,6 +23,18 @@ std::string_view kind_name(MoveKind k) {
       return "ellipse cw";
     case MoveKind::EllipseCcw:
       return "ellipse ccw";
+  }
+  return "?";
+}
+
+std::string_view dialect_name(Dialect d) {
+  switch (d) {
+    case Dialect::LinuxCnc:
+      return "linuxcnc";
+    case Dialect::Hnc:
+      return "hnc";
+    case Dialect::Fanuc:
+      return "fanuc";
   }
   return "?";
 }
