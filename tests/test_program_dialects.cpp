@@ -167,6 +167,10 @@ TEST_CASE("dialects: O-word loops and branches", "[program]") {
   for (const Move& m : p.moves) xs.push_back(m.to.u);
   CHECK(xs == std::vector<Length>{mm(1), mm(3), mm(13), mm(23), mm(2), mm(1)});
   CHECK(error_in("o1 while [1]\no2 endwhile\nM2\n", Dialect::LinuxCnc) == "p.nc:2:1: o2 endwhile without its while");
+  // LinuxCNC leaves only a while or do loop by break or continue, and says so when it
+  // reaches one in a repeat (the feed before it runs).
+  CHECK(error_in("F1\no1 repeat [3]\nG1 X1\no1 break\no1 endrepeat\nM2\n", Dialect::LinuxCnc) ==
+        "p.nc:4:1: o1 break or continue outside an o1 while or do loop (LinuxCNC's repeat takes neither)");
   CHECK(error_in("o1 if [1]\nM2\n", Dialect::LinuxCnc) ==
         "p.nc:1:1: o1: a block opened here is not closed (sub, if, while, do or repeat)");
   CHECK(error_in("o1 call\nM2\n", Dialect::LinuxCnc).rfind("p.nc:1:1: o1 call: no o1 sub in this program", 0) == 0);
@@ -287,6 +291,10 @@ TEST_CASE("dialects: block delete, long numbers and line ends as LinuxCNC reads 
   const Program on = read_in(text, Dialect::LinuxCnc, Machine::Mill, true);
   REQUIRE(on.moves.size() == 1);
   CHECK(on.moves[0].to == Point2{mm(1.234568), 0});  // to the nanometre, halves away from zero
+  // An 18-digit code or M number is no code (not a product that overflows).
+  CHECK(error_in("G999999999999999999\nM2\n", Dialect::LinuxCnc) == "p.nc:1:1: no code G999999999999999999");
+  CHECK(error_in("M999999999999999999\nM2\n", Dialect::LinuxCnc) ==
+        "p.nc:1:1: unknown or unsupported code M999999999999999999");
 }
 
 TEST_CASE("dialects: what the reader cannot run yet is refused naming the feature", "[program]") {

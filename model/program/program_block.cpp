@@ -41,6 +41,8 @@ Length Reader::length(const Word& w) const {
 // A code's number in tenths (G6.2: 62, G01: 10), or an integer word's value.
 int Reader::tenths(const Word& w) const {
   if (w.decimals > 1 && w.mantissa % pow10(w.decimals - 1) != 0) fail(w.pos, "no code " + name(w));
+  // (A mantissa has at most 18 digits: checked before the product, which could overflow.)
+  if (w.decimals == 0 && (w.mantissa < 0 || w.mantissa > 10000)) fail(w.pos, "no code " + name(w));
   const std::int64_t t = w.decimals == 0 ? w.mantissa * 10 : w.mantissa / pow10(w.decimals - 1);
   if (t < 0 || t > 100000) fail(w.pos, "no code " + name(w));
   return int(t);
@@ -59,6 +61,7 @@ void Reader::ignore(const Word& w) {
 
 void Reader::block(const Line& l) {
   if (l.words.empty() && l.assigns.empty()) return;
+  if (contour_) return contour_line(l);
   std::vector<Word> words;  // expressions evaluated now, in the variables' present state
   words.reserve(l.words.size());
   for (const Word& w : l.words) words.push_back(macro_.value_word(l, w));
@@ -80,6 +83,8 @@ void Reader::block(const Line& l) {
     call_ = m98_call(b);
   } else if (non_modal_code >= 0 && non_modal_code != 530) {
     non_modal(b);
+  } else if (b.group[kMotion] && turning_code(m_.motion)) {
+    turning_cycle(b, b.group[kMotion]->pos);
   } else {
     const bool arc = m_.motion == 20 || m_.motion == 30;
     // (LinuxCNC moves on G00 or G01 without an axis word too: a move of length 0.)
@@ -120,7 +125,8 @@ void Reader::sort_word(const Word& w, Block& b) {
                             "name a subroutine or a loop (o100 sub, o100 call)"
                       : "O" + w.text + ": a program number stands alone on its line");
     default:
-      if (std::string_view("XYZUVWIJKRABCQPLHD").find(w.letter) == std::string_view::npos) {
+      const bool e_word = w.letter == 'E' && dialect_ == Dialect::LinuxCnc;  // (G70's)
+      if (!e_word && std::string_view("XYZUVWIJKRABCQPLHD").find(w.letter) == std::string_view::npos) {
         fail(w.pos, std::string("unknown word ") + w.letter);
       }
       if (b.axes.count(w.letter)) fail(w.pos, std::string(1, w.letter) + " twice in one block");
@@ -132,7 +138,8 @@ void Reader::sort_word(const Word& w, Block& b) {
 void Reader::g_code(const Word& w, Block& b) {
   const int g = tenths(w);
   const bool lathe = opt_.machine == Machine::Lathe;
-  if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63) {
+  if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63 ||
+      (turning_code(g) && dialect_ == Dialect::LinuxCnc)) {
     set_group(b, kMotion, w, "motion");
   } else if (g == 170 || g == 180 || g == 190) {
     if (lathe && g != 180) fail(w.pos, "a lathe works in G18 (Z and X)");
@@ -254,9 +261,13 @@ void Reader::g_refused(int g, const Word& w) const {
     case 700:
     case 710:
     case 711:
+    case 712:
     case 720:
     case 721:
-      fail(w.pos, name(w) + ": lathe turning cycles (G70, G71, G72) are not supported: program the passes");
+    case 722:  // (LinuxCNC's are read: program_cycles.cpp)
+      fail(w.pos, name(w) +
+                      ": lathe turning cycles in HNC's and Fanuc's form (G71 U R, G71 P Q U W) are not supported: "
+                      "program the passes (LinuxCNC's G70-G72 are read in --dialect linuxcnc)");
     case 150:
     case 160:
       fail(w.pos, name(w) + ": polar coordinates (G15, G16) are not supported");

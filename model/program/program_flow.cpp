@@ -22,6 +22,7 @@ ReadSummary Reader::run() {
   sum_.dialect = dialect_;
   src_->lines.set_dialect(dialect_);
   macro_.set_dialect(dialect_);
+  sync_params();  // (#<_x> and the others hold before the first move)
   // A lathe's X is a diameter on HNC's and Fanuc's controls; LinuxCNC reads a radius
   // until G7.
   m_.diameter = opt_.machine == Machine::Lathe && dialect_ != Dialect::LinuxCnc;
@@ -250,7 +251,7 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
     }
     case Stmt::OContinue: {
       const StmtMark& head = src_->st.marks[m.jump];
-      // A while loop tests again; a do loop tests at its tail; a repeat counts a pass.
+      // A while loop tests again; a do loop tests at its tail.
       return head.stmt == Stmt::OWhile ? head.at : src_->st.marks[head.jump].at;
     }
     default:
@@ -260,20 +261,25 @@ LinePos Reader::o_step(const Line& l, const LinePos& at, const LinePos& next, in
 
 // o<name> call [a] [b] ...: the subroutine of the file runs with #1, #2 ... its arguments.
 void Reader::o_call(const Line& l, int depth) {
-  Source* const caller = src_;
   // A computed name: the number the parameter holds (o#<sub> call with #<sub> = 2: o2).
   const std::string name = l.oname == "#" ? std::to_string(std::llround(macro_.eval(l, l.target))) : l.oname;
+  if (l.args.size() > std::size_t(kCallArgs)) fail(l.stmt_pos, fmt::format("more than {} arguments", kCallArgs));
+  std::vector<double> args;
+  for (const int a : l.args) args.push_back(macro_.eval(l, a));
+  run_sub(name, args, l.stmt_pos, depth);
+}
+
+// Runs o<name> sub of this text, or of the file name.ngc beside the program.
+void Reader::run_sub(const std::string& name, const std::vector<double>& args, const SourcePos& at, int depth) {
+  Source* const caller = src_;
   auto it = src_->st.subs.find(name);
   if (it == src_->st.subs.end()) {
-    Source* f = subroutine_file(name, l.stmt_pos);
+    Source* f = subroutine_file(name, at);
     it = f->st.subs.find(name);
     src_ = f;
     macro_.set_file(f->file);
   }
-  if (depth + 1 > kMaxCallDepth) fail(l.stmt_pos, fmt::format("subprogram calls nested deeper than {}", kMaxCallDepth));
-  if (l.args.size() > std::size_t(kCallArgs)) fail(l.stmt_pos, fmt::format("more than {} arguments", kCallArgs));
-  std::vector<double> args;
-  for (const int a : l.args) args.push_back(macro_.eval(l, a));
+  if (depth + 1 > kMaxCallDepth) fail(at, fmt::format("subprogram calls nested deeper than {}", kMaxCallDepth));
   const StmtMark& sub = src_->st.marks[it->second];
   macro_.push_frame(args);
   call_saved_.emplace_back();

@@ -85,7 +85,9 @@ void Reader::check_letters(const Block& b) const {
     if (c == 'P') fail(w->pos, lcnc ? "P is read only with G04, G10, G64 and arcs" : "P is read only with G04 and M98");
     if (c == 'L') fail(w->pos, lcnc ? "L is read only with G10" : "L is read only with M98");
     if (c == 'H') fail(w->pos, "H is read only with G43");
-    if (c == 'D') fail(w->pos, "D is read only with G41/G42");
+    if (c == 'D')
+      fail(w->pos, lcnc ? "D is read only with G41/G42 and the turning cycles G70-G72" : "D is read only with G41/G42");
+    if (c == 'E') fail(w->pos, "E is read only with G70");
     fail(w->pos, l + " is read only with G6.2/G6.3");
   }
 }

@@ -240,7 +240,11 @@ void Reader::sync_position() {
   if (dialect_ != Dialect::LinuxCnc) return;
   const double unit = double(kNmPerMm) * (m_.inch ? 25.4 : 1.0);
   const Axes p = to_program(pos_);
-  for (int a = 0; a < 3; ++a) macro_.set(5420 + a, double(p[std::size_t(a)]) / unit);
+  static const char* const kNamed[] = {"_x", "_y", "_z"};
+  for (int a = 0; a < 3; ++a) {
+    macro_.set(5420 + a, double(p[std::size_t(a)]) / unit);
+    macro_.set_named(kNamed[a], double(p[std::size_t(a)]) / unit);
+  }
 }
 
 }  // namespace dda::program::detail

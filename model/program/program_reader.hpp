@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <list>
 #include <map>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "program/program.hpp"
 #include "program_detail.hpp"
 #include "program_macro.hpp"
+#include "program_turning.hpp"
 
 namespace dda::program::detail {
 
@@ -25,6 +27,9 @@ inline constexpr Length kMaxLength = 1000000 * kNmPerMm;
 
 std::int64_t pow10(int n);
 double length_mm(Length l);
+
+// G70, G71, G71.1, G71.2, G72, G72.1, G72.2 (in tenths): LinuxCNC's lathe turning cycles.
+bool turning_code(int g);
 
 // The modal state besides the position and offsets.
 struct Modal {
@@ -106,6 +111,7 @@ class Reader {
   LinePos o_branch(std::size_t mark);
   void call(const Call& c, int depth);
   void o_call(const Line& l, int depth);
+  void run_sub(const std::string& name, const std::vector<double>& args, const SourcePos& at, int depth);
 
   // Blocks (program_block.cpp).
   void block(const Line& l);
@@ -145,6 +151,19 @@ class Reader {
   void arc_by_centre(Move& mv, const Block& b, const SourcePos& where);
   void arc_by_radius(Move& mv, const Word& r, const SourcePos& where);
   void ellipse(Move& mv, const Block& b, const SourcePos& where);
+
+  // LinuxCNC's lathe turning cycles G70-G72 (program_cycles.cpp): the contour is read by
+  // running its subroutine with each words line captured (contour_line) instead of run.
+  struct Contour {
+    std::list<turning::Segment> segs;
+    turning::Pt at;  // the contour's end so far (Z, X)
+    int motion = 0;
+    bool incremental = false, ijk_absolute = false;
+  };
+  void turning_cycle(const Block& b, const SourcePos& where);
+  void contour_line(const Line& l);
+  void contour_segment(Contour& c, const std::map<char, double>& v, turning::Pt end, const SourcePos& where);
+  void turning_pass(const Block& cycle, const SourcePos& where, const turning::Pass& p);
 
   // The plane's axes: u, v and the normal w as indices of X, Y, Z; the letters of the
   // centre words along u and v.
@@ -191,6 +210,7 @@ class Reader {
   // LinuxCNC's saved modal state: M70 (saved_), M73 (restored when the call returns).
   std::optional<Modal> saved_;
   std::vector<std::optional<Modal>> call_saved_{1};
+  Contour* contour_ = nullptr;  // a turning cycle's contour being read
 };
 
 }  // namespace dda::program::detail

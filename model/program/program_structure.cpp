@@ -201,7 +201,8 @@ void Builder::o_match(const Line& l, std::size_t i) {
         return defer(unmatched_, l.stmt_pos,
                      "o" + l.oname +
                          (l.stmt == Stmt::OReturn ? " return outside its o" + l.oname + " sub"
-                                                  : " break or continue outside an o" + l.oname + " loop"));
+                                                  : " break or continue outside an o" + l.oname +
+                                                        " while or do loop (LinuxCNC's repeat takes neither)"));
       st_.marks[i].jump = *in;
       return;
     }
@@ -229,7 +230,7 @@ std::optional<std::size_t> Builder::o_enclosing(const Line& l, bool sub) const {
   for (auto it = o_open_.rbegin(); it != o_open_.rend(); ++it) {
     if (it->name != l.oname) continue;
     const Stmt k = st_.marks[it->chain.empty() ? it->mark : it->chain.front()].stmt;
-    if (sub ? k == Stmt::OSub : (k == Stmt::OWhile || k == Stmt::ODo || k == Stmt::ORepeat)) {
+    if (sub ? k == Stmt::OSub : (k == Stmt::OWhile || k == Stmt::ODo)) {
       return it->chain.empty() ? it->mark : it->chain.front();
     }
   }
