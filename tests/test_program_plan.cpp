@@ -267,6 +267,12 @@ TEST_CASE("program plan: an arc of several turns runs its full turns first", "[p
   const Measured m = measure(three);
   CHECK(m.max_dev.back() <= 0.8);
   CHECK(m.end.back() == three.blocks.back().to);
+  // Beyond the datapath's radius a turn is some 14000 chords: a block holds at most 2^20
+  // pieces, so 100 turns of a 2 m circle are refused, naming the way out.
+  const std::string big = "F1\nG01 X2000 Y0\nG03 X2000 Y0 I-2000 J0 P100\nM2\n";
+  CHECK_THROWS_WITH(
+      plan_program(read(big, "p.nc", lcnc), LatticeOptions{}, "p.nc"),
+      Catch::Contains("100 turns of this arc take") && Catch::Contains("fewer turns (P), or a coarser --step"));
 }
 
 TEST_CASE("program plan: the block targets", "[program]") {

@@ -84,10 +84,26 @@ Move full_turn(const Move& mv) {
   return m;
 }
 
-// Puts `more`'s pieces before `plan`'s (an arc's extra turns run first, from its start).
-void prepend(Plan& plan, const Plan& more) {
-  plan.pieces.insert(plan.pieces.begin(), more.pieces.begin(), more.pieces.end());
-  plan.iteration_bound += more.iteration_bound;
+// A block holds at most this many pieces (an arc of many turns beyond the datapath's
+// radius runs as chords, tens of thousands a turn): its plan's memory stays bounded.
+constexpr std::size_t kMaxBlockPieces = std::size_t{1} << 20;
+
+// Puts `turns` copies of `turn`'s pieces before `plan`'s (an arc's extra turns run first,
+// from its start; each the same full turn).
+void prepend_turns(Plan& plan, const Plan& turn, int turns, const std::string& file, const Move& mv, Length step) {
+  const std::size_t total = turn.pieces.size() * std::size_t(turns) + plan.pieces.size();
+  if (total > kMaxBlockPieces) {
+    fail(file, mv,
+         fmt::format("{} turns of this arc take {} pieces at --step {} mm, more than the {} a block may hold: "
+                     "fewer turns (P), or a coarser --step",
+                     turns + 1, total, double(step) / double(kNmPerMm), kMaxBlockPieces));
+  }
+  std::vector<Piece> pieces;
+  pieces.reserve(total);
+  for (int k = 0; k < turns; ++k) pieces.insert(pieces.end(), turn.pieces.begin(), turn.pieces.end());
+  pieces.insert(pieces.end(), plan.pieces.begin(), plan.pieces.end());
+  plan.pieces = std::move(pieces);
+  plan.iteration_bound += turn.iteration_bound * std::uint64_t(turns);
 }
 
 // Whether a block turns half a turn or more about its centre from its start to its end,
@@ -172,7 +188,9 @@ void BlockPlanner::plan_front() {
       // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
       b.plan = plan_curve(mv, b.from, b.to);
       // An arc of several turns (P): its full turns first, from its start.
-      for (int k = 1; k < mv.turns; ++k) prepend(b.plan, plan_curve(full_turn(mv), b.from, b.from));
+      if (mv.turns > 1) {
+        prepend_turns(b.plan, plan_curve(full_turn(mv), b.from, b.from), mv.turns - 1, file_, mv, step);
+      }
     }
   } catch (const ProgramError&) {
     throw;
