@@ -113,8 +113,8 @@ void check_program_options(const ArcOptions& o) {
     if (o.prog.machine != "mill" || !o.prog.start.empty() || o.prog.step != "0.001") {
       throw InputError("--machine, --start and --step go with --program FILE");
     }
-    if (!o.prog.dialect.empty() || o.prog.block_delete) {
-      throw InputError("--dialect and --block-delete go with --program FILE");
+    if (!o.prog.dialect.empty() || o.prog.block_delete || !o.prog.subroutine_path.empty()) {
+      throw InputError("--dialect, --block-delete and --subroutine-path go with --program FILE");
     }
     return;
   }

@@ -41,6 +41,10 @@ void add_program_options(CLI::App* sub, ProgramCli& o) {
   sub->add_option("--dialect", o.dialect,
                   "with --program: linuxcnc, hnc or fanuc (default: detected from the program; docs/programs.md)");
   sub->add_flag("--block-delete", o.block_delete, "with --program: skip the blocks that start with '/'");
+  sub->add_option("--subroutine-path", o.subroutine_path,
+                  "with --program: folders where LinuxCNC's o<name> call finds name.ngc after the program's "
+                  "own (LinuxCNC's SUBROUTINE_PATH; colon-separated, or the option given again)")
+      ->delimiter(':');
 }
 
 std::string program_name(const ProgramCli& o) { return o.file == "-" ? "<stdin>" : o.file; }
@@ -66,6 +70,7 @@ ProgramRun program_run(const ProgramCli& o, Preload preload, bool hardware) {
     }
   }
   run.read.block_delete = o.block_delete;
+  run.read.subroutine_path = o.subroutine_path;
   if (!o.start.empty()) {
     const auto [p, q] = parse_mm_pair("start", o.start);
     run.read.start = program::start_point(run.read.machine, p, q);

@@ -5,8 +5,11 @@
 
 #include <string>
 
+#include <string>
+#include <vector>
 #include "accuracy/golden.hpp"
 #include "pipeline/pipeline.hpp"
+
 #include "program_plan/program_plan.hpp"
 
 namespace CLI {
@@ -19,6 +22,7 @@ struct ProgramCli {
   std::string file;  // "-": standard input; empty: no program
   std::string machine = "mill", start, step = "0.001", dialect;
   bool block_delete = false;
+  std::vector<std::string> subroutine_path;
   bool given() const { return !file.empty(); }
 };
 void add_program_options(CLI::App* sub, ProgramCli& o);

@@ -87,6 +87,8 @@ def run_ours(args, program, options):
     for key, value in options.items():
         if key not in ("--dialect", "--machine"):
             cmd += [key] + ([value] if value is not None else [])
+    if args.subroutine_path:  # the same folders for both
+        cmd += ["--subroutine-path", ":".join(os.path.abspath(d) for d in args.subroutine_path.split(":"))]
     try:
         p = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(program)), stdin=subprocess.DEVNULL,
                            capture_output=True, timeout=args.timeout)
@@ -351,8 +353,8 @@ def main():
                     "plus rs274's print precision (default 0.001)")
     ap.add_argument("--timeout", type=float, default=20.0, help="seconds per program and side (default 20)")
     ap.add_argument("--jobs", type=int, default=2, help="programs run at once (default 2)")
-    ap.add_argument("--subroutine-path", help="rs274's SUBROUTINE_PATH (colon-separated folders) for o<name> call; "
-                    "it always looks in the program's own folder first")
+    ap.add_argument("--subroutine-path", help="SUBROUTINE_PATH (colon-separated folders) for o<name> call, rs274's and our "
+                    "reader's (--subroutine-path); both look in the program's own folder first")
     ap.add_argument("--eof-ends-program", action="store_true", help="count rs274's refusal \"%s\" as an "
                     "acceptance (LinuxCNC needs M2, M30 or %%%%; other controllers end a program at its last line)"
                     % EOF_REFUSAL)

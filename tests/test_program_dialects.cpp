@@ -124,7 +124,7 @@ TEST_CASE("dialects: O-word subroutines take #1-#30 as their own and return a va
         "p.nc:1:1: a computed O-word name (o#<name>) goes with call only");
 }
 
-TEST_CASE("dialects: a subroutine in a file of its name beside the program", "[program]") {
+TEST_CASE("dialects: a subroutine in a file of its name beside the program or on the path", "[program]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("dda_subfile_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -150,6 +150,20 @@ TEST_CASE("dialects: a subroutine in a file of its name beside the program", "[p
                                               "assigned to it");
   CHECK(error("F1\no<gone> call\nM2\n")
             .find("no o<gone> sub in this program, nor a file " + (dir / "gone.ngc").string()) != std::string::npos);
+  // Then the folders of the subroutine path, in order (the program's own first).
+  fs::create_directories(dir / "lib1");
+  fs::create_directories(dir / "lib2");
+  std::ofstream(dir / "lib1" / "deep.ngc") << "o<deep> sub\n  G1 X7\no<deep> endsub\n";
+  std::ofstream(dir / "lib2" / "deep.ngc") << "o<deep> sub\n  G1 X8\no<deep> endsub\n";
+  std::ofstream(dir / "lib2" / "side.ngc") << "o<side> sub\n  G1 X99\no<side> endsub\n";
+  o.subroutine_path = {(dir / "lib0").string(), (dir / "lib1").string(), (dir / "lib2").string()};
+  const Program q = read("F1\no<deep> call\no<side> call [5]\nM2\n", (dir / "main.ngc").string(), o);
+  REQUIRE(q.moves.size() == 3);
+  CHECK(q.moves[0].to.u == mm(7));   // lib1's, the first folder that has it
+  CHECK(q.moves[1].to.u == mm(12));  // side.ngc beside the program comes first (G91 X5)
+  CHECK(error("F1\no<gone> call\nM2\n")
+            .find((dir / "lib0" / "gone.ngc").string() + ", " + (dir / "lib1" / "gone.ngc").string()) !=
+        std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -120,6 +120,9 @@ struct ReadOptions {
   // The block delete switch: on, a block starting with '/' is skipped; off (as on a
   // control at power-on), the '/' is ignored and the block runs.
   bool block_delete = false;
+  // Where LinuxCNC's o<name> call finds a subroutine file name.ngc after the program's
+  // own folder: these folders in order (LinuxCNC's SUBROUTINE_PATH).
+  std::vector<std::string> subroutine_path;
 };
 
 // Reads a program's text; `file` names it in error messages. (It reads the text as a

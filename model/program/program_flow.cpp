@@ -292,18 +292,28 @@ void Reader::run_sub(const std::string& name, const std::vector<double>& args, c
 }
 
 // A subroutine LinuxCNC would find in its subroutine path: the file <name>.ngc (the name
-// without its angle brackets) in the program's folder, read and structured once, which
-// must define o<name> sub.
+// without its angle brackets) in the program's folder or, failing that, in the folders
+// of --subroutine-path in order, read and structured once, which must define o<name> sub.
 Reader::Source* Reader::subroutine_file(const std::string& name, const SourcePos& at) {
   if (const auto it = files_.find(name); it != files_.end()) return it->second.get();
   const std::string bare = name.front() == '<' ? name.substr(1, name.size() - 2) : name;
-  const std::filesystem::path dir =
-      main_.file == "<stdin>" ? std::filesystem::path(".") : std::filesystem::path(main_.file).parent_path();
-  const std::filesystem::path path = dir / (bare + ".ngc");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    fail(at, "o" + name + " call: no o" + name + " sub in this program, nor a file " + path.string() +
-                 " (LinuxCNC's subroutine path: the program's folder)");
+  std::vector<std::filesystem::path> dirs{main_.file == "<stdin>" ? std::filesystem::path(".")
+                                                                  : std::filesystem::path(main_.file).parent_path()};
+  for (const std::string& d : opt_.subroutine_path) dirs.emplace_back(d);
+  std::filesystem::path path;
+  std::string tried;
+  for (const auto& dir : dirs) {
+    const std::filesystem::path p = dir / (bare + ".ngc");
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(p, ec)) {
+      path = p;
+      break;
+    }
+    tried += (tried.empty() ? "" : ", ") + p.string();
+  }
+  if (path.empty()) {
+    fail(at, "o" + name + " call: no o" + name + " sub in this program, nor a file " + tried +
+                 " (the program's folder, then --subroutine-path)");
   }
   auto src = std::make_unique<Source>(open_program(path.string()), path.string());
   src->lines.set_dialect(dialect_);
