@@ -19,10 +19,11 @@ namespace {
 using program::Length;
 using program::Move;
 
-// A point of the plane (u, v) and the normal coordinate w as machine X, Y, Z in mm.
-std::array<double, 3> xyz(const Move& mv, program::Point2 p) {
+// A point of the move's plane (u, v) and the normal coordinate w as machine X, Y, Z in mm
+// (the start's w for the start and the centre, the end's for the end).
+std::array<double, 3> xyz(const Move& mv, program::Point2 p, Length w_nm) {
   const double u = double(p.u) / double(program::kNmPerMm), v = double(p.v) / double(program::kNmPerMm);
-  const double w = double(mv.w) / double(program::kNmPerMm);
+  const double w = double(w_nm) / double(program::kNmPerMm);
   if (mv.plane == 180) return {v, w, u};
   if (mv.plane == 190) return {w, u, v};
   return {u, v, w};
@@ -36,20 +37,20 @@ void write_json(std::ostream& os, const Move& mv) {
   j["n"] = mv.block_number ? nlohmann::ordered_json(*mv.block_number) : nlohmann::ordered_json(nullptr);
   j["kind"] = std::string(program::kind_name(mv.kind));
   j["plane"] = mv.plane / 10;
-  j["from"] = xyz(mv, mv.from);
-  j["to"] = xyz(mv, mv.to);
-  j["center"] = curved(mv) ? nlohmann::ordered_json(xyz(mv, mv.center)) : nlohmann::ordered_json(nullptr);
+  j["from"] = xyz(mv, mv.from, mv.w);
+  j["to"] = xyz(mv, mv.to, mv.w_to);
+  j["center"] = curved(mv) ? nlohmann::ordered_json(xyz(mv, mv.center, mv.w)) : nlohmann::ordered_json(nullptr);
   j["turns"] = curved(mv) ? mv.turns : 0;
   j["feed"] = mv.feed;
   os << j.dump() << '\n';
 }
 
 void write_text(std::ostream& os, const Move& mv) {
-  const auto to = xyz(mv, mv.to);
+  const auto to = xyz(mv, mv.to, mv.w_to);
   os << fmt::format("{:>6} {:<11} X{:.4f} Y{:.4f} Z{:.4f}", mv.pos.line, program::kind_name(mv.kind), to[0], to[1],
                     to[2]);
   if (curved(mv)) {
-    const auto c = xyz(mv, mv.center);
+    const auto c = xyz(mv, mv.center, mv.w);
     os << fmt::format("  centre X{:.4f} Y{:.4f} Z{:.4f}", c[0], c[1], c[2]);
     if (mv.turns > 1) os << fmt::format(" turns {}", mv.turns);
   }

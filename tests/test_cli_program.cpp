@@ -38,8 +38,8 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
       {"G6.2 X10 Y0 A0 B2\n", "1:13: the semi-axis A must be positive"},
       {"G6.2 X10 Y0 A5 B-2\n", "1:16: the semi-axis B must be positive"},
       {"G01 X1 Z5\n",
-       "1:8: Z5 moves Z, the axis normal to the plane (G17: X, Y): moving the axis normal to the plane is not "
-       "supported until the third axis"},
+       "1:1: block at line 1 (line): it moves Z, the axis normal to the plane (G17: X, Y), by 5.0000 mm: moving the "
+       "axis normal to the plane is not supported until the third axis"},
       {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
   };
   // The macro language's classes.

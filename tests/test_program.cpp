@@ -173,9 +173,9 @@ TEST_CASE("program: every class of bad input names its file, line and column", "
   CHECK(error_of("G6.2 X30 Y0 A5 B2\n") == "p.nc:1:1: the end is out of reach of an ellipse with these A, B and Q");
   CHECK(error_of("G41 G01 X1\n") ==
         "p.nc:1:1: tool radius compensation (G41/G42) is not supported: program the tool's path");
-  CHECK(error_of("G01 X1 Z5\n") ==
-        "p.nc:1:8: Z5 moves Z, the axis normal to the plane (G17: X, Y): moving the axis normal to the plane "
-        "is not supported until the third axis");
+  // (A move of the axis normal to the plane is read; the planner refuses it until the
+  // third axis: tests/test_program_plan.cpp.)
+  CHECK(mill("G01 X1 Z5\n").moves.at(0).w_to == mm(5));
   CHECK(error_of("G01 G02 X1\n") == "p.nc:1:5: G01 and G02 in one block: one motion per block");
   CHECK(error_of("G01 X1 X2\n") == "p.nc:1:8: X twice in one block");
   CHECK(error_of("G01 X1 F0\n") == "p.nc:1:8: the feed F must be positive");

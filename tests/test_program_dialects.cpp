@@ -204,12 +204,14 @@ TEST_CASE("dialects: LinuxCNC's M70-M73 save and restore the modal state", "[pro
   CHECK(error_in("M72\nM2\n", Dialect::LinuxCnc) == "p.nc:1:1: M72: no modal state saved by M70 to restore");
 }
 
-TEST_CASE("dialects: a G1, G2 or G3 without a feed rate is refused in LinuxCNC's dialect only", "[program]") {
+TEST_CASE("dialects: a G1, G2 or G3 without a feed rate is refused but in HNC's dialect", "[program]") {
   CHECK(error_in("G1 X1\nM2\n", Dialect::LinuxCnc) ==
         "p.nc:1:1: G1 with no feed rate in force: give F (LinuxCNC refuses a feed move at zero feed)");
   CHECK(error_in("G2 X2 I1\nM2\n", Dialect::LinuxCnc).rfind("p.nc:1:1: G2 with no feed rate", 0) == 0);
   CHECK(error_in("G0 X1\nM2\n", Dialect::LinuxCnc).empty());  // a rapid needs none
   CHECK(error_in("G1 X1\nM2\n", Dialect::Hnc).empty());       // the HNC examples carry no F
+  CHECK(error_in("G1 X1\nM30\n", Dialect::Fanuc) ==
+        "p.nc:1:1: G1 with no feed rate in force: give F (Fanuc's controls alarm at a feed move at zero feed)");
   CHECK(error_in("G93 G1 X1 F2\nG1 X2\nM2\n", Dialect::LinuxCnc) ==
         "p.nc:2:1: G93 (inverse time): every feed move needs its own F");
   CHECK(error_in("F1\nG1 X1\n", Dialect::LinuxCnc) ==
@@ -223,10 +225,16 @@ TEST_CASE("dialects: a plane switch keeps the tool where it is", "[program]") {
   CHECK(p.moves[1].from == Point2{0, mm(10)});
   CHECK(p.moves[1].to == Point2{0, mm(5)});  // LinuxCNC: Y5 Z0, X still 0
   CHECK(p.moves[1].w == 0);
-  // An arc in the new plane would move Z: the third axis.
-  CHECK(error_in("G0 X0 Y10\nG19 G2 Y0 Z10 J0 K10 F1\nM2\n", Dialect::LinuxCnc)
-            .find("moves the axis normal to the plane, which is not supported until the third axis") !=
-        std::string::npos);
+  // An arc in the new plane lies in it (Y, Z), at the tool's X (the planner refuses it
+  // until the third axis).
+  const Program q = lcnc("G0 X3 Y10\nG19 G2 Y0 Z10 J0 K10 F1\nM2\n");
+  REQUIRE(q.moves.size() == 2);
+  CHECK(q.moves[1].plane == 190);
+  CHECK(q.moves[1].from == Point2{mm(10), 0});
+  CHECK(q.moves[1].to == Point2{0, mm(10)});
+  CHECK(q.moves[1].center == Point2{mm(10), mm(10)});
+  CHECK(q.moves[1].w == mm(3));
+  CHECK(q.moves[1].w_to == mm(3));
 }
 
 TEST_CASE("dialects: arc ends within LinuxCNC's tolerance run, HNC's stays 0.002 mm", "[program]") {
@@ -323,13 +331,15 @@ TEST_CASE("dialects: what the reader cannot run yet is refused naming the featur
         "p.nc:2:7: A: rotary axes (A, B, C) are not supported: the interpolator drives linear axes");
   CHECK(refused("G1 U1") == "p.nc:2:4: U: secondary linear axes (U, V, W) are not supported");
   CHECK(refused("G1 @1 ^30") == "p.nc:2:4: polar coordinates (@ and ^ words) are not supported");
-  CHECK(refused("G1 Z-1") ==
-        "p.nc:2:4: Z-1 moves Z, the axis normal to the plane (G17: X, Y): moving the axis normal to the plane is not "
-        "supported until the third axis");
-  CHECK(refused("G2 X2 I1 Z1") ==
-        "p.nc:2:10: helices (an arc that also moves Z) are not supported until the third axis");
-  CHECK(refused("G81 X1 Y1 Z-1 R1").rfind("p.nc:2:1: G81: canned cycles (G73, G74, G81-G89) are not supported", 0) ==
-        0);
+  // Read, for the planner to refuse until the third axis: a plunge and a helix.
+  const Program plunge = lcnc("F1\nG1 Z-1\nG2 X2 I1 Z1\nM2\n");
+  REQUIRE(plunge.moves.size() == 2);
+  CHECK(plunge.moves[0].w_to == mm(-1));
+  CHECK(plunge.moves[1].kind == MoveKind::ArcCw);
+  CHECK(plunge.moves[1].w == mm(-1));
+  CHECK(plunge.moves[1].w_to == mm(1));
+  CHECK(refused("G86 X1 Y1 Z-1 R1 P1") ==
+        "p.nc:2:1: G86: canned cycles that stop or reverse the spindle (G74, G84, G86-G88) are not supported");
   CHECK(refused("$H").rfind("p.nc:2:1: a '$' line is a command to a Grbl controller", 0) == 0);
   CHECK(refused("(a (nested) comment)") == "p.nc:2:4: a comment inside a comment: LinuxCNC refuses nested comments");
   CHECK(refused("G0 X1 O1234").rfind("p.nc:2:7: O1234: a program number line is Fanuc's (--dialect fanuc)", 0) == 0);

@@ -275,6 +275,29 @@ TEST_CASE("program plan: an arc of several turns runs its full turns first", "[p
       Catch::Contains("100 turns of this arc take") && Catch::Contains("fewer turns (P), or a coarser --step"));
 }
 
+TEST_CASE("program plan: what needs the third axis is refused naming it", "[program]") {
+  ReadOptions lcnc;
+  lcnc.dialect = Dialect::LinuxCnc;
+  const auto refusal = [&](const std::string& text) {
+    try {
+      plan_program(read("F1\n" + text + "\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+    } catch (const ProgramError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(refusal("G1 X1\nG1 Z-1") ==
+        "p.nc:3:1: block at line 3 (line): it moves Z, the axis normal to the plane (G17: X, Y), by -1.0000 mm: "
+        "moving the axis normal to the plane is not supported until the third axis");
+  CHECK(refusal("G1 X1\nG2 X3 I1 Z1") ==
+        "p.nc:3:1: block at line 3 (arc cw): a helix (an arc that also moves Z) is not supported until the third "
+        "axis");
+  CHECK(refusal("G1 X1\nG18 G2 X0 Z0 I-0.5 K0") ==
+        "p.nc:3:5: block at line 3 (arc cw): an arc in G18: Z, X, outside the plane of the two axes (G17: X, Y), is "
+        "not supported until the third axis");
+  CHECK(refusal("G1 X1 Z0\nG1 X2").empty());  // a Z word that leaves Z where it is
+}
+
 TEST_CASE("program plan: the block targets", "[program]") {
   const ProgramPlan pp = plan_text(
       "G01 X1 Y0.0005\nG02 X0 Y-1 I-1 J0\nG6.3 X-3 Y0 A3 B1 I0 J1\nG6.3 X3 Y0 A3 B0.5 I3 J0\nG6.2 X-3 Y0 A3 B2 Q1000 "

@@ -86,10 +86,10 @@ struct Move {
   // Arcs and ellipses: how far the end lies off the curve through the start (within the
   // dialect's tolerance); the planner allows it.
   Length end_off = 0;
-  int plane = 170;  // the plane of the two axes (as ReadSummary::plane)
-  // The machine coordinate along the axis normal to the plane (G17: Z), which the two
-  // axes do not move: the same for every block of a run.
-  Length w = 0;
+  int plane = 170;  // the plane of from, to and center: the run's (ReadSummary::plane), or an arc's in force
+  // The machine coordinate along the axis normal to the move's plane (G17: Z) at its
+  // start and at its end: they differ on a 3-D line, a plunge or a helix.
+  Length w = 0, w_to = 0;
   // The feed in force (F, program units per minute as written, 0 if none yet).
   double feed = 0;
 };

@@ -69,6 +69,7 @@ void Reader::block(const Line& l) {
   if (words.empty()) return;
   Block b;
   for (const Word& w : words) sort_word(w, b);
+  const int before = m_.motion;
   set_modes(b);
   if (b.group[kNonModal] && tenths(*b.group[kNonModal]) == 40 && b.m98) {
     fail(*b.m98, "M98 in a dwell (G04) block: a call stands in its own block");
@@ -83,13 +84,19 @@ void Reader::block(const Line& l) {
     call_ = m98_call(b);
   } else if (non_modal_code >= 0 && non_modal_code != 530) {
     non_modal(b);
+  } else if (drill_code(m_.motion)) {
+    // A drilling cycle runs on its code or on an axis word while it is in force.
+    const bool axis = b.axes.count('X') || b.axes.count('Y') || b.axes.count('Z');
+    if (b.group[kMotion] || axis) drill_cycle(b, b.group[kMotion] ? b.group[kMotion]->pos : words.front().pos, before);
   } else if (b.group[kMotion] && turning_code(m_.motion)) {
+    cycle_.initial.reset();
     turning_cycle(b, b.group[kMotion]->pos);
   } else {
     const bool arc = m_.motion == 20 || m_.motion == 30;
     // (LinuxCNC moves on G00 or G01 without an axis word too: a move of length 0.)
     const bool still = dialect_ == Dialect::LinuxCnc && b.group[kMotion] && (m_.motion == 0 || m_.motion == 10);
     if (!b.axes.empty() || (b.group[kMotion] && arc) || still) {
+      cycle_.initial.reset();  // (a move other than a cycle ends a row of cycles)
       motion(b, b.group[kMotion] ? b.group[kMotion]->pos : words.front().pos, non_modal_code == 530);
     } else if (non_modal_code == 530) {
       fail(b.group[kNonModal]->pos, "G53 moves in machine coordinates: it needs an axis word");
@@ -138,8 +145,8 @@ void Reader::sort_word(const Word& w, Block& b) {
 void Reader::g_code(const Word& w, Block& b) {
   const int g = tenths(w);
   const bool lathe = opt_.machine == Machine::Lathe;
-  if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63 ||
-      (turning_code(g) && dialect_ == Dialect::LinuxCnc)) {
+  const bool lcnc_cycle = dialect_ == Dialect::LinuxCnc && (turning_code(g) || (drill_code(g) && !lathe));
+  if (g == 0 || g == 10 || g == 20 || g == 30 || g == 62 || g == 63 || lcnc_cycle) {
     set_group(b, kMotion, w, "motion");
   } else if (g == 170 || g == 180 || g == 190) {
     if (lathe && g != 180) fail(w.pos, "a lathe works in G18 (Z and X)");
@@ -245,19 +252,22 @@ void Reader::g_refused(int g, const Word& w) const {
     case 53:
       fail(w.pos, name(w) + ": splines (G5, G5.1, G5.2, G5.3) are not supported: convert them to lines and arcs");
     case 730:
-    case 740:
     case 810:
     case 820:
     case 830:
-    case 840:
     case 850:
+    case 890:  // (LinuxCNC's, on a mill, are read: program_drill.cpp)
+      fail(w.pos, name(w) + (opt_.machine == Machine::Lathe
+                                 ? ": canned cycles drill along the axis normal to the plane, which a lathe (G18) "
+                                   "lacks: they are not supported on a lathe"
+                                 : ": canned cycles in HNC's and Fanuc's dialects are not supported (LinuxCNC's "
+                                   "G73, G81-G83, G85 and G89 are read in --dialect linuxcnc)"));
+    case 740:
+    case 840:
     case 860:
     case 870:
     case 880:
-    case 890:
-      fail(w.pos, name(w) +
-                      ": canned cycles (G73, G74, G81-G89) are not supported until the third axis: they move "
-                      "along the axis normal to the plane");
+      fail(w.pos, name(w) + ": canned cycles that stop or reverse the spindle (G74, G84, G86-G88) are not supported");
     case 700:
     case 710:
     case 711:
@@ -349,8 +359,10 @@ void Reader::set_modes(const Block& b) {
   }
   if (b.group[kDistance]) m_.incremental = tenths(*b.group[kDistance]) == 910;
   if (b.group[kArcDistance]) m_.ijk_absolute = tenths(*b.group[kArcDistance]) == 901;
+  if (b.group[kReturn]) m_.retract_old_z = tenths(*b.group[kReturn]) == 980;
   if (b.group[kMotion]) m_.motion = tenths(*b.group[kMotion]);
   if (b.cancel_cycle && !b.group[kMotion]) m_.motion = -1;
+  if (b.cancel_cycle) cycle_.initial.reset();
 }
 
 // The words a block's other codes read, recorded and taken out of its axes: H with

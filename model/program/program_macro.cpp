@@ -289,9 +289,11 @@ Word Macro::value_word(const Line& l, const Word& w) {
   if (std::fabs(v) > 1e9) fail(w.pos, fmt::format("{}{} = {}: beyond what a word holds", w.letter, w.text, v));
   Word r = w;
   r.expr = -1;
-  r.mantissa = std::llround(v * 1e6);  // the value to the millionth, as a number of 6 decimals
-  r.decimals = 6;
-  r.text = fmt_value(double(r.mantissa) / 1e6);
+  // The value to 1e-9 of the program's unit, as a number of 9 decimals (an inch
+  // program's lengths then keep the nanometre too).
+  r.mantissa = std::llround(v * 1e9);
+  r.decimals = 9;
+  r.text = fmt_value(double(r.mantissa) / 1e9);
   return r;
 }
 

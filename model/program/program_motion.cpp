@@ -16,14 +16,7 @@ namespace dda::program::detail {
 
 namespace {
 
-const char kAxis[] = {'X', 'Y', 'Z'};
-
 std::string plane_name(int plane) { return plane == 180 ? "G18: Z, X" : plane == 190 ? "G19: Y, Z" : "G17: X, Y"; }
-
-std::string normal_move(const std::string& what, char axis, int plane) {
-  return what + " moves " + axis + ", the axis normal to the plane (" + plane_name(plane) +
-         "): moving the axis normal to the plane is not supported until the third axis";
-}
 
 // The centre of a circle of radius r through p and q (distinct), on the side that makes
 // the turn from p to q in direction cw sweep at most half a turn (short) or at least (long).
@@ -92,21 +85,10 @@ void Reader::check_letters(const Block& b) const {
   }
 }
 
-// The block's target in machine coordinates; the axis normal to the plane of the two
-// axes must stay (until the third axis).
-Axes Reader::target(const Block& b, bool machine, const SourcePos& where) {
-  const Axes to = word_axes(b, machine, pos_);
-  const PlaneAxes pa = plane_axes(lattice_);
-  const std::size_t w = std::size_t(pa.w);
-  if (to[w] != pos_[w]) {
-    const char n = kAxis[w];
-    const auto word = b.axes.find(n);
-    const bool arc = m_.motion == 20 || m_.motion == 30;
-    fail(word != b.axes.end() ? word->second->pos : where,
-         arc ? std::string("helices (an arc that also moves ") + n + ") are not supported until the third axis"
-             : normal_move(word != b.axes.end() ? name(*word->second) : "the block", n, lattice_));
-  }
-  return to;
+// The block's target in machine coordinates (the axis normal to the plane may move: a
+// 3-D line, a helix; the planner decides what the interpolator runs).
+Axes Reader::target(const Block& b, bool machine, const SourcePos& /*where*/) const {
+  return word_axes(b, machine, pos_);
 }
 
 void Reader::motion(const Block& b, const SourcePos& where, bool machine) {
@@ -116,20 +98,30 @@ void Reader::motion(const Block& b, const SourcePos& where, bool machine) {
   const bool arc_mode = m_.motion == 20 || m_.motion == 30, feed_mode = m_.motion != 0;
   if (machine && m_.motion != 0 && m_.motion != 10) fail(where, "G53 goes with G00 or G01 only");
   if (machine && m_.incremental) fail(where, "G53 moves to machine coordinates: not in G91 (LinuxCNC refuses it)");
-  if (arc_mode && m_.plane != lattice_) {
-    fail(where, "G" + std::to_string(m_.motion / 10) + " in " + plane_name(m_.plane) +
-                    ": an arc outside the plane of the two axes (" + plane_name(lattice_) +
-                    ") moves the axis normal to the plane, which is not supported until the third axis");
+  const bool ellipse_mode = m_.motion == 62 || m_.motion == 63;
+  if (ellipse_mode && m_.plane != lattice_) {
+    fail(where, fmt::format("G{}.{} in ", m_.motion / 10, m_.motion % 10) + plane_name(m_.plane) +
+                    ": an ellipse outside the plane of the two axes (" + plane_name(lattice_) + ") is not supported");
   }
-  if (dialect_ == Dialect::LinuxCnc && feed_mode) {
+  // An arc lies in the plane in force (a helix along its normal); every other move is
+  // given in the plane of the two axes.
+  move_plane_ = arc_mode ? m_.plane : lattice_;
+  if (arc_mode && move_plane_ != 170 && rotation_[std::size_t(m_.cs)] != 0) {
+    fail(where, "G" + std::to_string(m_.motion / 10) + " in " + plane_name(m_.plane) +
+                    " with the coordinate system turned (G10 L2 R): the arc's plane turns with X and Y, out of "
+                    "the machine's planes, and the interpolator's axes cannot follow it (such arcs are not "
+                    "supported)");
+  }
+  if (dialect_ != Dialect::Hnc && feed_mode) {  // (HNC's examples carry no F)
     if (m_.inverse_time && !b.feed) fail(where, "G93 (inverse time): every feed move needs its own F");
     if (!m_.inverse_time && m_.feed <= 0) {
-      fail(where, "G" + std::to_string(m_.motion / 10) +
-                      " with no feed rate in force: give F (LinuxCNC refuses a feed move at zero feed)");
+      fail(where, "G" + std::to_string(m_.motion / 10) + " with no feed rate in force: give F (" +
+                      (dialect_ == Dialect::LinuxCnc ? "LinuxCNC refuses" : "Fanuc's controls alarm at") +
+                      " a feed move at zero feed)");
     }
   }
   const Axes to = target(b, machine, where);
-  const PlaneAxes pa = plane_axes(lattice_);
+  const PlaneAxes pa = plane_axes(move_plane_);
   Move mv;
   mv.pos = where;
   mv.block_number = b.n;
@@ -150,11 +142,8 @@ void Reader::motion(const Block& b, const SourcePos& where, bool machine) {
 
 // A rapid from the tool to `to` (G28, G30).
 void Reader::traverse(const Axes& to, const Block& b, const SourcePos& where) {
-  const PlaneAxes pa = plane_axes(lattice_);
-  const std::size_t w = std::size_t(pa.w);
-  if (to[w] != pos_[w]) {
-    fail(where, normal_move("the block", kAxis[w], lattice_));
-  }
+  move_plane_ = lattice_;
+  const PlaneAxes pa = plane_axes(move_plane_);
   Move mv;
   mv.pos = where;
   mv.block_number = b.n;
@@ -166,15 +155,17 @@ void Reader::traverse(const Axes& to, const Block& b, const SourcePos& where) {
 }
 
 void Reader::emit(Move& mv, const Axes& to) {
-  mv.w = pos_[std::size_t(plane_axes(lattice_).w)];
-  mv.plane = lattice_;
+  const std::size_t w = std::size_t(plane_axes(move_plane_).w);
+  mv.w = pos_[w];
+  mv.w_to = to[w];
+  mv.plane = move_plane_;
   out_.on_move(mv);
   pos_ = to;
   sync_position();
 }
 
 void Reader::arc(Move& mv, const Block& b, const SourcePos& where) {
-  const PlaneAxes pa = plane_axes(lattice_);
+  const PlaneAxes pa = plane_axes(move_plane_);
   const auto iu = b.axes.find(pa.iu), iv = b.axes.find(pa.iv), r = b.axes.find('R');
   const bool has_centre = iu != b.axes.end() || iv != b.axes.end();
   if (r != b.axes.end() && has_centre) fail(r->second->pos, "an arc takes a centre or a radius R, not both");
@@ -194,7 +185,7 @@ void Reader::arc(Move& mv, const Block& b, const SourcePos& where) {
 // G90.1 the centre itself in program coordinates. The end must lie on the circle within
 // the dialect's tolerance.
 void Reader::arc_by_centre(Move& mv, const Block& b, const SourcePos& where) {
-  const PlaneAxes pa = plane_axes(lattice_);
+  const PlaneAxes pa = plane_axes(move_plane_);
   const auto iu = b.axes.find(pa.iu), iv = b.axes.find(pa.iv);
   const Length du = iu != b.axes.end() ? length(*iu->second) : 0, dv = iv != b.axes.end() ? length(*iv->second) : 0;
   if (m_.ijk_absolute) {
@@ -203,7 +194,7 @@ void Reader::arc_by_centre(Move& mv, const Block& b, const SourcePos& where) {
     c[std::size_t(pa.v)] = dv;
     const Axes m = to_machine(c);
     mv.center = Point2{m[std::size_t(pa.u)], m[std::size_t(pa.v)]};
-  } else if (rotation_[std::size_t(m_.cs)] != 0 && lattice_ == 170) {
+  } else if (rotation_[std::size_t(m_.cs)] != 0 && move_plane_ == 170) {
     const auto [x, y] = turn(double(du), double(dv), 1);  // offsets turn with the system
     mv.center = Point2{mv.from.u + std::llround(x), mv.from.v + std::llround(y)};
   } else {

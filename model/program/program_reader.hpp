@@ -30,6 +30,8 @@ double length_mm(Length l);
 
 // G70, G71, G71.1, G71.2, G72, G72.1, G72.2 (in tenths): LinuxCNC's lathe turning cycles.
 bool turning_code(int g);
+// G73, G81, G82, G83, G85, G89 (in tenths): LinuxCNC's drilling cycles the reader expands.
+bool drill_code(int g);
 
 // The modal state besides the position and offsets.
 struct Modal {
@@ -37,10 +39,11 @@ struct Modal {
   int plane = 170;
   bool inch = false;
   bool incremental = false;
-  bool ijk_absolute = false;  // G90.1: arc centres absolute
-  bool diameter = false;      // X (and U) as diameters: G7 (LinuxCNC) or G36 (HNC, Fanuc lathes)
-  bool inverse_time = false;  // G93
-  int cs = 0;                 // the work offset in force: 0 G54 .. 8 G59.3
+  bool ijk_absolute = false;   // G90.1: arc centres absolute
+  bool diameter = false;       // X (and U) as diameters: G7 (LinuxCNC) or G36 (HNC, Fanuc lathes)
+  bool inverse_time = false;   // G93
+  bool retract_old_z = false;  // G98: canned cycles retract to where they started; G99 (default): to R
+  int cs = 0;                  // the work offset in force: 0 G54 .. 8 G59.3
   double feed = 0;
 };
 
@@ -145,7 +148,7 @@ class Reader {
   void fix_lattice();
   void motion(const Block& b, const SourcePos& where, bool machine);
   void emit(Move& mv, const Axes& to);
-  Axes target(const Block& b, bool machine, const SourcePos& where);
+  Axes target(const Block& b, bool machine, const SourcePos& where) const;
   void check_letters(const Block& b) const;
   void arc(Move& mv, const Block& b, const SourcePos& where);
   void arc_by_centre(Move& mv, const Block& b, const SourcePos& where);
@@ -165,6 +168,16 @@ class Reader {
   void contour_segment(Contour& c, const std::map<char, double>& v, turning::Pt end, const SourcePos& where);
   void turning_pass(const Block& cycle, const SourcePos& where, const turning::Pass& p);
 
+  // LinuxCNC's drilling cycles (program_drill.cpp): a hole's coordinates in the plane in
+  // force (u, v) and along its normal: the retract plane R, the bottom and the level
+  // each hole retracts to.
+  struct Hole {
+    double u = 0, v = 0, r = 0, bottom = 0, clear = 0;
+  };
+  void drill_cycle(const Block& b, const SourcePos& where, int before);
+  void drill_hole(const Block& b, const SourcePos& where, int g, const Hole& h);
+  void drill_move(const Block& cycle, const SourcePos& where, bool feed, double u, double v, double w);
+
   // The plane's axes: u, v and the normal w as indices of X, Y, Z; the letters of the
   // centre words along u and v.
   struct PlaneAxes {
@@ -179,8 +192,9 @@ class Reader {
   Dialect dialect_ = Dialect::LinuxCnc;
   Modal m_;
   ReadSummary sum_;
-  Axes pos_{};       // the tool, in machine coordinates (nm; X a radius)
-  int lattice_ = 0;  // the plane of the two axes, fixed by the first block that needs the position
+  Axes pos_{};          // the tool, in machine coordinates (nm; X a radius)
+  int lattice_ = 0;     // the plane of the two axes, fixed by the first block that needs the position
+  int move_plane_ = 0;  // the plane of the move being built: an arc's plane in force, else lattice_
   // Offsets (nm): the work offsets G54-G59.3, G92's (or G52's) and the tool length's.
   std::array<Axes, 9> work_{};
   std::array<double, 9> rotation_{};  // each work offset's XY rotation (G10 L2 R), degrees
@@ -211,6 +225,12 @@ class Reader {
   std::optional<Modal> saved_;
   std::vector<std::optional<Modal>> call_saved_{1};
   Contour* contour_ = nullptr;  // a turning cycle's contour being read
+  // The drilling cycles' sticky values (program units as written): R, the bottom, the
+  // peck; and the level the cycles in a row started from.
+  struct CycleState {
+    double r = 0, bottom = 0, q = 0;
+    std::optional<double> initial;
+  } cycle_;
 };
 
 }  // namespace dda::program::detail

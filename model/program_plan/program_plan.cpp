@@ -170,9 +170,29 @@ void BlockPlanner::move(const Move& mv) {
   if (held_.size() > window_) plan_front();
 }
 
+// Why the interpolator's two axes cannot run a move, or empty: the axis normal to the
+// run's plane moves (a 3-D line, a plunge, a helix) or an arc lies in another plane.
+static std::string beyond_two_axes(const Move& mv, int run_plane) {
+  static const char* const kPlane[] = {"G17: X, Y", "G18: Z, X", "G19: Y, Z"};
+  const auto plane = [](int p) { return std::string(kPlane[p == 180 ? 1 : p == 190 ? 2 : 0]); };
+  const char normal = run_plane == 180 ? 'Y' : run_plane == 190 ? 'X' : 'Z';
+  const char* const until = " is not supported until the third axis";
+  if (mv.plane != run_plane) {
+    return "an arc in " + plane(mv.plane) + ", outside the plane of the two axes (" + plane(run_plane) + ")," + until;
+  }
+  if (mv.w == mv.w_to) return "";
+  if (is_arc(mv.kind)) return std::string("a helix (an arc that also moves ") + normal + ")" + until;
+  return fmt::format(
+      "it moves {}, the axis normal to the plane ({}), by {:.4f} mm: moving the axis normal to the "
+      "plane{}",
+      normal, plane(run_plane), double(mv.w_to - mv.w) / double(kNmPerMm), until);
+}
+
 void BlockPlanner::plan_front() {
   const Move& mv = held_.front();
   const Length step = opt_.step;
+  if (run_plane_ == 0) run_plane_ = mv.plane;  // (the reader gives the first move in the run's plane)
+  if (const std::string why = beyond_two_axes(mv, run_plane_); !why.empty()) fail(file_, mv, why);
   BlockPlan b;
   b.move = mv;
   b.from = at_;

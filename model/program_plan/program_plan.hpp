@@ -96,6 +96,7 @@ class BlockPlanner {
   std::size_t window_;
   std::function<void(BlockPlan&&)> on_block_;
   std::deque<Move> held_;
+  int run_plane_ = 0;  // the plane of the two axes: the first move's
   Point start_, at_;
   double start_rounding_ = 0;
   std::uint64_t pieces_ = 0, blocks_ = 0;
