@@ -147,6 +147,14 @@ TEST_CASE("drilling: what LinuxCNC refuses is refused with the reason", "[progra
   CHECK(error_in("G81 X1 Z-1 R1\nM2\n") ==
         "p.ngc:1:1: G81 with no feed rate in force: give F (LinuxCNC refuses a feed move at zero feed)");
   CHECK(error_in("F1\nG81 X1 Z-1 R1 Q1\nM2\n") == "p.ngc:2:15: Q is not a word of G81");
+  // While a cycle is in force (rs274 refuses each of these the same way).
+  const std::string in_force = "F1\nG0 Z10\nG81 X0 Y0 Z-1 R2\n";
+  CHECK(error_in(in_force + "G53 X10 Y10\nM2\n") ==
+        "p.ngc:4:1: G53 goes with G00 or G01 only (LinuxCNC refuses it in a canned cycle)");
+  CHECK(error_in(in_force + "R5\nX1\nM2\n") ==
+        "p.ngc:4:1: R with no code that reads it: a canned cycle in force runs on X, Y or Z");
+  CHECK(error_in(in_force + "G81 R5\nM2\n") ==
+        "p.ngc:4:1: G81 needs an axis word (X, Y or Z): LinuxCNC refuses a motion code without one");
   CHECK(error_in("F1\nG84 X1 Z-1 R1\nM2\n") ==
         "p.ngc:2:1: G84: canned cycles that stop or reverse the spindle (G74, G84, G86-G88) are not supported");
   CHECK(error_in("F1\nG81 X1 Z-1 R1\nM2\n", Machine::Lathe)

@@ -168,6 +168,11 @@ TEST_CASE("turning: what LinuxCNC refuses, or would loop on, is refused with the
         "p.ngc:11:14: P (the number of finishing passes) is at most 1000");
   CHECK(error_in(kContour + "G71 Q1 X9 Z2 I0.00001\nM2\n") ==
         "p.ngc:11:1: G71 Q1: I (the depth of cut) is too small: more than 100000 depths");
+  // Nothing to cut: LinuxCNC would take the contour's end as its position without moving.
+  CHECK(error_in("G18 F1\no4 sub\nG1 X5 Z-10\no4 endsub\nG0 X10 Z0\nG71 Q4 X10 Z0 I1\nM2\n") ==
+        "p.ngc:6:1: G71 Q4: the contour needs at least two moves (the approach and a cut)");
+  CHECK(error_in(kContour + "G70 Q1 X9 Z2 P0\nM2\n") ==
+        "p.ngc:11:1: G70 Q1: P (the number of finishing passes) must be at least 1");
   // Z rises again after the taper: a roughing cannot follow it.
   CHECK(error_in("G18 F1\no3 sub\nG0 X0 Z1\nG1 X2 Z0\nZ-4\nX3 Z-2\nX4 Z-6\no3 endsub\nG0 X9 Z2\nG71 Q3 X9 Z2\nM2\n") ==
         "p.ngc:10:1: G71 Q3: the contour is not monotonic (X must not rise as Z falls, or the reverse)");

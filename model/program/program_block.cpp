@@ -85,9 +85,7 @@ void Reader::block(const Line& l) {
   } else if (non_modal_code >= 0 && non_modal_code != 530) {
     non_modal(b);
   } else if (drill_code(m_.motion)) {
-    // A drilling cycle runs on its code or on an axis word while it is in force.
-    const bool axis = b.axes.count('X') || b.axes.count('Y') || b.axes.count('Z');
-    if (b.group[kMotion] || axis) drill_cycle(b, b.group[kMotion] ? b.group[kMotion]->pos : words.front().pos, before);
+    drill_block(b, words.front().pos, before, non_modal_code == 530);
   } else if (b.group[kMotion] && turning_code(m_.motion)) {
     cycle_.initial.reset();
     turning_cycle(b, b.group[kMotion]->pos);

@@ -84,8 +84,14 @@ void Reader::turning_cycle(const Block& b, const SourcePos& where) {
   }
   contour_ = nullptr;
   m_.motion = contour.motion;
-  sync_position();                       // (#<_x> and #<_z> followed the contour)
-  if (contour.segs.size() <= 1) return;  // nothing to cut, as in LinuxCNC
+  sync_position();  // (#<_x> and #<_z> followed the contour)
+  // (LinuxCNC cuts nothing then, and takes the contour's end for its position without
+  // moving there: a jump the reader refuses.)
+  if (contour.segs.size() <= 1 || (g == 700 && words.p < 1)) {
+    fail(where, code + " Q" + q->second->text +
+                    (g == 700 && words.p < 1 ? ": P (the number of finishing passes) must be at least 1"
+                                             : ": the contour needs at least two moves (the approach and a cut)"));
+  }
   if (g != 700 && !(words.i > 0)) fail(where, code + ": I (the depth of each cut) must be positive");
   const turning::Sink sink = [&](const turning::Pass& p) { turning_pass(b, where, p); };
   try {

@@ -24,6 +24,21 @@ double number(const Word& w) { return double(w.mantissa) / std::pow(10.0, w.deci
 
 bool drill_code(int g) { return g == 730 || g == 810 || g == 820 || g == 830 || g == 850 || g == 890; }
 
+// A block while a drilling cycle is in force: the cycle runs on an axis word (with or
+// without its code); any other word of the cycle's alone is refused, as in LinuxCNC.
+void Reader::drill_block(const Block& b, const SourcePos& first, int before, bool machine) {
+  const Word* code = b.group[kMotion];
+  if (machine) fail(b.group[kNonModal]->pos, "G53 goes with G00 or G01 only (LinuxCNC refuses it in a canned cycle)");
+  const bool axis = b.axes.count('X') || b.axes.count('Y') || b.axes.count('Z');
+  if (axis) return drill_cycle(b, code ? code->pos : first, before);
+  if (code)
+    fail(code->pos, name(*code) + " needs an axis word (X, Y or Z): LinuxCNC refuses a motion code without one");
+  if (!b.axes.empty()) {
+    const Word& w = *b.axes.begin()->second;
+    fail(w.pos, std::string(1, w.letter) + " with no code that reads it: a canned cycle in force runs on X, Y or Z");
+  }
+}
+
 // The cycle's block (`before`: the motion mode before it): where the holes are, R the
 // retract plane, the bottom along the normal axis, and each hole's moves.
 void Reader::drill_cycle(const Block& b, const SourcePos& where, int before) {
@@ -54,8 +69,8 @@ void Reader::drill_cycle(const Block& b, const SourcePos& where, int before) {
   std::int64_t repeats = 1;
   if (const auto l = b.axes.find('L'); l != b.axes.end()) {
     repeats = integer(*l->second);
-    if (repeats < 1 || repeats > 10000)
-      fail(l->second->pos, "L (the repeats of a canned cycle) must be from 1 to 10000");
+    if (repeats < 1 || repeats > 1000000)
+      fail(l->second->pos, "L (the repeats of a canned cycle) must be from 1 to 1000000");
   }
   const double bottom_word = value(normal).value_or(cycle_.bottom), r_word = value('R').value_or(cycle_.r);
   if (peck) cycle_.q = value('Q').value_or(cycle_.q);

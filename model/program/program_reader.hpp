@@ -174,6 +174,7 @@ class Reader {
   struct Hole {
     double u = 0, v = 0, r = 0, bottom = 0, clear = 0;
   };
+  void drill_block(const Block& b, const SourcePos& first, int before, bool machine);
   void drill_cycle(const Block& b, const SourcePos& where, int before);
   void drill_hole(const Block& b, const SourcePos& where, int g, const Hole& h);
   void drill_move(const Block& cycle, const SourcePos& where, bool feed, double u, double v, double w);
