@@ -19,8 +19,6 @@ namespace {
 
 using turning::Pt;
 
-double number(const Word& w) { return double(w.mantissa) / std::pow(10.0, w.decimals); }
-
 std::string code_name(int g) { return g % 10 ? fmt::format("G{}.{}", g / 10, g % 10) : fmt::format("G{}", g / 10); }
 
 // LinuxCNC's modal group 1 besides G0-G3: a contour line with one of these adds nothing.
@@ -51,7 +49,7 @@ void Reader::turning_cycle(const Block& b, const SourcePos& where) {
   const double cur_x = double(here[0]) / unit, cur_z = double(here[2]) / unit;
   turning::CycleWords words;
   const auto read = [&](char c, double& v) {
-    if (const auto it = b.axes.find(c); it != b.axes.end()) v = number(*it->second);
+    if (const auto it = b.axes.find(c); it != b.axes.end()) v = word_number(*it->second);
   };
   words.x = cur_x;  // (a radius: in G7 LinuxCNC halves an X word as it reads it)
   words.z = cur_z;
@@ -77,7 +75,7 @@ void Reader::turning_cycle(const Block& b, const SourcePos& where) {
   contour.ijk_absolute = m_.ijk_absolute;
   contour_ = &contour;
   try {
-    run_sub(std::to_string(std::lround(number(*q->second))), {}, q->second->pos, 1);
+    run_sub(std::to_string(std::lround(word_number(*q->second))), {}, q->second->pos, 1);
   } catch (...) {
     contour_ = nullptr;
     throw;
@@ -120,7 +118,7 @@ void Reader::contour_line(const Line& l) {
       const int t = tenths(w);
       if (t == 0 || t == 10 || t == 20 || t == 30 || other_motion(t)) g = t;
     } else if (std::string_view("XZUWIKRAC").find(w.letter) != std::string_view::npos) {
-      v[w.letter] = number(w);
+      v[w.letter] = word_number(w);
     }
   }
   const SourcePos where{l.number, 1};
@@ -192,11 +190,7 @@ void Reader::turning_pass(const Block& cycle, const SourcePos& where, const turn
   b.n = cycle.n;
   const auto set = [&](std::size_t n, char c, double v) {
     if (!(std::fabs(v) < 1e7)) fail(where, "a pass of the turning cycle leaves the range the reader holds");
-    w[n].letter = c;
-    w[n].mantissa = std::llround(v * 1e9);
-    w[n].decimals = 9;
-    w[n].text = fmt::format("{:.4f}", v);
-    w[n].pos = where;
+    w[n] = computed_word(c, v, where);
     b.axes[c] = &w[n];
   };
   set(0, 'X', m_.diameter ? 2 * p.end.imag() : p.end.imag());  // (the geometry's X is a radius)

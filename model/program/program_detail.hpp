@@ -75,6 +75,12 @@ struct Word {
   SourcePos pos;
 };
 
+// A word's value as a double (its mantissa over 10^decimals).
+double word_number(const Word& w);
+// A word of a computed value (|v| at most 1e9): 9 decimals, 1e-9 of the program's unit
+// (an inch program's lengths keep the nanometre), its text the value's.
+Word computed_word(char letter, double v, const SourcePos& pos);
+
 // Statements: HNC's (Assign .. EndIf, a line of their own) and LinuxCNC's O-words.
 enum class Stmt {
   None,

@@ -18,8 +18,6 @@ namespace {
 
 const char kAxisLetter[] = {'X', 'Y', 'Z'};
 
-double number(const Word& w) { return double(w.mantissa) / std::pow(10.0, w.decimals); }
-
 }  // namespace
 
 bool drill_code(int g) { return g == 730 || g == 810 || g == 820 || g == 830 || g == 850 || g == 890; }
@@ -58,7 +56,7 @@ void Reader::drill_cycle(const Block& b, const SourcePos& where, int before) {
   const auto value = [&](char c) -> std::optional<double> {
     const auto it = b.axes.find(c);
     if (it == b.axes.end()) return std::nullopt;
-    return c == 'X' && m_.diameter ? number(*it->second) / 2 : number(*it->second);
+    return c == 'X' && m_.diameter ? word_number(*it->second) / 2 : word_number(*it->second);
   };
   const char normal = kAxisLetter[pa.w];
   if (before != g && !value(normal))
@@ -153,13 +151,8 @@ void Reader::drill_move(const Block& cycle, const SourcePos& where, bool feed, d
     double value = at[k];
     if (axis[k] == 0 && m_.diameter) value *= 2;  // (the geometry's X is a radius)
     if (!(std::fabs(value) < 1e7)) fail(where, "a move of the canned cycle leaves the range the reader holds");
-    Word& word = words[k];
-    word.letter = kAxisLetter[axis[k]];
-    word.mantissa = std::llround(value * 1e9);
-    word.decimals = 9;
-    word.text = fmt::format("{:.4f}", value);
-    word.pos = where;
-    b.axes[word.letter] = &word;
+    words[k] = computed_word(kAxisLetter[axis[k]], value, where);
+    b.axes[words[k].letter] = &words[k];
   }
   const int mode = m_.motion;
   const bool incremental = m_.incremental;

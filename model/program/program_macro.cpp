@@ -287,13 +287,18 @@ Word Macro::value_word(const Line& l, const Word& w) {
   if (w.expr < 0) return w;
   const double v = eval(l, w.expr);
   if (std::fabs(v) > 1e9) fail(w.pos, fmt::format("{}{} = {}: beyond what a word holds", w.letter, w.text, v));
-  Word r = w;
-  r.expr = -1;
-  // The value to 1e-9 of the program's unit, as a number of 9 decimals (an inch
-  // program's lengths then keep the nanometre too).
+  return computed_word(w.letter, v, w.pos);
+}
+
+double word_number(const Word& w) { return double(w.mantissa) / std::pow(10.0, w.decimals); }
+
+Word computed_word(char letter, double v, const SourcePos& pos) {
+  Word r;
+  r.letter = letter;
   r.mantissa = std::llround(v * 1e9);
   r.decimals = 9;
   r.text = fmt_value(double(r.mantissa) / 1e9);
+  r.pos = pos;
   return r;
 }
 
