@@ -46,6 +46,20 @@ Point parse_point(const std::string& name, const std::string& s) {
   }
 }
 
+// A line's end: X,Y, or X,Y,Z with the third axis.
+Point parse_point3(const std::string& name, const std::string& s) {
+  const auto last = s.rfind(',');
+  if (last == std::string::npos || s.find(',') == last) return parse_point(name, s);
+  const char* rule = "a line's point is two or three integers X,Y or X,Y,Z";
+  try {
+    Point p = parse_point(name, s.substr(0, last));
+    p.z = parse_int(name, s.substr(last + 1), rule);
+    return p;
+  } catch (const InputError&) {
+    throw InputError(name + " = '" + s + "' is invalid: " + rule);
+  }
+}
+
 void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, const std::string& default_format,
                      ArcUses uses) {
   o.format = default_format;
@@ -66,7 +80,8 @@ void add_arc_options(CLI::App* sub, ArcOptions& o, const std::string& formats, c
                   "the exact integer datapath, other angles fixed-point coefficients)");
   sub->add_option("--dir", o.dir, "direction: ccw (default) or cw");
   sub->add_option("--from", o.from,
-                  "start lattice point X,Y (default: centre + (semi-axis along X, 0); turned by a "
+                  "start lattice point X,Y (with --line also X,Y,Z: the third axis; default: centre + (semi-axis along "
+                  "X, 0); turned by a "
                   "non-multiple of 90 degrees: parametric angle 0)");
   sub->add_option("--to", o.to,
                   "end lattice point X,Y (default: a quarter turn on, parametric angle 90 when turned); "
@@ -102,7 +117,7 @@ Plan make_line(const ArcOptions& o) {
   }
   if (o.dir != "ccw") throw InputError("--dir is invalid with --line: a line runs from --from to --to");
   if (o.from.empty() || o.to.empty()) throw InputError("--line needs --from X,Y and --to X,Y");
-  return plan_line(parse_point("from", o.from), parse_point("to", o.to), parse_preload(o.preload));
+  return plan_line(parse_point3("from", o.from), parse_point3("to", o.to), parse_preload(o.preload));
 }
 
 }  // namespace

@@ -89,6 +89,7 @@ void run_arc_command(const ArcOptions& o, MakeSink make_sink) {
   std::optional<Plan> plan;
   if (o.prog.given()) {
     prun = program_run(o.prog, parse_preload(o.preload), hardware);
+    prun->third_axis = moves_third_axis(o.prog.file, *prun);
     in = program::open_program(o.prog.file);
   } else {
     plan = make_plan(o);
@@ -177,15 +178,16 @@ void run_trace(const Cli& c, int, char**) {
                               {{"csv", TraceFormat::Csv}, {"table", TraceFormat::Table}, {"json", TraceFormat::Json}});
   run_arc_command(c.trace, [&](std::ostream& os, const RunTarget& t) {
     return t.plan ? std::make_unique<TraceSink>(os, *t.plan, fmt)
-                  : std::make_unique<TraceSink>(os, t.program->lattice.preload, t.from(), fmt);
+                  : std::make_unique<TraceSink>(os, t.program->lattice.preload, t.from(), fmt, t.program->third_axis);
   });
 }
 
 void run_path(const Cli& c, int, char**) {
   const auto fmt =
       parse_enum<PathFormat>("format", c.path.format, {{"csv", PathFormat::Csv}, {"json", PathFormat::Json}});
-  run_arc_command(c.path,
-                  [&](std::ostream& os, const RunTarget& t) { return std::make_unique<PathSink>(os, t.from(), fmt); });
+  run_arc_command(c.path, [&](std::ostream& os, const RunTarget& t) {
+    return std::make_unique<PathSink>(os, t.from(), fmt, t.plan ? third_axis(*t.plan) : t.program->third_axis);
+  });
 }
 
 void run_stats(const Cli& c, int, char**) {
@@ -196,8 +198,8 @@ void run_stats(const Cli& c, int, char**) {
   if (fmt == BlockStatsFormat::Csv && !c.stats.prog.given()) throw InputError("--format csv goes with --program");
   run_arc_command(c.stats, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
     if (t.program) {
-      return std::make_unique<program::BlockStatsSink>(os, t.program->lattice,
-                                                       t.program->read.start.value_or(program::Point2{}), fmt);
+      return std::make_unique<program::BlockStatsSink>(
+          os, t.program->lattice, t.program->read.start.value_or(program::Point2{}), fmt, t.program->third_axis);
     }
     return std::make_unique<StatsSink>(*t.plan, &os,
                                        fmt == program::BlockStatsFormat::Json ? StatsFormat::Json : StatsFormat::Text);

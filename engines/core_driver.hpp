@@ -22,7 +22,8 @@ namespace dda {
 // The output ports a harness reads, in kPorts order (checked by a static_assert beside
 // each harness' read_ports()).
 inline constexpr std::array<std::string_view, hw::kNumOutputs> kHarnessOutputs = {
-    "cmd_ready_o", "step_x_o", "step_y_o", "dir_x_o", "dir_y_o", "busy_o", "done_o", "err_o", "iter_o"};
+    "cmd_ready_o", "step_x_o", "step_y_o", "dir_x_o", "dir_y_o", "step_z_o",
+    "dir_z_o",     "busy_o",   "done_o",   "err_o",   "iter_o"};
 static_assert(hw::outputs_are(kHarnessOutputs), "kHarnessOutputs no longer lists hw::kPorts' outputs in order");
 
 class CoreHarness {

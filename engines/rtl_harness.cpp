@@ -59,8 +59,8 @@ bool RtlHarness::edge() {
 
 PortValues RtlHarness::read_ports() {
   // The order of kHarnessOutputs.
-  return {top_->cmd_ready_o, top_->step_x_o, top_->step_y_o, top_->dir_x_o, top_->dir_y_o,
-          top_->busy_o,      top_->done_o,   top_->err_o,    top_->iter_o};
+  return {top_->cmd_ready_o, top_->step_x_o, top_->step_y_o, top_->dir_x_o, top_->dir_y_o, top_->step_z_o,
+          top_->dir_z_o,     top_->busy_o,   top_->done_o,   top_->err_o,   top_->iter_o};
 }
 
 }  // namespace dda::rtl

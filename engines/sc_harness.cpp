@@ -22,6 +22,8 @@ ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory
   core_->dir_x_o(dir_x_);
   core_->step_y_o(step_y_);
   core_->dir_y_o(dir_y_);
+  core_->step_z_o(step_z_);
+  core_->dir_z_o(dir_z_);
   core_->busy_o(busy_);
   core_->done_o(done_);
   core_->err_o(err_);
@@ -38,6 +40,8 @@ ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory
     sc_core::sc_trace(tf_, dir_x_, "dir_x_o");
     sc_core::sc_trace(tf_, step_y_, "step_y_o");
     sc_core::sc_trace(tf_, dir_y_, "dir_y_o");
+    sc_core::sc_trace(tf_, step_z_, "step_z_o");
+    sc_core::sc_trace(tf_, dir_z_, "dir_z_o");
     sc_core::sc_trace(tf_, done_, "done_o");
     sc_core::sc_trace(tf_, err_, "err_o");
     sc_core::sc_trace(tf_, iter_, "iter_o");
@@ -105,8 +109,8 @@ bool ScHarness::edge() {
 
 PortValues ScHarness::read_ports() {
   // The order of kHarnessOutputs.
-  return {cmd_ready_.read(), step_x_.read(), step_y_.read(), dir_x_.read(), dir_y_.read(),
-          busy_.read(),      done_.read(),   err_.read(),    iter_.read()};
+  return {cmd_ready_.read(), step_x_.read(), step_y_.read(), dir_x_.read(), dir_y_.read(), step_z_.read(),
+          dir_z_.read(),     busy_.read(),   done_.read(),   err_.read(),   iter_.read()};
 }
 
 }  // namespace dda::sc

@@ -43,6 +43,7 @@ class ScHarness : public CoreHarness {
   sc_core::sc_signal<bool> rst_n_{"rst_n"}, ce_{"ce"}, cmd_valid_{"cmd_valid"}, cmd_ready_{"cmd_ready"};
   sc_core::sc_signal<cmd_t> cmd_{"cmd"};
   sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
+  sc_core::sc_signal<bool> step_z_{"step_z"}, dir_z_{"dir_z"};
   sc_core::sc_signal<bool> busy_{"busy"}, done_{"done"}, err_{"err"}, iter_{"iter"};
   std::unique_ptr<dda_core> core_;
   std::unique_ptr<ScSampler> sampler_;

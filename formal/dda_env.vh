@@ -4,9 +4,10 @@
 // planner and the command packer, docs/design.md "Command preconditions") guarantees,
 // nothing else:
 //   * reset in the first cycle;
-//   * a loaded command is well formed: 0 < cap < 2^(AccWidth-1), jr_x, jr_y < cap
-//     (the packer checks it; dda_core's assertion "a loaded command is malformed"
-//     checks it in every simulation);
+//   * a loaded command is well formed: 0 < cap < 2^(AccWidth-1), jr_x, jr_y < cap, and
+//     a moving third axis (cnt_z != 0) has 0 < cap_z < 2^(AccWidth-1), jr_z < cap_z,
+//     jv_z <= cap_z (the packer checks it; dda_core's assertions "a loaded command is
+//     malformed" check it in every simulation);
 //   * the state assumption: an active axis' integrand stays in [-cap, cap], and an
 //     iteration that leaves the axis active does not wrap it around 2^AccWidth: the
 //     integrand after it is exactly the one before plus the corrections of its steps
@@ -28,6 +29,10 @@
   wire [EnvW-1:0] env_cap    = cmd_i[`DDA_CMD_CAP_LSB +: EnvW];
   wire [EnvW-1:0] env_jr_x   = cmd_i[`DDA_CMD_JR_X_LSB +: EnvW];
   wire [EnvW-1:0] env_jr_y   = cmd_i[`DDA_CMD_JR_Y_LSB +: EnvW];
+  wire [EnvW-1:0] env_jv_z   = cmd_i[`DDA_CMD_JV_Z_LSB +: EnvW];
+  wire [EnvW-1:0] env_jr_z   = cmd_i[`DDA_CMD_JR_Z_LSB +: EnvW];
+  wire [EnvW-1:0] env_cap_z  = cmd_i[`DDA_CMD_CAP_Z_LSB +: EnvW];
+  wire [EnvC-1:0] env_cnt_z  = cmd_i[`DDA_CMD_CNT_Z_LSB +: EnvC];
 
   function automatic in_range(input [EnvW-1:0] jv, input [EnvW-1:0] cap);
     // -cap <= jv <= cap, jv two's complement, 0 <= cap < 2^(EnvW-1)
@@ -60,6 +65,10 @@
     if (env_load) begin
       assume (env_cap != {EnvW{1'b0}} && !env_cap[EnvW-1]);
       assume (env_jr_x < env_cap && env_jr_y < env_cap);
+      if (env_cnt_z != {EnvC{1'b0}}) begin
+        assume (env_cap_z != {EnvW{1'b0}} && !env_cap_z[EnvW-1]);
+        assume (env_jr_z < env_cap_z && env_jv_z <= env_cap_z);
+      end
     end
     if (s_cnt_x != {EnvC{1'b0}}) assume (in_range(s_jv_x, s_cap));
     if (s_cnt_y != {EnvC{1'b0}}) assume (in_range(s_jv_y, s_cap));

@@ -16,7 +16,7 @@ module dda_formal_props (
   localparam integer W = `DDA_ACC_WIDTH;
   localparam integer C = `DDA_CNT_WIDTH;
 
-  wire cmd_ready, step_x, step_y, dir_x, dir_y, busy, done, err, iter;
+  wire cmd_ready, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, done, err, iter;
   wire [W-1:0] s_jv_x, s_jv_y, s_jr_x, s_cap, s_inc_xx, s_inc_xy, s_inc_yx, s_inc_yy;
   wire [C-1:0] s_cnt_x, s_cnt_y;
 
@@ -31,6 +31,8 @@ module dda_formal_props (
     .step_y_o       (step_y),
     .dir_x_o        (dir_x),
     .dir_y_o        (dir_y),
+    .step_z_o       (step_z),
+    .dir_z_o        (dir_z),
     .busy_o         (busy),
     .done_o         (done),
     .err_o          (err),
@@ -66,6 +68,8 @@ module dda_formal_props (
       cover (env_load && busy && n_load == 2'd1);
       // a stall ending in err_o
       cover (err);
+      // a third-axis step
+      cover (step_z);
       // a negative integrand holding its axis: an iteration with X active and negative
       cover (busy && ce_i && s_cnt_x != {C{1'b0}} && neg_x && s_cnt_y != {C{1'b0}} && !s_jv_y[W-1] &&
              s_jv_y != {W{1'b0}});

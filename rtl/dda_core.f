@@ -11,5 +11,6 @@ $(DDA_RTL)/dda_sum_zero.v
 $(DDA_RTL)/dda_addsel.v
 $(DDA_RTL)/dda_counter.v
 $(DDA_RTL)/dda_integrator.v
+$(DDA_RTL)/dda_linear.v
 $(DDA_RTL)/dda_ctrl.v
 $(DDA_RTL)/dda_core.v

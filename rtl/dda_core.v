@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Ellipse DDA interpolator core (docs/design.md is the contract: ports, registers and
-// behaviour edge by edge). Two integrators (u_int_x, u_int_y), two step counters
-// (u_cnt_x, u_cnt_y), the control (u_ctrl), and here the shared capacity cap_q, the
-// directions dir_*_q and the registered step pulses step_*_q.
+// behaviour edge by edge). Two ellipse integrators (u_int_x, u_int_y) and the third,
+// linear, axis' integrator (u_lin_z), three step counters (u_cnt_x, u_cnt_y, u_cnt_z),
+// the control (u_ctrl), and here the plane's shared capacity cap_q, the directions
+// dir_*_q and the registered step pulses step_*_q.
 //
 // Impl chooses the implementation of the datapath and control (docs/design.md,
 // "Implementations"): "small" (the default, fewest logic cells) or "fast" (derived
@@ -38,6 +39,8 @@ module dda_core #(
   output wire                      step_y_o,
   output wire                      dir_x_o,      // 0 = +X, 1 = -X
   output wire                      dir_y_o,      // 0 = +Y, 1 = -Y
+  output wire                      step_z_o,
+  output wire                      dir_z_o,      // 0 = +Z, 1 = -Z
   output wire                      busy_o,
   output wire                      done_o,
   output wire                      err_o,
@@ -61,32 +64,43 @@ module dda_core #(
   wire [AccWidth-1:0] cmd_inc_x_on_y = cmd_i[`DDA_CMD_INC_X_ON_Y_LSB +: `DDA_CMD_INC_X_ON_Y_WIDTH];
   wire [AccWidth-1:0] cmd_inc_y_on_x = cmd_i[`DDA_CMD_INC_Y_ON_X_LSB +: `DDA_CMD_INC_Y_ON_X_WIDTH];
   wire [AccWidth-1:0] cmd_inc_y_on_y = cmd_i[`DDA_CMD_INC_Y_ON_Y_LSB +: `DDA_CMD_INC_Y_ON_Y_WIDTH];
+  wire [AccWidth-1:0] cmd_jv_z       = cmd_i[`DDA_CMD_JV_Z_LSB +: `DDA_CMD_JV_Z_WIDTH];
+  wire [AccWidth-1:0] cmd_jr_z       = cmd_i[`DDA_CMD_JR_Z_LSB +: `DDA_CMD_JR_Z_WIDTH];
+  wire [AccWidth-1:0] cmd_cap_z      = cmd_i[`DDA_CMD_CAP_Z_LSB +: `DDA_CMD_CAP_Z_WIDTH];
+  wire [CntWidth-1:0] cmd_cnt_z      = cmd_i[`DDA_CMD_CNT_Z_LSB +: `DDA_CMD_CNT_Z_WIDTH];
+  wire                cmd_dir_z      = cmd_i[`DDA_CMD_DIR_Z_LSB];
 
   // Registers of the top.
   reg [AccWidth-1:0] cap_q    /* verilator public_flat_rd */;
   reg                cdir_x_q /* verilator public_flat_rd */;  // the running command's
   reg                cdir_y_q /* verilator public_flat_rd */;  // step directions
+  reg                cdir_z_q /* verilator public_flat_rd */;
   reg                dir_x_q  /* verilator public_flat_rd */;  // direction of the last step
   reg                dir_y_q  /* verilator public_flat_rd */;
+  reg                dir_z_q  /* verilator public_flat_rd */;
   reg                step_x_q /* verilator public_flat_rd */;
   reg                step_y_q /* verilator public_flat_rd */;
+  reg                step_z_q /* verilator public_flat_rd */;
 
   reg [AccWidth-1:0] cap_d;
   reg                cdir_x_d;
   reg                cdir_y_d;
+  reg                cdir_z_d;
   reg                dir_x_d;
   reg                dir_y_d;
+  reg                dir_z_d;
   reg                step_x_d;
   reg                step_y_d;
+  reg                step_z_d;
 
   wire load;
   wire iterate;
-  wire ovf_x, ovf_y;
+  wire ovf_x, ovf_y, ovf_z;
   wire ovf_d_x, ovf_d_y;  // the carries after this edge (Impl "fast")
-  wire can_x, can_y;
-  wire active_x, active_y;
-  wire active_d_x, active_d_y;
-  wire last_x, last_y;
+  wire can_x, can_y, can_z;
+  wire active_x, active_y, active_z;
+  wire active_d_x, active_d_y, active_d_z;
+  wire last_x, last_y, last_z;
 
   dda_ctrl u_ctrl (
     .clk_i       (clk_i),
@@ -96,10 +110,13 @@ module dda_core #(
     .cmd_ready_o (cmd_ready_o),
     .active_x_i  (active_x),
     .active_y_i  (active_y),
+    .active_z_i  (active_z),
     .can_x_i     (can_x),
     .can_y_i     (can_y),
+    .can_z_i     (can_z),
     .last_x_i    (last_x),
     .last_y_i    (last_y),
+    .last_z_i    (last_z),
     .load_o      (load),
     .iterate_o   (iterate),
     .busy_o      (busy_o),
@@ -176,6 +193,32 @@ module dda_core #(
     .last_o    (last_y)
   );
 
+  dda_linear #(.AccWidth(AccWidth), .Impl(Impl)) u_lin_z (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .load_i     (load),
+    .jv_i       (cmd_jv_z),
+    .jr_i       (cmd_jr_z),
+    .cap_i      (cmd_cap_z),
+    .iterate_i  (iterate),
+    .active_i   (active_z),
+    .active_d_i (active_d_z),
+    .ovf_o      (ovf_z),
+    .can_o      (can_z)
+  );
+
+  dda_counter #(.CntWidth(CntWidth), .Impl(Impl)) u_cnt_z (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .load_i    (load),
+    .cnt_i     (cmd_cnt_z),
+    .iterate_i (iterate),
+    .dec_i     (ovf_z),
+    .active_o  (active_z),
+    .active_d_o(active_d_z),
+    .last_o    (last_z)
+  );
+
   // A step pulse carries the direction of the command that made it: dir_*_q changes
   // only together with a step, so a command loaded on the edge of the previous one's
   // last step (back to back) cannot change the direction of that step.
@@ -183,15 +226,19 @@ module dda_core #(
     cap_d    = cap_q;
     cdir_x_d = cdir_x_q;
     cdir_y_d = cdir_y_q;
+    cdir_z_d = cdir_z_q;
     if (load) begin
       cap_d    = cmd_cap;
       cdir_x_d = cmd_dir_x;
       cdir_y_d = cmd_dir_y;
+      cdir_z_d = cmd_dir_z;
     end
     step_x_d = iterate & ovf_x;  // pulses: 0 unless this edge iterates
     step_y_d = iterate & ovf_y;
+    step_z_d = iterate & ovf_z;
     dir_x_d  = step_x_d ? cdir_x_q : dir_x_q;
     dir_y_d  = step_y_d ? cdir_y_q : dir_y_q;
+    dir_z_d  = step_z_d ? cdir_z_q : dir_z_q;
   end
 
   always @(posedge clk_i) begin
@@ -199,18 +246,24 @@ module dda_core #(
       cap_q    <= {AccWidth{1'b0}};
       cdir_x_q <= 1'b0;
       cdir_y_q <= 1'b0;
+      cdir_z_q <= 1'b0;
       dir_x_q  <= 1'b0;
       dir_y_q  <= 1'b0;
+      dir_z_q  <= 1'b0;
       step_x_q <= 1'b0;
       step_y_q <= 1'b0;
+      step_z_q <= 1'b0;
     end else begin
       cap_q    <= cap_d;
       cdir_x_q <= cdir_x_d;
       cdir_y_q <= cdir_y_d;
+      cdir_z_q <= cdir_z_d;
       dir_x_q  <= dir_x_d;
       dir_y_q  <= dir_y_d;
+      dir_z_q  <= dir_z_d;
       step_x_q <= step_x_d;
       step_y_q <= step_y_d;
+      step_z_q <= step_z_d;
     end
   end
 
@@ -218,19 +271,26 @@ module dda_core #(
   assign step_y_o = step_y_q;
   assign dir_x_o  = dir_x_q;
   assign dir_y_o  = dir_y_q;
+  assign step_z_o = step_z_q;
+  assign dir_z_o  = dir_z_q;
 
 `ifndef SYNTHESIS
   // Assertions (rtl/dda_assert.vh): a direction register changes only with a step of
-  // its axis; steps only on iterations (one pulse per axis and iteration); a loaded command is well formed (0 < cap < 2^(AccWidth-1), jr < cap: the
-  // planner's guarantee, docs/design.md).
+  // its axis; steps only on iterations (one pulse per axis and iteration); a loaded
+  // command is well formed (0 < cap < 2^(AccWidth-1), jr < cap, and so for a moving Z
+  // axis with jv_z <= cap_z: the planner's guarantee, docs/design.md).
   wire cmd_cap_ok = cmd_cap != {AccWidth{1'b0}} && !cmd_cap[AccWidth-1];
+  wire cmd_cap_z_ok = cmd_cap_z != {AccWidth{1'b0}} && !cmd_cap_z[AccWidth-1];
   always @(posedge clk_i) begin
     if (rst_ni) begin
       `DDA_ASSERT(dir_x_d == dir_x_q || step_x_d, "ASSERTION dda_core: dir_x_q changes without an X step")
       `DDA_ASSERT(dir_y_d == dir_y_q || step_y_d, "ASSERTION dda_core: dir_y_q changes without a Y step")
-      `DDA_ASSERT((!step_x_q && !step_y_q) || iter_o, "ASSERTION dda_core: a step without an iteration")
+      `DDA_ASSERT(dir_z_d == dir_z_q || step_z_d, "ASSERTION dda_core: dir_z_q changes without a Z step")
+      `DDA_ASSERT((!step_x_q && !step_y_q && !step_z_q) || iter_o, "ASSERTION dda_core: a step without an iteration")
       `DDA_ASSERT(!load || (cmd_cap_ok && cmd_jr_x < cmd_cap && cmd_jr_y < cmd_cap),
                   "ASSERTION dda_core: a loaded command is malformed (needs 0 < cap < 2^(AccWidth-1), jr < cap)")
+      `DDA_ASSERT(!load || cmd_cnt_z == {CntWidth{1'b0}} || (cmd_cap_z_ok && cmd_jr_z < cmd_cap_z && cmd_jv_z <= cmd_cap_z),
+                  "ASSERTION dda_core: a loaded Z command is malformed (needs 0 < cap_z < 2^(AccWidth-1), jr_z < cap_z, jv_z <= cap_z)")
     end
   end
 `endif

@@ -3,9 +3,9 @@
 // the state machine state_q (idle, run) and the one-cycle pulses done_q, err_q, iter_q.
 //
 // Run with ce_i high does exactly one of (in this order)
-//   finished  both counters 0                       -> idle, done_q = 1
-//   stalled   no active axis can carry (can_x/y low) -> idle, err_q = 1
-//   iterate   iterate_o = 1, iter_q = 1; both counters 0 after it -> idle, done_q = 1
+//   finished  every counter 0                          -> idle, done_q = 1
+//   stalled   no active axis can carry (can_x/y/z low) -> idle, err_q = 1
+//   iterate   iterate_o = 1, iter_q = 1; every counter 0 after it -> idle, done_q = 1
 // The command ends (finishing) on a finished edge or on its last iteration's edge.
 // cmd_ready_o is high while idle and while finishing: cmd_valid_i then loads the next
 // command on that edge (load_o) and the state is run, so commands run back to back.
@@ -21,10 +21,13 @@ module dda_ctrl (
   output wire cmd_ready_o,
   input  wire active_x_i,   // counter X non-zero
   input  wire active_y_i,
+  input  wire active_z_i,
   input  wire can_x_i,      // X active with a non-zero integrand
   input  wire can_y_i,
+  input  wire can_z_i,
   input  wire last_x_i,     // counter X is 0 after this iteration
   input  wire last_y_i,
+  input  wire last_z_i,
   output wire load_o,       // load the command on this edge
   output wire iterate_o,    // iterate on this edge
   output wire busy_o,
@@ -48,12 +51,12 @@ module dda_ctrl (
 
   wire idle     = state_q == StIdle;
   wire run_ce   = (state_q == StRun) & ce_i;
-  wire finished = run_ce & ~active_x_i & ~active_y_i;
-  wire stalled  = run_ce & ~finished & ~can_x_i & ~can_y_i;
+  wire finished = run_ce & ~active_x_i & ~active_y_i & ~active_z_i;
+  wire stalled  = run_ce & ~finished & ~can_x_i & ~can_y_i & ~can_z_i;
   wire iterate  = run_ce & ~finished & ~stalled;
   // The command ends on this edge: the next one may load on the same edge, so
   // back-to-back commands run with no idle cycle between them.
-  wire finishing = finished | (iterate & last_x_i & last_y_i);
+  wire finishing = finished | (iterate & last_x_i & last_y_i & last_z_i);
 
   assign cmd_ready_o = idle | finishing;
   assign load_o      = cmd_ready_o & cmd_valid_i;

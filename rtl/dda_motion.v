@@ -100,6 +100,7 @@ module dda_motion #(
 
   wire        core_ready, core_busy, core_done, core_err, core_iter;
   wire        core_step_x, core_step_y, core_dir_x, core_dir_y;
+  wire        core_step_z, core_dir_z;  // the third axis: no step/dir stage in this block yet
   wire        cmd_valid = primed_q & ~empty;
   wire        take      = cmd_valid & core_ready & ~abort;  // the core loads the head entry
   wire [DepthLog2-1:0] head_d = !rst_ni ? '0 : abort ? tail_q : take ? head_q + 1'b1 : head_q;
@@ -136,7 +137,7 @@ module dda_motion #(
     (* no_rw_check *) reg [15:0] mem [0:(1 << DepthLog2)-1];
     reg [15:0] rd_q;
     always @(posedge clk_i) begin
-      if (entry_ok && word == l / 2) mem[tail_q] <= wb_dat_i[16*(l%2)+:16];
+      if (entry_ok && {1'b0, word} == 6'(l / 2)) mem[tail_q] <= wb_dat_i[16*(l%2)+:16];
       rd_q <= mem[head_d];
     end
     assign entry_q[16*l+:16] = rd_q;
@@ -165,12 +166,14 @@ module dda_motion #(
     .step_y_o    (core_step_y),
     .dir_x_o     (core_dir_x),
     .dir_y_o     (core_dir_y),
+    .step_z_o    (core_step_z),
+    .dir_z_o     (core_dir_z),
     .busy_o      (core_busy),
     .done_o      (core_done),
     .err_o       (core_err),
     .iter_o      (core_iter)
   );
-  wire unused_core = &{1'b0, core_iter};
+  wire unused_core = &{1'b0, core_iter, core_step_z, core_dir_z};
 
   always @(posedge clk_i) begin
     if (!rst_ni || abort) begin

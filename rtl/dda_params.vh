@@ -13,7 +13,7 @@
 `define DDA_DIR_NEG 1'b1
 
 // Command word, fields packed LSB first.
-`define DDA_CMD_WIDTH 495
+`define DDA_CMD_WIDTH 666
 `define DDA_CMD_JV_X_LSB 0  // initial X integrand (scaled, two's complement)
 `define DDA_CMD_JV_X_WIDTH 51
 `define DDA_CMD_JV_Y_LSB 51  // initial Y integrand (scaled, two's complement)
@@ -40,5 +40,15 @@
 `define DDA_CMD_INC_Y_ON_X_WIDTH 51
 `define DDA_CMD_INC_Y_ON_Y_LSB 444  // added to jv_y after a Y step (two's complement)
 `define DDA_CMD_INC_Y_ON_Y_WIDTH 51
+`define DDA_CMD_JV_Z_LSB 495  // Z integrand (constant), 0 <= jv_z <= cap_z
+`define DDA_CMD_JV_Z_WIDTH 51
+`define DDA_CMD_JR_Z_LSB 546  // initial Z accumulator (preload: the phase carried between pieces), < cap_z
+`define DDA_CMD_JR_Z_WIDTH 51
+`define DDA_CMD_CAP_Z_LSB 597  // Z accumulator capacity, 0 < cap_z < 2^(AccWidth-1)
+`define DDA_CMD_CAP_Z_WIDTH 51
+`define DDA_CMD_CNT_Z_LSB 648  // Z steps to emit
+`define DDA_CMD_CNT_Z_WIDTH 17
+`define DDA_CMD_DIR_Z_LSB 665  // Z step direction (0 = +Z, 1 = -Z)
+`define DDA_CMD_DIR_Z_WIDTH 1
 
 `endif  // DDA_PARAMS_VH

@@ -109,7 +109,7 @@ fi
 } > "$work/model.ys"
 [ "$job" = lemmas ] || {
   if [ "$job" = equiv ]; then
-    echo "read_verilog -formal $abstract -I$work/rtl $work/ref/dda_counter_ref.v $work/ref/dda_integrator_ref.v $work/ref/dda_ctrl_ref.v $work/ref/dda_core_ref.v"
+    echo "read_verilog -formal $abstract -I$work/rtl $work/ref/dda_counter_ref.v $work/ref/dda_integrator_ref.v $work/ref/dda_linear_ref.v $work/ref/dda_ctrl_ref.v $work/ref/dda_core_ref.v"
   fi
   echo "hierarchy -check"
   echo "proc"
@@ -142,7 +142,7 @@ if [ "$job" = equiv ]; then
     echo "\`include \"dda_params.vh\""
     echo "module dda_formal_equiv (input wire clk_i, input wire rst_ni, input wire ce_i,"
     echo "  input wire cmd_valid_i, input wire [\`DDA_CMD_WIDTH-1:0] cmd_i);"
-    ports="cmd_ready_o step_x_o step_y_o dir_x_o dir_y_o busy_o done_o err_o iter_o"
+    ports="cmd_ready_o step_x_o step_y_o dir_x_o dir_y_o step_z_o dir_z_o busy_o done_o err_o iter_o"
     for side in ref dut; do
       for p in $ports; do echo "  wire ${side}_$p;"; done
       for r in "${regs[@]}"; do

@@ -38,10 +38,10 @@ inline bool same(const Iteration& a, const Iteration& b) {
          a.after == b.after && a.pos == b.pos;
 }
 
-// Commands with two zero counts: the core finishes each on an edge without an iteration.
+// Commands with every count zero: the core finishes each on an edge without an iteration.
 inline std::uint64_t empty_pieces(const dda::Plan& p) {
   std::uint64_t n = 0;
-  for (const auto& pc : p.pieces) n += pc.cmd.cnt_x == 0 && pc.cmd.cnt_y == 0;
+  for (const auto& pc : p.pieces) n += pc.cmd.cnt_x == 0 && pc.cmd.cnt_y == 0 && pc.cmd.cnt_z == 0;
   return n;
 }
 

@@ -52,7 +52,8 @@ bool same(const Iteration& a, const Iteration& b) {
   return a.iter == b.iter && a.piece == b.piece && a.active_x == b.active_x && a.active_y == b.active_y &&
          a.jv_x == b.jv_x && a.jv_y == b.jv_y && a.sum_x == b.sum_x && a.sum_y == b.sum_y && a.step_x == b.step_x &&
          a.step_y == b.step_y && a.after == b.after && a.pos == b.pos && a.dir_x_neg == b.dir_x_neg &&
-         a.dir_y_neg == b.dir_y_neg;
+         a.dir_y_neg == b.dir_y_neg && a.active_z == b.active_z && a.jv_z == b.jv_z && a.sum_z == b.sum_z &&
+         a.step_z == b.step_z && a.dir_z_neg == b.dir_z_neg;
 }
 
 }  // namespace
@@ -60,8 +61,9 @@ bool same(const Iteration& a, const Iteration& b) {
 TEST_CASE("core model: 300 random arcs make the golden runner's iterations, back to back", "[core_model]") {
   const std::uint64_t seed = test_seed(41);
   RandomArcs quarter(seed, 4096, 8), whole(seed + 1, 4096, 8, ArcKind::Whole);
+  RandomArcs spatial(seed + 2, 1024, 8, ArcKind::Spatial);  // lines, plunges, helices
   for (int n = 0; n < 300;) {
-    const auto plan = (n % 2 ? whole : quarter).next();
+    const auto plan = (n % 3 == 2 ? spatial : n % 2 ? whole : quarter).next();
     if (!plan) continue;
     ++n;
     INFO("seed " << seed << ": dda trace " << describe(*plan));
@@ -77,7 +79,7 @@ TEST_CASE("core model: 300 random arcs make the golden runner's iterations, back
       REQUIRE(same(got[i], want[i]));
     }
     std::size_t empty = 0;  // a command without a step finishes on an edge of its own
-    for (const auto& pc : plan->pieces) empty += pc.cmd.cnt_x == 0 && pc.cmd.cnt_y == 0;
+    for (const auto& pc : plan->pieces) empty += pc.cmd.cnt_x == 0 && pc.cmd.cnt_y == 0 && pc.cmd.cnt_z == 0;
     CHECK(cycles == want.size() + 1 + empty);  // one load edge, then one iteration per edge
   }
 }

@@ -34,6 +34,12 @@ TEST_CASE("cosim: 100 random arcs (quarter, whole, as programs give them) back t
   CHECK(st.line_pieces > 0);  // lines and the lines next to arcs' ends ran too
 }
 
+TEST_CASE("cosim: 40 random three-axis moves (3-D lines, third axis alone, helices) in both models",
+          "[cosim][random]") {
+  cosim::CosimHarness h;
+  random_arcs(h, test_seed(53), 40, ArcKind::Spatial);
+}
+
 TEST_CASE("cosim: reset in the middle of an arc, then the next command", "[cosim]") {
   cosim::CosimHarness h;
   reset_midway(h);

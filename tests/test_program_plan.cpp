@@ -275,26 +275,41 @@ TEST_CASE("program plan: an arc of several turns runs its full turns first", "[p
       Catch::Contains("100 turns of this arc take") && Catch::Contains("fewer turns (P), or a coarser --step"));
 }
 
-TEST_CASE("program plan: what needs the third axis is refused naming it", "[program]") {
+TEST_CASE("program plan: the axis normal to the plane runs on the third axis, an arc in another plane is refused",
+          "[program]") {
   ReadOptions lcnc;
   lcnc.dialect = Dialect::LinuxCnc;
+  const auto planned = [&](const std::string& text) {
+    return plan_program(read("F1\n" + text + "\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+  };
+  // A plunge, a helix, a 3-D line: each block ends on its rounded end, the third axis too.
+  const ProgramPlan pp = planned("G1 X1\nG1 Z-1\nG2 X3 I1 Z1\nG1 X0 Y2 Z0.5");
+  REQUIRE(pp.blocks.size() == 4);
+  CHECK(pp.blocks[1].to == Point{1000, 0, -1000});
+  CHECK(pp.blocks[2].to == Point{3000, 0, 1000});
+  CHECK(pp.blocks[3].to == Point{0, 2000, 500});
+  const std::vector<Iteration> recs = run_records(pp.plan);
+  CHECK(recs.back().pos == Point{0, 2000, 500});
+  std::size_t at = 0;
+  for (const BlockPlan& b : pp.blocks) {  // every block's last record on its end
+    at += b.plan.pieces.size();
+    std::size_t last = 0;
+    for (std::size_t i = 0; i < recs.size(); ++i) last = recs[i].piece < at ? i : last;
+    CHECK(recs[last].pos == b.to);
+  }
   const auto refusal = [&](const std::string& text) {
     try {
-      plan_program(read("F1\n" + text + "\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+      planned(text);
     } catch (const ProgramError& e) {
       return std::string(e.what());
     }
     return std::string();
   };
-  CHECK(refusal("G1 X1\nG1 Z-1") ==
-        "p.nc:3:1: block at line 3 (line): it moves Z, the axis normal to the plane (G17: X, Y), by -1.0000 mm: "
-        "moving the axis normal to the plane is not supported until the third axis");
-  CHECK(refusal("G1 X1\nG2 X3 I1 Z1") ==
-        "p.nc:3:1: block at line 3 (arc cw): a helix (an arc that also moves Z) is not supported until the third "
-        "axis");
   CHECK(refusal("G1 X1\nG18 G2 X0 Z0 I-0.5 K0") ==
-        "p.nc:3:5: block at line 3 (arc cw): an arc in G18: Z, X, outside the plane of the two axes (G17: X, Y), is "
-        "not supported until the third axis");
+        "p.nc:3:5: block at line 3 (arc cw): an arc in G18: Z, X, outside the plane of the interpolator's two "
+        "ellipse axes (G17: X, Y), is not supported (the axis normal to the plane is the third, linear, axis)");
+  // A helix steeper than its arc: the third axis steps at most once per iteration.
+  CHECK_THAT(refusal("G1 X0.01\nG2 X0.03 I0.01 Z5"), Catch::Contains("at most once per iteration"));
   CHECK(refusal("G1 X1 Z0\nG1 X2").empty());  // a Z word that leaves Z where it is
 }
 

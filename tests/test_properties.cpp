@@ -163,17 +163,17 @@ std::string compare_skip(const Command& cmd, std::uint64_t limit) {
   while (slow_it < limit) {
     const StepOut o = next_state(cmd, slow);
     ++slow_it;
-    if (!o.step_x && !o.step_y) continue;
+    if (!o.step_x && !o.step_y && !o.step_z) continue;
     const std::uint64_t q = quiet_iterations(cmd, fast);
     if (q == kNever) return "the skip found no step at iteration " + std::to_string(slow_it);
-    skip_quiet(fast, q);
+    skip_quiet(cmd, fast, q);
     const StepOut f = next_state(cmd, fast);
     fast_it += q + 1;
-    if (fast_it != slow_it || !(fast == slow) || f.step_x != o.step_x || f.step_y != o.step_y) {
+    if (fast_it != slow_it || !(fast == slow) || f.step_x != o.step_x || f.step_y != o.step_y || f.step_z != o.step_z) {
       return "the skip's step is at iteration " + std::to_string(fast_it) + ", next_state's at " +
              std::to_string(slow_it);
     }
-    if (slow.cnt_x == 0 && slow.cnt_y == 0) return "";
+    if (finished(slow)) return "";
   }
   // No step in the rest: the skip must not find one before the limit either.
   const std::uint64_t q = quiet_iterations(cmd, fast);
@@ -199,7 +199,8 @@ TEST_CASE("properties: skipping the iterations without a step equals iterating",
   }
   CHECK(pieces > 400);
   // Commands no planner writes: negative and zero integrands, preloads at or above the
-  // capacity, corrections of either sign, counters that stop one axis early.
+  // capacity, corrections of either sign, counters that stop one axis early, a third
+  // axis beside them.
   std::mt19937_64 rng(seed);
   const auto in = [&](std::int64_t lo, std::int64_t hi) {
     return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
@@ -215,6 +216,12 @@ TEST_CASE("properties: skipping the iterations without a step equals iterating",
     c.cnt_y = in(0, 40);
     c.inc_x_on_x = in(-3, 3), c.inc_x_on_y = in(-40, 40);
     c.inc_y_on_x = in(-40, 40), c.inc_y_on_y = in(-3, 3);
+    if (k % 2 != 0) {  // the third axis, zero integrands and high preloads included
+      c.cap_z = in(1, 1 << 12);
+      c.jv_z = in(0, c.cap_z);
+      c.jr_z = in(0, c.cap_z + c.cap_z / 8);
+      c.cnt_z = in(0, 40);
+    }
     const std::string err = compare_skip(c, 200000);
     if (!err.empty()) FAIL("seed " << seed << ", command " << k << ": " << err);
   }

@@ -49,6 +49,11 @@ TEST_CASE("rtl: 300 random arcs as part programs give them (lattice ends, full t
   random_arcs(h, test_seed(45), 300, ArcKind::Program);
 }
 
+TEST_CASE("rtl: 300 random three-axis moves (3-D lines, third axis alone, helices) in lockstep", "[rtl][random]") {
+  rtl::RtlHarness h;
+  random_arcs(h, test_seed(47), 300, ArcKind::Spatial);
+}
+
 TEST_CASE("rtl: a random ce pattern stretches the same pulse sequence", "[rtl][random]") {
   rtl::RtlHarness h;
   ce_stretch(h, test_seed(6), 40);

@@ -42,6 +42,12 @@ TEST_CASE("systemc: 60 random arcs as part programs give them (lattice ends, ful
   random_arcs(h, test_seed(35), 60, ArcKind::Program);
 }
 
+TEST_CASE("systemc: 60 random three-axis moves (3-D lines, third axis alone, helices) in lockstep",
+          "[systemc][random]") {
+  sc::ScHarness h;
+  random_arcs(h, test_seed(37), 60, ArcKind::Spatial);
+}
+
 TEST_CASE("systemc: a random ce pattern stretches the same pulse sequence", "[systemc][random]") {
   sc::ScHarness h;
   ce_stretch(h, test_seed(5), 20);

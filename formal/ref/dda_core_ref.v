@@ -3,6 +3,10 @@
 // it was before the fast and small implementations (commit 7e45f85), modules
 // renamed with a _ref suffix. Not part of the IP; do not edit: the proofs show that
 // rtl/dda_core.v (each Impl) is equal to this at the ports, edge by edge.
+// The third axis was added to it as plainly as it reads in docs/design.md: its
+// integrator dda_linear_ref, its counter, directions and step register, and its
+// activity, carry ability and last step folded into the Y inputs of the unchanged
+// control (finished, stalled and finishing then read all three axes).
 // Ellipse DDA interpolator core (docs/design.md is the contract: ports, registers and
 // behaviour edge by edge). Two integrators (u_int_x, u_int_y), two step counters
 // (u_cnt_x, u_cnt_y), the control (u_ctrl), and here the shared capacity cap_q, the
@@ -25,6 +29,8 @@ module dda_core_ref (
   output wire                      step_y_o,
   output wire                      dir_x_o,      // 0 = +X, 1 = -X
   output wire                      dir_y_o,      // 0 = +Y, 1 = -Y
+  output wire                      step_z_o,
+  output wire                      dir_z_o,
   output wire                      busy_o,
   output wire                      done_o,
   output wire                      err_o,
@@ -48,6 +54,13 @@ module dda_core_ref (
   wire [AccWidth-1:0] cmd_inc_x_on_y = cmd_i[`DDA_CMD_INC_X_ON_Y_LSB +: `DDA_CMD_INC_X_ON_Y_WIDTH];
   wire [AccWidth-1:0] cmd_inc_y_on_x = cmd_i[`DDA_CMD_INC_Y_ON_X_LSB +: `DDA_CMD_INC_Y_ON_X_WIDTH];
   wire [AccWidth-1:0] cmd_inc_y_on_y = cmd_i[`DDA_CMD_INC_Y_ON_Y_LSB +: `DDA_CMD_INC_Y_ON_Y_WIDTH];
+  wire [AccWidth-1:0] cmd_jv_z       = cmd_i[`DDA_CMD_JV_Z_LSB +: `DDA_CMD_JV_Z_WIDTH];
+  wire [AccWidth-1:0] cmd_jr_z       = cmd_i[`DDA_CMD_JR_Z_LSB +: `DDA_CMD_JR_Z_WIDTH];
+  wire [AccWidth-1:0] cmd_cap_z      = cmd_i[`DDA_CMD_CAP_Z_LSB +: `DDA_CMD_CAP_Z_WIDTH];
+  wire [CntWidth-1:0] cmd_cnt_z      = cmd_i[`DDA_CMD_CNT_Z_LSB +: `DDA_CMD_CNT_Z_WIDTH];
+  wire                cmd_dir_z      = cmd_i[`DDA_CMD_DIR_Z_LSB];
+  reg                 cdir_z_q, dir_z_q, step_z_q;
+  wire                ovf_z, can_z, active_z, last_z;
 
   // Registers of the top.
   reg [AccWidth-1:0] cap_q    /* verilator public_flat_rd */;
@@ -80,11 +93,11 @@ module dda_core_ref (
     .cmd_valid_i (cmd_valid_i),
     .cmd_ready_o (cmd_ready_o),
     .active_x_i  (active_x),
-    .active_y_i  (active_y),
+    .active_y_i  (active_y | active_z),
     .can_x_i     (can_x),
-    .can_y_i     (can_y),
+    .can_y_i     (can_y | can_z),
     .last_x_i    (last_x),
-    .last_y_i    (last_y),
+    .last_y_i    (last_y & last_z),
     .load_o      (load),
     .iterate_o   (iterate),
     .busy_o      (busy_o),
@@ -148,6 +161,44 @@ module dda_core_ref (
     .active_o  (active_y),
     .last_o    (last_y)
   );
+
+  dda_linear_ref #(.AccWidth(AccWidth)) u_lin_z (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .load_i    (load),
+    .jv_i      (cmd_jv_z),
+    .jr_i      (cmd_jr_z),
+    .cap_i     (cmd_cap_z),
+    .iterate_i (iterate),
+    .active_i  (active_z),
+    .ovf_o     (ovf_z),
+    .can_o     (can_z)
+  );
+
+  dda_counter_ref #(.CntWidth(CntWidth)) u_cnt_z (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .load_i    (load),
+    .cnt_i     (cmd_cnt_z),
+    .iterate_i (iterate),
+    .dec_i     (ovf_z),
+    .active_o  (active_z),
+    .last_o    (last_z)
+  );
+
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      cdir_z_q <= 1'b0;
+      dir_z_q  <= 1'b0;
+      step_z_q <= 1'b0;
+    end else begin
+      if (load) cdir_z_q <= cmd_dir_z;
+      step_z_q <= iterate & ovf_z;
+      if (iterate & ovf_z) dir_z_q <= cdir_z_q;
+    end
+  end
+  assign step_z_o = step_z_q;
+  assign dir_z_o  = dir_z_q;
 
   // A step pulse carries the direction of the command that made it: dir_*_q changes
   // only together with a step, so a command loaded on the edge of the previous one's

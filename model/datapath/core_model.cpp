@@ -23,6 +23,9 @@ constexpr std::size_t kStepX = sig("step_x_q"), kStepY = sig("step_y_q");
 constexpr std::size_t kState = sig("u_ctrl.state_q"), kDone = sig("u_ctrl.done_q");
 constexpr std::size_t kErr = sig("u_ctrl.err_q"), kIter = sig("u_ctrl.iter_q");
 constexpr std::size_t kSumX = sig("u_int_x.sum"), kSumY = sig("u_int_y.sum");
+constexpr std::size_t kJvZ = sig("u_lin_z.jv_q"), kJrZ = sig("u_lin_z.jr_q"), kCapZ = sig("u_lin_z.cap_q");
+constexpr std::size_t kCntZ = sig("u_cnt_z.cnt_q"), kCdirZ = sig("cdir_z_q"), kDirZ = sig("dir_z_q");
+constexpr std::size_t kStepZ = sig("step_z_q"), kSumZ = sig("u_lin_z.sum");
 
 // What a load takes from the command word: register <- field.
 struct Load {
@@ -33,13 +36,14 @@ constexpr Load kLoads[] = {
     {kJrY, hw::field("jr_y")},         {kCap, hw::field("cap")},          {kCntX, hw::field("cnt_x")},
     {kCntY, hw::field("cnt_y")},       {kCdirX, hw::field("dir_x")},      {kCdirY, hw::field("dir_y")},
     {kIncXX, hw::field("inc_x_on_x")}, {kIncXY, hw::field("inc_x_on_y")}, {kIncYX, hw::field("inc_y_on_x")},
-    {kIncYY, hw::field("inc_y_on_y")},
+    {kIncYY, hw::field("inc_y_on_y")}, {kJvZ, hw::field("jv_z")},         {kJrZ, hw::field("jr_z")},
+    {kCapZ, hw::field("cap_z")},       {kCntZ, hw::field("cnt_z")},       {kCdirZ, hw::field("dir_z")},
 };
 static_assert(std::size(kLoads) == hw::kCmdFields.size(), "core_model.cpp: a command field is not loaded");
 
-constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJrY,  kIncYX, kIncYY,
-                                    kCntX,  kCntY,  kCap,   kCdirX, kCdirY, kDirX, kDirY,  kStepX,
-                                    kStepY, kState, kDone,  kErr,   kIter,  kSumX, kSumY};
+constexpr std::size_t kWritten[] = {kJvX,   kJrX,   kIncXX, kIncXY, kJvY,   kJrY,   kIncYX, kIncYY, kCntX, kCntY, kCap,
+                                    kCdirX, kCdirY, kDirX,  kDirY,  kStepX, kStepY, kState, kDone,  kErr,  kIter, kSumX,
+                                    kSumY,  kJvZ,   kJrZ,   kCapZ,  kCntZ,  kCdirZ, kDirZ,  kStepZ, kSumZ};
 // Every signal of the table has its next-state code here.
 constexpr bool covers_table() {
   for (std::size_t i = 0; i < hw::kNumSignals; ++i) {
@@ -75,6 +79,9 @@ Command held_command(const Signals& s) {
   c.inc_y_on_y = sval(s, kIncYY);
   c.dir_x_neg = s[kCdirX] != 0;
   c.dir_y_neg = s[kCdirY] != 0;
+  c.jv_z = uval(s, kJvZ);
+  c.cap_z = uval(s, kCapZ);
+  c.dir_z_neg = s[kCdirZ] != 0;
   return c;
 }
 
@@ -85,8 +92,8 @@ Decision decide(const Signals& s, bool ce) {
   Decision d{};
   d.run_ce = s[kState] == kRun && ce;
   const RegState r = CoreModel::datapath_regs(s);
-  d.finished = d.run_ce && r.cnt_x == 0 && r.cnt_y == 0;
-  d.stalled = d.run_ce && !d.finished && dda::stalled(r);
+  d.finished = d.run_ce && dda::finished(r);
+  d.stalled = d.run_ce && !d.finished && dda::stalled(held_command(s), r);
   d.iterate = d.run_ce && !d.finished && !d.stalled;
   return d;
 }
@@ -101,12 +108,15 @@ RegState CoreModel::datapath_regs(const Signals& s) {
   r.jr_y = uval(s, kJrY);
   r.cnt_x = uval(s, kCntX);
   r.cnt_y = uval(s, kCntY);
+  r.jr_z = uval(s, kJrZ);
+  r.cnt_z = uval(s, kCntZ);
   return r;
 }
 
 void CoreModel::settle() {
   s_[kSumX] = s_[kJrX] + s_[kJvX];  // AccWidth + 1 bits: no wrap
   s_[kSumY] = s_[kJrY] + s_[kJvY];
+  s_[kSumZ] = s_[kJrZ] + s_[kJvZ];
 }
 
 bool CoreModel::cmd_ready(bool ce) const {
@@ -115,7 +125,7 @@ bool CoreModel::cmd_ready(bool ce) const {
   if (d.iterate) {
     RegState r = datapath_regs(s_);
     next_state(held_command(s_), r);
-    last = r.cnt_x == 0 && r.cnt_y == 0;
+    last = dda::finished(r);
   }
   return s_[kState] == kIdle || d.finished || last;
 }
@@ -140,16 +150,20 @@ CoreEdge CoreModel::edge(const CoreInputs& in) {
     n[kJrY] = put(kJrY, r.jr_y);
     n[kCntX] = put(kCntX, r.cnt_x);
     n[kCntY] = put(kCntY, r.cnt_y);
+    n[kJrZ] = put(kJrZ, r.jr_z);
+    n[kCntZ] = put(kCntZ, r.cnt_z);
   }
   e.iterate = d.iterate;
   e.stalled = d.stalled;
-  e.finishing = d.finished || (d.iterate && n[kCntX] == 0 && n[kCntY] == 0);
+  e.finishing = d.finished || (d.iterate && n[kCntX] == 0 && n[kCntY] == 0 && n[kCntZ] == 0);
   e.ready = s_[kState] == kIdle || e.finishing;
   e.load = e.ready && in.cmd_valid;
   n[kStepX] = d.iterate && o.step_x;
   n[kStepY] = d.iterate && o.step_y;
+  n[kStepZ] = d.iterate && o.step_z;
   n[kDirX] = n[kStepX] ? s_[kCdirX] : s_[kDirX];  // a direction changes only with a step
   n[kDirY] = n[kStepY] ? s_[kCdirY] : s_[kDirY];
+  n[kDirZ] = n[kStepZ] ? s_[kCdirZ] : s_[kDirZ];
   n[kDone] = e.finishing;
   n[kErr] = e.stalled;
   n[kIter] = e.iterate;
@@ -174,6 +188,8 @@ PortValues CoreModel::outputs(const Signals& s, bool ready) {
   set("step_y_o", s[kStepY]);
   set("dir_x_o", s[kDirX]);
   set("dir_y_o", s[kDirY]);
+  set("step_z_o", s[kStepZ]);
+  set("dir_z_o", s[kDirZ]);
   set("busy_o", s[kState] == kRun);
   set("done_o", s[kDone]);
   set("err_o", s[kErr]);
@@ -185,8 +201,12 @@ Iteration CoreModel::iteration_record(const Signals& pre, const Signals& post) {
   Iteration rec;
   rec.dir_x_neg = pre[kCdirX] != 0;  // the command running in this iteration
   rec.dir_y_neg = pre[kCdirY] != 0;
+  rec.dir_z_neg = pre[kCdirZ] != 0;
   rec.active_x = pre[kCntX] != 0;
   rec.active_y = pre[kCntY] != 0;
+  rec.active_z = pre[kCntZ] != 0;
+  rec.jv_z = uval(pre, kJvZ);
+  rec.sum_z = rec.active_z ? std::int64_t(pre[kSumZ]) : uval(pre, kJrZ);
   rec.jv_x = sval(pre, kJvX);
   rec.jv_y = sval(pre, kJvY);
   // The adder's output counts where the axis adds: active, integrand not negative.
@@ -194,6 +214,7 @@ Iteration CoreModel::iteration_record(const Signals& pre, const Signals& post) {
   rec.sum_y = rec.active_y && rec.jv_y >= 0 ? std::int64_t(pre[kSumY]) : uval(pre, kJrY);
   rec.step_x = post[kStepX] != 0;
   rec.step_y = post[kStepY] != 0;
+  rec.step_z = post[kStepZ] != 0;
   rec.after = datapath_regs(post);
   return rec;
 }
@@ -207,6 +228,7 @@ Point CoreModel::step_of(const Signals& post) {
   Point d;
   if (post[kStepX]) d.x = post[kDirX] ? -1 : 1;
   if (post[kStepY]) d.y = post[kDirY] ? -1 : 1;
+  if (post[kStepZ]) d.z = post[kDirZ] ? -1 : 1;
   return d;
 }
 
@@ -226,6 +248,11 @@ CmdValues command_values(const Command& c) {
   set("inc_x_on_y", c.inc_x_on_y);
   set("inc_y_on_x", c.inc_y_on_x);
   set("inc_y_on_y", c.inc_y_on_y);
+  set("jv_z", c.jv_z);
+  set("jr_z", c.jr_z);
+  set("cap_z", c.cap_z);
+  set("cnt_z", c.cnt_z);
+  set("dir_z", c.dir_z_neg ? hw::kDirNeg : hw::kDirPos);
   return f;
 }
 

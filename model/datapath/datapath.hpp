@@ -13,12 +13,15 @@
 
 namespace dda {
 
+// A lattice point: the plane's axes x, y and the third (linear) axis z, which stays 0
+// in a run that never moves it.
 struct Point {
   std::int64_t x = 0;
   std::int64_t y = 0;
-  friend bool operator==(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
+  std::int64_t z = 0;
+  friend bool operator==(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
   friend bool operator!=(const Point& p, const Point& q) { return !(p == q); }
-  friend Point operator+(const Point& p, const Point& q) { return Point{p.x + q.x, p.y + q.y}; }
+  friend Point operator+(const Point& p, const Point& q) { return Point{p.x + q.x, p.y + q.y, p.z + q.z}; }
 };
 
 // One hardware command: everything the datapath needs to run one piece.
@@ -31,16 +34,22 @@ struct Command {
   bool dir_x_neg = false, dir_y_neg = false;
   // Integrand corrections after a step: jv_<i> += inc_<i>_on_<axis>.
   std::int64_t inc_x_on_x = 0, inc_x_on_y = 0, inc_y_on_x = 0, inc_y_on_y = 0;
+  // The third (linear) axis: a constant integrand 0 <= jv_z <= cap_z of its own
+  // capacity, preload 0 <= jr_z < cap_z, cnt_z steps (Bresenham's rule).
+  std::int64_t jv_z = 0, jr_z = 0, cap_z = 1, cnt_z = 0;
+  bool dir_z_neg = false;
 };
 
 // The datapath registers between iterations (what the hardware holds).
+// (The third axis' integrand and capacity are constant: they stay in the Command.)
 struct RegState {
   std::int64_t jv_x = 0, jv_y = 0;
   std::int64_t jr_x = 0, jr_y = 0;
   std::int64_t cnt_x = 0, cnt_y = 0;
+  std::int64_t jr_z = 0, cnt_z = 0;
   friend bool operator==(const RegState& p, const RegState& q) {
     return p.jv_x == q.jv_x && p.jv_y == q.jv_y && p.jr_x == q.jr_x && p.jr_y == q.jr_y && p.cnt_x == q.cnt_x &&
-           p.cnt_y == q.cnt_y;
+           p.cnt_y == q.cnt_y && p.jr_z == q.jr_z && p.cnt_z == q.cnt_z;
   }
 };
 
@@ -53,20 +62,24 @@ inline RegState initial_regs(const Command& c) {
   r.jr_y = c.jr_y;
   r.cnt_x = c.cnt_x;
   r.cnt_y = c.cnt_y;
+  r.jr_z = c.jr_z;
+  r.cnt_z = c.cnt_z;
   return r;
 }
 
 // What one iteration computes besides the next registers.
 struct StepOut {
-  bool active_x = false, active_y = false;  // counter was non-zero: the axis may add
-  std::int64_t sum_x = 0, sum_y = 0;        // accumulator sums before overflow removal
-  bool step_x = false, step_y = false;      // carries: one step each
+  bool active_x = false, active_y = false, active_z = false;  // counter was non-zero: the axis may add
+  std::int64_t sum_x = 0, sum_y = 0, sum_z = 0;               // accumulator sums before overflow removal
+  bool step_x = false, step_y = false, step_z = false;        // carries: one step each
 };
 
 // One iteration of the datapath (one clock with ce high): the single definition.
 // Both accumulators add their integrands; an axis adds while active with a positive
 // integrand (a negative one holds); a carry (sum >= cap) is a step and the accumulator
-// keeps sum - cap. Corrections apply after the iteration, from its steps.
+// keeps sum - cap. Corrections apply after the iteration, from its steps. The third
+// axis adds its constant integrand to its own accumulator while active and carries
+// against its own capacity; its steps change no integrand.
 inline StepOut next_state(const Command& cmd, RegState& r) {
   StepOut o;
   o.active_x = r.cnt_x != 0;
@@ -83,16 +96,23 @@ inline StepOut next_state(const Command& cmd, RegState& r) {
   r.cnt_y -= o.step_y ? 1 : 0;
   r.jv_x += (o.step_x ? cmd.inc_x_on_x : 0) + (o.step_y ? cmd.inc_x_on_y : 0);
   r.jv_y += (o.step_x ? cmd.inc_y_on_x : 0) + (o.step_y ? cmd.inc_y_on_y : 0);
+  o.active_z = r.cnt_z != 0;
+  o.sum_z = o.active_z ? r.jr_z + cmd.jv_z : r.jr_z;
+  o.step_z = o.active_z && o.sum_z >= cmd.cap_z;
+  r.jr_z = o.step_z ? o.sum_z - cmd.cap_z : o.sum_z;
+  r.cnt_z -= o.step_z ? 1 : 0;
   return o;
 }
 
 // An active axis whose integrand is 0 or negative cannot carry; when no active axis
 // can, the command never ends (the hardware raises err_o).
-inline bool stalled(const RegState& r) {
-  if (r.cnt_x == 0 && r.cnt_y == 0) return false;
+inline bool finished(const RegState& r) { return r.cnt_x == 0 && r.cnt_y == 0 && r.cnt_z == 0; }
+inline bool stalled(const Command& cmd, const RegState& r) {
+  if (finished(r)) return false;
   const bool x_can = r.cnt_x != 0 && r.jv_x > 0;
   const bool y_can = r.cnt_y != 0 && r.jv_y > 0;
-  return !x_can && !y_can;
+  const bool z_can = r.cnt_z != 0 && cmd.jv_z > 0;
+  return !x_can && !y_can && !z_can;
 }
 
 // The iterations before the next one with a step, in closed form. Between steps the
@@ -103,37 +123,40 @@ inline bool stalled(const RegState& r) {
 // r as skip_quiet(c, r, n) does; a test runs both side by side.
 constexpr std::uint64_t kNever = ~std::uint64_t{0};
 inline std::uint64_t quiet_iterations(const Command& cmd, const RegState& r) {
-  const auto until_carry = [&](bool active, std::int64_t jv, std::int64_t jr) -> std::uint64_t {
+  const auto until_carry = [&](bool active, std::int64_t jv, std::int64_t jr, std::int64_t cap) -> std::uint64_t {
     if (!active || jv < 0) return kNever;
-    if (jr + jv >= cmd.cap) return 0;  // this iteration carries (jv = 0: a preload at or above cap)
+    if (jr + jv >= cap) return 0;  // this iteration carries (jv = 0: a preload at or above cap)
     if (jv == 0) return kNever;
-    return std::uint64_t((cmd.cap - jr + jv - 1) / jv) - 1;
+    return std::uint64_t((cap - jr + jv - 1) / jv) - 1;
   };
   // (An axis that carries on the next iteration decides without a division.)
-  const std::uint64_t x = until_carry(r.cnt_x != 0, r.jv_x, r.jr_x);
+  const std::uint64_t x = until_carry(r.cnt_x != 0, r.jv_x, r.jr_x, cmd.cap);
   if (x == 0) return 0;
-  const std::uint64_t y = until_carry(r.cnt_y != 0, r.jv_y, r.jr_y);
-  return x < y ? x : y;
+  const std::uint64_t y = until_carry(r.cnt_y != 0, r.jv_y, r.jr_y, cmd.cap);
+  if (y == 0) return 0;
+  const std::uint64_t z = until_carry(r.cnt_z != 0, cmd.jv_z, r.jr_z, cmd.cap_z), xy = x < y ? x : y;
+  return xy < z ? xy : z;
 }
 // n iterations without a step (n <= quiet_iterations(cmd, r)).
-inline void skip_quiet(RegState& r, std::uint64_t n) {
+inline void skip_quiet(const Command& cmd, RegState& r, std::uint64_t n) {
   if (r.cnt_x != 0 && r.jv_x > 0) r.jr_x += std::int64_t(n) * r.jv_x;
   if (r.cnt_y != 0 && r.jv_y > 0) r.jr_y += std::int64_t(n) * r.jv_y;
+  if (r.cnt_z != 0) r.jr_z += std::int64_t(n) * cmd.jv_z;
 }
 
 // One iteration: the datapath's inputs, intermediate sums and the registers after it.
 struct Iteration {
-  std::uint64_t iter = 0;                     // 1-based, counted across the pieces of an arc
-  std::uint32_t piece = 0;                    // index of the piece (command) it belongs to
-  bool piece_end = false;                     // the piece's last iteration (set by the runner)
-  bool dir_x_neg = false, dir_y_neg = false;  // step directions of that piece
-  bool active_x = false, active_y = false;    // counter was non-zero: the axis added
-  std::int64_t jv_x = 0, jv_y = 0;            // integrands used in this iteration
-  std::int64_t sum_x = 0, sum_y = 0;          // accumulator sums before overflow removal
-  bool step_x = false, step_y = false;        // overflow pulses
-  RegState after;                             // registers after the iteration (jv corrected); after a
-                                              // piece's last one, the next piece's loaded command
-  Point pos;                                  // position after the iteration
+  std::uint64_t iter = 0;                                        // 1-based, counted across the pieces of an arc
+  std::uint32_t piece = 0;                                       // index of the piece (command) it belongs to
+  bool piece_end = false;                                        // the piece's last iteration (set by the runner)
+  bool dir_x_neg = false, dir_y_neg = false, dir_z_neg = false;  // step directions of that piece
+  bool active_x = false, active_y = false, active_z = false;     // counter was non-zero: the axis added
+  std::int64_t jv_x = 0, jv_y = 0, jv_z = 0;                     // integrands used in this iteration
+  std::int64_t sum_x = 0, sum_y = 0, sum_z = 0;                  // accumulator sums before overflow removal
+  bool step_x = false, step_y = false, step_z = false;           // overflow pulses
+  RegState after;  // registers after the iteration (jv corrected); after a
+                   // piece's last one, the next piece's loaded command
+  Point pos;       // position after the iteration
 };
 
 // The datapath running one command: one call of iterate() is one iteration.
@@ -144,13 +167,14 @@ class Datapath {
   const Command& command() const { return cmd_; }
   Point pos() const { return pos_; }
   std::uint64_t iterations() const { return iter_; }
-  bool done() const { return regs_.cnt_x == 0 && regs_.cnt_y == 0; }
+  bool done() const { return finished(regs_); }
   // An active axis whose integrand is 0 and can no longer change: the piece never ends.
-  bool stalled() const { return dda::stalled(regs_); }
+  bool stalled() const { return dda::stalled(cmd_, regs_); }
   Iteration iterate() {
     Iteration it;
     it.jv_x = regs_.jv_x;
     it.jv_y = regs_.jv_y;
+    it.jv_z = cmd_.jv_z;
     // (On copies held in registers: the record's copies then read no value just stored.)
     RegState r = regs_;
     const StepOut o = next_state(cmd_, r);
@@ -161,10 +185,13 @@ class Datapath {
     it.iter = iter_;
     it.active_x = o.active_x;
     it.active_y = o.active_y;
+    it.active_z = o.active_z;
     it.sum_x = o.sum_x;
     it.sum_y = o.sum_y;
+    it.sum_z = o.sum_z;
     it.step_x = o.step_x;
     it.step_y = o.step_y;
+    it.step_z = o.step_z;
     it.after = r;
     it.pos = p;
     return it;
@@ -180,7 +207,7 @@ class Datapath {
   // iterations with a step, and the planner's reachability check, skip them so.
   std::uint64_t skip_quiet(std::uint64_t limit) {
     const std::uint64_t q = quiet_iterations(cmd_, regs_), n = q < limit ? q : limit;
-    dda::skip_quiet(regs_, n);
+    dda::skip_quiet(cmd_, regs_, n);
     iter_ += n;
     return n;
   }
@@ -190,11 +217,13 @@ class Datapath {
     Point p = pos_;
     if (o.step_x) p.x += cmd_.dir_x_neg ? -1 : 1;
     if (o.step_y) p.y += cmd_.dir_y_neg ? -1 : 1;
+    if (o.step_z) p.z += cmd_.dir_z_neg ? -1 : 1;
     return p;
   }
   void move(const StepOut& o) {
     if (o.step_x) pos_.x += cmd_.dir_x_neg ? -1 : 1;
     if (o.step_y) pos_.y += cmd_.dir_y_neg ? -1 : 1;
+    if (o.step_z) pos_.z += cmd_.dir_z_neg ? -1 : 1;
     ++iter_;
   }
   Command cmd_;

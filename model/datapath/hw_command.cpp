@@ -44,6 +44,16 @@ CmdFields command_fields(const Command& c) {
   signed_field("inc_x_on_y", c.inc_x_on_y, kAccWidth);
   signed_field("inc_y_on_x", c.inc_y_on_x, kAccWidth);
   signed_field("inc_y_on_y", c.inc_y_on_y, kAccWidth);
+  unsigned_field("cap_z", c.cap_z, kAccWidth, kAccWidth - 1);
+  if (c.cap_z == 0) throw InputError("cap_z = 0: the Z capacity must be positive (hw_params.hpp)");
+  unsigned_field("jv_z", c.jv_z, kAccWidth, kAccWidth - 1);
+  unsigned_field("jr_z", c.jr_z, kAccWidth, kAccWidth - 1);
+  unsigned_field("cnt_z", c.cnt_z, kCntWidth, kCntWidth);
+  if (c.jv_z > c.cap_z || c.jr_z >= c.cap_z) {
+    throw InputError("jv_z = " + std::to_string(c.jv_z) + ", jr_z = " + std::to_string(c.jr_z) +
+                     ": the Z axis needs jv_z <= cap_z and jr_z < cap_z = " + std::to_string(c.cap_z) +
+                     " (one step per iteration at most)");
+  }
   return command_fields_unchecked(c);
 }
 

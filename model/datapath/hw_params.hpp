@@ -59,7 +59,7 @@ struct Field {
   std::string_view meaning;
 };
 
-inline constexpr std::array<Field, 13> kCmdFields{{
+inline constexpr std::array<Field, 18> kCmdFields{{
     {"jv_x", kAccWidth, "initial X integrand (scaled, two's complement)"},
     {"jv_y", kAccWidth, "initial Y integrand (scaled, two's complement)"},
     {"jr_x", kAccWidth, "initial X accumulator (preload), < cap"},
@@ -73,6 +73,11 @@ inline constexpr std::array<Field, 13> kCmdFields{{
     {"inc_x_on_y", kAccWidth, "added to jv_x after a Y step (two's complement)"},
     {"inc_y_on_x", kAccWidth, "added to jv_y after an X step (two's complement)"},
     {"inc_y_on_y", kAccWidth, "added to jv_y after a Y step (two's complement)"},
+    {"jv_z", kAccWidth, "Z integrand (constant), 0 <= jv_z <= cap_z"},
+    {"jr_z", kAccWidth, "initial Z accumulator (preload: the phase carried between pieces), < cap_z"},
+    {"cap_z", kAccWidth, "Z accumulator capacity, 0 < cap_z < 2^(AccWidth-1)"},
+    {"cnt_z", kCntWidth, "Z steps to emit"},
+    {"dir_z", 1, "Z step direction (0 = +Z, 1 = -Z)"},
 }};
 
 // A field's width at other widths (formal proofs, synthesis at smaller widths): the
@@ -114,7 +119,7 @@ struct Reg {
   bool show_signed = false;     // GTKWave shows it as signed decimal
   SigKind kind = SigKind::Reg;
 };
-inline constexpr std::array<Reg, 23> kSignals{{
+inline constexpr std::array<Reg, 31> kSignals{{
     {"u_int_x.jv_q", kAccWidth, "X integrand (negative: the axis holds)", "Integrator X"},
     {"u_int_x.jr_q", kAccWidth, "X accumulator (after overflow removal)", "Integrator X"},
     {"u_int_x.inc_on_x_q", kAccWidth, "added to the X integrand after an X step"},
@@ -125,19 +130,27 @@ inline constexpr std::array<Reg, 23> kSignals{{
     {"u_int_y.inc_on_y_q", kAccWidth, "added to the Y integrand after a Y step"},
     {"u_cnt_x.cnt_q", kCntWidth, "X steps still owed", "Counters"},
     {"u_cnt_y.cnt_q", kCntWidth, "Y steps still owed", "Counters"},
+    {"u_lin_z.jv_q", kAccWidth, "Z integrand (constant while the command runs)", "Integrator Z"},
+    {"u_lin_z.jr_q", kAccWidth, "Z accumulator (after overflow removal)", "Integrator Z"},
+    {"u_lin_z.cap_q", kAccWidth, "Z accumulator capacity", "Integrator Z"},
+    {"u_cnt_z.cnt_q", kCntWidth, "Z steps still owed", "Counters"},
     {"cap_q", kAccWidth, "accumulator capacity", "Integrators"},
     {"cdir_x_q", 1, "X step direction of the running command", "Control"},
     {"cdir_y_q", 1, "Y step direction of the running command", "Control"},
+    {"cdir_z_q", 1, "Z step direction of the running command", "Control"},
     {"dir_x_q", 1, "direction of the last X step (drives dir_x_o)"},
     {"dir_y_q", 1, "direction of the last Y step (drives dir_y_o)"},
+    {"dir_z_q", 1, "direction of the last Z step (drives dir_z_o)"},
     {"step_x_q", 1, "X step pulse (drives step_x_o)"},
     {"step_y_q", 1, "Y step pulse (drives step_y_o)"},
+    {"step_z_q", 1, "Z step pulse (drives step_z_o)"},
     {"u_ctrl.state_q", kStateWidth, "control state: 0 idle, 1 run", "Control"},
     {"u_ctrl.done_q", 1, "arc finished (drives done_o, one cycle)"},
     {"u_ctrl.err_q", 1, "arc aborted on a stall (drives err_o, one cycle)"},
     {"u_ctrl.iter_q", 1, "an iteration happened on the last edge (drives iter_o)"},
     {"u_int_x.sum", kAccWidth + 1, "X adder output jr_q + jv_q", "Integrator X", false, SigKind::Probe},
     {"u_int_y.sum", kAccWidth + 1, "Y adder output jr_q + jv_q", "Integrator Y", false, SigKind::Probe},
+    {"u_lin_z.sum", kAccWidth + 1, "Z adder output jr_q + jv_q", "Integrator Z", false, SigKind::Probe},
 }};
 inline constexpr std::size_t kNumSignals = kSignals.size();
 
@@ -175,7 +188,7 @@ static_assert(regs_first(), "kSignals: registers first, probes after them");
 // show; these are the fast one's, named as its own: the design doc's table is generated
 // from this list, and a test finds each name at its width in the fast RTL and none of
 // them in the small one ("rtl: the fast implementation's own registers").
-inline constexpr std::array<Reg, 26> kFastRegisters{{
+inline constexpr std::array<Reg, 32> kFastRegisters{{
     {"u_int_x.g_fast.e_q", kAccWidth + 1, "`jr_q + jv_q - cap_q` (`jv_q` signed), while the axis is active"},
     {"u_int_x.g_fast.incmc_q", kAccWidth + 1, "`inc_on_x_q - cap_q` (the own axis' correction, signed)"},
     {"u_int_x.g_fast.incsum_q", kAccWidth + 1, "`inc_on_x_q + inc_on_y_q` (signed)"},
@@ -202,6 +215,12 @@ inline constexpr std::array<Reg, 26> kFastRegisters{{
     {"u_cnt_x.g_fast.one_q", 1, "`cnt_q == 1`"},
     {"u_cnt_y.g_fast.nz_q", 1, "`cnt_q != 0`"},
     {"u_cnt_y.g_fast.one_q", 1, "`cnt_q == 1`"},
+    {"u_lin_z.g_fast.e_q", kAccWidth + 1, "`jr_q + jv_q - cap_q`, while the axis is active"},
+    {"u_lin_z.g_fast.jvmc_q", kAccWidth + 1, "`jv_q - cap_q` (signed)"},
+    {"u_lin_z.g_fast.ovf_q", 1, "the carry `active & (jr_q + jv_q >= cap_q)`"},
+    {"u_lin_z.g_fast.jvz_q", 1, "`jv_q == 0`"},
+    {"u_cnt_z.g_fast.nz_q", 1, "`cnt_q != 0`"},
+    {"u_cnt_z.g_fast.one_q", 1, "`cnt_q == 1`"},
 }};
 
 // The core's ports (rtl/dda_core.v), in the order of the vector sets' expected words
@@ -214,7 +233,7 @@ struct Port {
   std::string_view meaning;
   std::string_view group = "";
 };
-inline constexpr std::array<Port, 14> kPorts{{
+inline constexpr std::array<Port, 16> kPorts{{
     {"clk_i", 1, PortDir::In, "clock, rising edge", "Command"},
     {"rst_ni", 1, PortDir::In, "reset, synchronous, active low", "Command"},
     {"cmd_valid_i", 1, PortDir::In, "a command is offered", "Command"},
@@ -225,6 +244,8 @@ inline constexpr std::array<Port, 14> kPorts{{
     {"step_y_o", 1, PortDir::Out, "Y step pulse after the edge", "Outputs"},
     {"dir_x_o", 1, PortDir::Out, "X direction after the edge (0 = +X)", "Outputs"},
     {"dir_y_o", 1, PortDir::Out, "Y direction after the edge (0 = +Y)", "Outputs"},
+    {"step_z_o", 1, PortDir::Out, "Z step pulse after the edge", "Outputs"},
+    {"dir_z_o", 1, PortDir::Out, "Z direction after the edge (0 = +Z)", "Outputs"},
     {"busy_o", 1, PortDir::Out, "running a command, after the edge", "Control"},
     {"done_o", 1, PortDir::Out, "a command finished on the edge", "Control"},
     {"err_o", 1, PortDir::Out, "a command stalled on the edge", "Control"},

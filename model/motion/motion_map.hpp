@@ -24,8 +24,8 @@
 namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
-inline constexpr int kVersionMajor = 1;
-inline constexpr int kVersionMinor = 1;
+inline constexpr int kVersionMajor = 2;
+inline constexpr int kVersionMinor = 0;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
 inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;

@@ -69,7 +69,16 @@ struct ProgramRun {
   // Refuse a block whose commands the hardware's widths cannot hold (engines systemc
   // and rtl), before it runs.
   bool hardware = false;
+  // The program may move the third axis (the axis normal to its plane): the reports add
+  // its columns (moves_third_axis()).
+  bool third_axis = false;
 };
+// Does the program at `path` move the axis normal to its plane (or leave it off 0)? A
+// first reading of the program, its moves counted and dropped (memory bounded as the
+// run's); false on a lathe (two axes), true for a mill's program from standard input,
+// which cannot be read twice, and, when the reader refuses the program, what it read
+// before (the run then reports the refusal where it occurs).
+bool moves_third_axis(const std::string& path, const ProgramRun& run);
 // Reads `in` (program::open_program), plans each block as it leaves the planner's
 // window and runs its pieces. Throws ProgramError naming the block at fault; the
 // blocks before it have run and been reported by then.

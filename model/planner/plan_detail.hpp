@@ -16,7 +16,9 @@ namespace dda::detail {
 
 inline std::string pt(Point p) {
   std::ostringstream s;
-  s << '(' << p.x << ',' << p.y << ')';
+  s << '(' << p.x << ',' << p.y;
+  if (p.z != 0) s << ',' << p.z;  // (a point of a run that never moves the third axis: two coordinates)
+  s << ')';
   return s.str();
 }
 

@@ -47,6 +47,15 @@ Plan plan_line(Point from, Point to, Preload preload);
 // The pieces of such a line (also used inside arcs, near their ends).
 std::vector<Piece> line_pieces(Point from, Point to, Preload preload);
 
+// The third axis along a path of the plane (a helix, or a path at constant height): sets
+// every piece's third-axis fields and coordinates so that the axis goes from z0 to z1
+// over the path's iterations by Bresenham's rule (with half preload within half a step
+// of the ideal rise at every iteration), its phase carried from piece to piece. The
+// iterations are counted by running each piece on the golden datapath. Throws
+// InputError when the rise exceeds the path's iterations (at most one step per
+// iteration) or a piece's counter.
+void lift(Plan& plan, std::int64_t z0, std::int64_t z1, Preload preload);
+
 // The curve point of parametric angle theta (micro-degrees) relative to the centre, in
 // Q(kPosFrac): (a cos theta, b sin theta) turned by the spec's angle, computed with the
 // deterministic fixed-point sines and cosines (the same bits on every machine).

@@ -170,47 +170,43 @@ void BlockPlanner::move(const Move& mv) {
   if (held_.size() > window_) plan_front();
 }
 
-// Why the interpolator's two axes cannot run a move, or empty: the axis normal to the
-// run's plane moves (a 3-D line, a plunge, a helix) or an arc lies in another plane.
-static std::string beyond_two_axes(const Move& mv, int run_plane) {
+// Why the interpolator cannot run a move, or empty: an arc in another plane than the
+// run's (the core's ellipse integrators drive the run plane's two axes).
+static std::string outside_plane(const Move& mv, int run_plane) {
   static const char* const kPlane[] = {"G17: X, Y", "G18: Z, X", "G19: Y, Z"};
   const auto plane = [](int p) { return std::string(kPlane[p == 180 ? 1 : p == 190 ? 2 : 0]); };
-  const char normal = run_plane == 180 ? 'Y' : run_plane == 190 ? 'X' : 'Z';
-  const char* const until = " is not supported until the third axis";
-  if (mv.plane != run_plane) {
-    return "an arc in " + plane(mv.plane) + ", outside the plane of the two axes (" + plane(run_plane) + ")," + until;
-  }
-  if (mv.w == mv.w_to) return "";
-  if (is_arc(mv.kind)) return std::string("a helix (an arc that also moves ") + normal + ")" + until;
-  return fmt::format(
-      "it moves {}, the axis normal to the plane ({}), by {:.4f} mm: moving the axis normal to the "
-      "plane{}",
-      normal, plane(run_plane), double(mv.w_to - mv.w) / double(kNmPerMm), until);
+  if (mv.plane == run_plane) return "";
+  return "an arc in " + plane(mv.plane) + ", outside the plane of the interpolator's two ellipse axes (" +
+         plane(run_plane) + "), is not supported (the axis normal to the plane is the third, linear, axis)";
 }
 
 void BlockPlanner::plan_front() {
   const Move& mv = held_.front();
   const Length step = opt_.step;
   if (run_plane_ == 0) run_plane_ = mv.plane;  // (the reader gives the first move in the run's plane)
-  if (const std::string why = beyond_two_axes(mv, run_plane_); !why.empty()) fail(file_, mv, why);
+  if (const std::string why = outside_plane(mv, run_plane_); !why.empty()) fail(file_, mv, why);
   BlockPlan b;
   b.move = mv;
   b.from = at_;
   b.to = on_lattice(mv.to, step);
+  b.to.z = to_steps(mv.w_to, step);  // the axis normal to the plane
   b.rounding = rounding(b.to, mv.to, step);
   b.plan.geometry = LineGeometry{opt_.preload};  // no piece unless the move is a step or longer
   b.plan.from = b.plan.to = at_;
   try {
     if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
       if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
-    } else if (b.from != b.to || mv.full || half_turn_or_more(mv) || mv.turns > 1) {
-      // (A block whose rounded ends coincide and that sweeps less than half a turn is
-      // shorter than a step: nothing to run. One that sweeps more runs as a full turn.)
-      b.plan = plan_curve(mv, b.from, b.to);
+    } else if (const Point from{b.from.x, b.from.y}, to{b.to.x, b.to.y};  // in the plane
+               from != to || mv.full || half_turn_or_more(mv) || mv.turns > 1) {
+      // (A block whose rounded ends coincide in the plane and that sweeps less than half
+      // a turn is shorter than a step there: at most a move of the normal axis, below.
+      // One that sweeps more runs as a full turn.)
+      b.plan = plan_curve(mv, from, to);
       // An arc of several turns (P): its full turns first, from its start.
-      if (mv.turns > 1) {
-        prepend_turns(b.plan, plan_curve(full_turn(mv), b.from, b.from), mv.turns - 1, file_, mv, step);
-      }
+      if (mv.turns > 1) prepend_turns(b.plan, plan_curve(full_turn(mv), from, from), mv.turns - 1, file_, mv, step);
+      lift(b.plan, b.from.z, b.to.z, opt_.preload);  // a helix, or the arc at its height
+    } else if (b.from != b.to) {
+      b.plan = plan_line(b.from, b.to, opt_.preload);
     }
   } catch (const ProgramError&) {
     throw;

@@ -23,12 +23,12 @@ std::string block_no(const BlockPlan& b) {
 double mean(const BlockStats& s) { return s.points ? s.sum_dev / double(s.points) : 0.0; }
 
 // p read a word at a time. The engine has just written the record a word at a time, and
-// a copy of both words at once (as the compiler would make it) cannot take them from
+// a copy of the words at once (as the compiler would make it) cannot take them from
 // the pending stores: it waits for them to reach the cache, on every record.
 Point word_by_word(const Point& p) {
-  std::int64_t x = p.x, y = p.y;
-  asm("" : "+r"(x), "+r"(y));  // (keeps the two loads apart; no instruction)
-  return Point{x, y};
+  std::int64_t x = p.x, y = p.y, z = p.z;
+  asm("" : "+r"(x), "+r"(y), "+r"(z));  // (keeps the loads apart; no instruction)
+  return Point{x, y, z};
 }
 
 // A point of a block's path at distance d from its geometry.
@@ -86,11 +86,13 @@ BlockWindow::Entry& BlockWindow::front() {
   return held_.front();
 }
 
-BlockStatsSink::BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, BlockStatsFormat fmt)
+BlockStatsSink::BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, BlockStatsFormat fmt,
+                               bool third_axis)
     : os_(os),
       lattice_(lattice),
       start_(on_lattice(start, lattice.step)),
       fmt_(fmt),
+      z_(third_axis),
       window_(lattice.step),
       targeted_(lattice.preload == Preload::Half),
       prev_rounding_(rounding(start_, start, lattice.step)) {}
@@ -107,7 +109,8 @@ void BlockStatsSink::header() {
     os_ << json_stream::open_object(j) << ",\n \"blocks\": [";
   } else if (fmt_ == BlockStatsFormat::Csv) {
     os_ << "line,block,kind,end_u_mm,end_v_mm,end_x,end_y,rounding,commands,steps,iterations,max_dev,mean_dev,on_end,"
-           "target,within_target\n";
+           "target,within_target"
+        << (z_ ? ",end_w_mm,end_z\n" : "\n");
   } else {
     fmt::print(os_, "step {} mm, preload {}, start ({},{}); deviation: steps from the programmed geometry\n",
                mm(lattice_.step), to_string(lattice_.preload), start_.x, start_.y);
@@ -137,8 +140,9 @@ void BlockStatsSink::record(const Iteration& it) {
   last_iter_ = it.iter;
   const Point pos = word_by_word(it.pos);
   s.end = pos;
-  if (!it.step_x && !it.step_y) return;
+  if (!it.step_x && !it.step_y && !it.step_z) return;
   ++s.steps;
+  if (!it.step_x && !it.step_y) return;  // (the third axis alone: the plane's point stays)
   pending_[pending_n_++] = pos;
   if (pending_n_ == kMeasureBatch) measure(e);
 }
@@ -178,6 +182,16 @@ void BlockStatsSink::finish() {
   }
 }
 
+// A block's end for the text table: in mm or in steps, with the third coordinate in a
+// report that has it.
+std::string BlockStatsSink::end_text(const BlockPlan& b, bool in_mm) const {
+  if (in_mm) {
+    return z_ ? fmt::format("{},{},{}", mm(b.move.to.u), mm(b.move.to.v), mm(b.move.w_to))
+              : fmt::format("{},{}", mm(b.move.to.u), mm(b.move.to.v));
+  }
+  return z_ ? fmt::format("{},{},{}", b.to.x, b.to.y, b.to.z) : fmt::format("{},{}", b.to.x, b.to.y);
+}
+
 // The row of a block whose records have all passed (its pending points measured first).
 void BlockStatsSink::row(BlockWindow::Entry& e) {
   measure(e);
@@ -208,6 +222,7 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
     r["kind"] = std::string(kind_name(b.move.kind));
     r["end_mm"] = {mm(b.move.to.u), mm(b.move.to.v)};
     r["end"] = {b.to.x, b.to.y};
+    if (z_) r["end_mm"].push_back(mm(b.move.w_to)), r["end"].push_back(b.to.z);
     r["rounding"] = b.rounding;
     r["commands"] = b.plan.pieces.size();
     r["steps"] = st.steps;
@@ -221,18 +236,19 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
     }
     os_ << (blocks_ == 1 ? "\n" : ",\n") << json_stream::element(r, 2);
   } else if (fmt_ == BlockStatsFormat::Csv) {
-    fmt::print(os_, "{},{},{},{},{},{},{},{:.6f},{},{},{},{:.6f},{:.6f},{},{},{}\n", b.move.pos.line, block_no(b),
+    fmt::print(os_, "{},{},{},{},{},{},{},{:.6f},{},{},{},{:.6f},{:.6f},{},{},{}", b.move.pos.line, block_no(b),
                kind_name(b.move.kind), mm(b.move.to.u), mm(b.move.to.v), b.to.x, b.to.y, b.rounding,
                b.plan.pieces.size(), st.steps, st.iterations, st.max_dev, mean(st), on_end ? "yes" : "no",
                targeted_ ? fmt::format("{:.6f}", target) : "-", ok == "NO" ? "no" : ok);
+    os_ << (z_ ? fmt::format(",{},{}\n", mm(b.move.w_to), b.to.z) : std::string("\n"));
   } else {
     fmt::print(
         os_,
         "| {:>5} | {:>6} | {:<11} | {:>21} | {:>17} | {:>8.3f} | {:>4} | {:>7} | {:>9} | {:>7.3f} | {:>6} | {:>3} | "
         "{:>3} |\n",
-        b.move.pos.line, block_no(b), kind_name(b.move.kind), fmt::format("{},{}", mm(b.move.to.u), mm(b.move.to.v)),
-        fmt::format("{},{}", b.to.x, b.to.y), b.rounding, b.plan.pieces.size(), st.steps, st.iterations, st.max_dev,
-        targeted_ ? fmt::format("{:.3f}", target) : "-", ok, on_end ? "yes" : "NO");
+        b.move.pos.line, block_no(b), kind_name(b.move.kind), end_text(b, true), end_text(b, false), b.rounding,
+        b.plan.pieces.size(), st.steps, st.iterations, st.max_dev, targeted_ ? fmt::format("{:.3f}", target) : "-", ok,
+        on_end ? "yes" : "NO");
   }
 }
 

@@ -65,7 +65,10 @@ class BlockWindow {
 
 class BlockStatsSink : public RunSink {
  public:
-  BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, BlockStatsFormat fmt);
+  // third_axis: the program may move the axis normal to its plane; each block's end
+  // then has its third coordinate (mm and steps; in CSV two more columns at the end).
+  BlockStatsSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, BlockStatsFormat fmt,
+                 bool third_axis = false);
   void block(const BlockPlan& b) override;
   void record(const Iteration& it) override;
   void finish() override;
@@ -75,10 +78,12 @@ class BlockStatsSink : public RunSink {
   void header();
   void measure(BlockWindow::Entry& e);
   void row(BlockWindow::Entry& e);
+  std::string end_text(const BlockPlan& b, bool in_mm) const;
   std::ostream& os_;
   LatticeOptions lattice_;
   Point start_;
   BlockStatsFormat fmt_;
+  bool z_ = false;
   // The points of the front block whose distance is not measured yet: measured
   // kMeasureBatch at a time, in their order (the same sums and maxima as one by one).
   static constexpr std::size_t kMeasureBatch = 256;

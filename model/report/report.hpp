@@ -31,6 +31,9 @@ void write_trace(std::ostream& os, const Plan& plan, const RegState& initial, co
                  TraceFormat fmt);
 void write_trace(std::ostream& os, const Plan& plan, const std::vector<Iteration>& iters, TraceFormat fmt);
 bool paper_columns(const Plan& plan);
+// Does a plan move the third axis (or run away from its zero)? Its reports then add the
+// third axis' columns; a plan of the plane alone reports as the two-axis core did.
+bool third_axis(const Plan& plan);
 
 // Lattice points of the path: the start, then the position after every move.
 std::vector<Point> path_points(const Plan& plan, const std::vector<Iteration>& iters);
@@ -39,7 +42,7 @@ enum class PathFormat { Csv, Json };
 void write_path(std::ostream& os, const std::vector<Point>& points, PathFormat fmt);
 
 struct Stats {
-  std::uint64_t iterations = 0, moves = 0, pulses_x = 0, pulses_y = 0, points = 0;
+  std::uint64_t iterations = 0, moves = 0, pulses_x = 0, pulses_y = 0, pulses_z = 0, points = 0;
   double max_dev = 0.0;  // largest distance of a path point from the ellipse, in steps
   Point max_dev_at;
   double mean_dev = 0.0;
@@ -55,7 +58,8 @@ void write_stats(std::ostream& os, const Plan& plan, const Stats& s, StatsFormat
 class TraceSink : public RunSink {
  public:
   TraceSink(std::ostream& os, const Plan& plan, TraceFormat fmt);
-  TraceSink(std::ostream& os, Preload preload, Point from, TraceFormat fmt);
+  // third_axis: the program may move the third axis (its columns are written).
+  TraceSink(std::ostream& os, Preload preload, Point from, TraceFormat fmt, bool third_axis);
   void initial(const RegState& r) override;
   void piece(const Piece& pc) override;
   void record(const Iteration& it) override;
@@ -70,6 +74,7 @@ class TraceSink : public RunSink {
   Point from_, at_;
   TraceFormat fmt_;
   bool paper_ = false;
+  bool z_ = false;  // the third axis' columns
   PieceWindow window_;
   std::uint64_t pieces_ = 0, records_ = 0;
   std::int64_t last_piece_ = -1;
@@ -79,7 +84,8 @@ class TraceSink : public RunSink {
 // (Written from the first piece on: a program the reader refuses prints nothing.)
 class PathSink : public RunSink {
  public:
-  PathSink(std::ostream& os, Point from, PathFormat fmt);
+  // third_axis: each point has its third coordinate.
+  PathSink(std::ostream& os, Point from, PathFormat fmt, bool third_axis = false);
   void piece(const Piece&) override { start(); }
   void record(const Iteration& it) override;
   void finish() override;
@@ -91,6 +97,7 @@ class PathSink : public RunSink {
   std::ostream& os_;
   PathFormat fmt_;
   Point from_;
+  bool z_ = false;
   bool started_ = false;
   std::uint64_t n_ = 0;
 };

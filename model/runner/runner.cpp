@@ -12,7 +12,9 @@ namespace {
 
 std::string pt(Point p) {
   std::ostringstream s;
-  s << '(' << p.x << ',' << p.y << ')';
+  s << '(' << p.x << ',' << p.y;
+  if (p.z != 0) s << ',' << p.z;  // (a point of a run that never moves the third axis: two coordinates)
+  s << ')';
   return s.str();
 }
 
@@ -121,6 +123,7 @@ RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
     it.piece = r.index;
     it.dir_x_neg = pc.cmd.dir_x_neg;
     it.dir_y_neg = pc.cmd.dir_y_neg;
+    it.dir_z_neg = pc.cmd.dir_z_neg;
     (*on_iter)(it);
   }
   check_end(pc, dp);

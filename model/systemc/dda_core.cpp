@@ -73,6 +73,7 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   u_ctrl.can_y_i(can_y);
   u_ctrl.last_x_i(last_x);
   u_ctrl.last_y_i(last_y);
+  bind_third_axis();
   u_ctrl.cmd_ready_o(cmd_ready_o);
   u_ctrl.load_o(load);
   u_ctrl.iterate_o(iterate);
@@ -87,7 +88,31 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   sensitive << clk_i.pos();
   dont_initialize();
   SC_METHOD(outputs);
-  sensitive << step_x_q << step_y_q << dir_x_q << dir_y_q;
+  sensitive << step_x_q << step_y_q << step_z_q << dir_x_q << dir_y_q << dir_z_q;
+}
+
+void dda_core::bind_third_axis() {
+  u_lin_z.clk_i(clk_i);
+  u_lin_z.rst_ni(rst_ni);
+  u_lin_z.load_i(load);
+  u_lin_z.iterate_i(iterate);
+  u_lin_z.active_i(active_z);
+  u_lin_z.jv_i(cmd_jv_z);
+  u_lin_z.jr_i(cmd_jr_z);
+  u_lin_z.cap_i(cmd_cap_z);
+  u_lin_z.ovf_o(ovf_z);
+  u_lin_z.can_o(can_z);
+  u_cnt_z.clk_i(clk_i);
+  u_cnt_z.rst_ni(rst_ni);
+  u_cnt_z.load_i(load);
+  u_cnt_z.iterate_i(iterate);
+  u_cnt_z.cnt_i(cmd_cnt_z);
+  u_cnt_z.dec_i(ovf_z);
+  u_cnt_z.active_o(active_z);
+  u_cnt_z.last_o(last_z);
+  u_ctrl.active_z_i(active_z);
+  u_ctrl.can_z_i(can_z);
+  u_ctrl.last_z_i(last_z);
 }
 
 void dda_core::decode() {
@@ -105,6 +130,11 @@ void dda_core::decode() {
   cmd_inc_x_on_y.write(field<acc_t>(c, "inc_x_on_y"));
   cmd_inc_y_on_x.write(field<acc_t>(c, "inc_y_on_x"));
   cmd_inc_y_on_y.write(field<acc_t>(c, "inc_y_on_y"));
+  cmd_jv_z.write(field<acc_t>(c, "jv_z"));
+  cmd_jr_z.write(field<acc_t>(c, "jr_z"));
+  cmd_cap_z.write(field<acc_t>(c, "cap_z"));
+  cmd_cnt_z.write(field<cnt_t>(c, "cnt_z"));
+  cmd_dir_z.write(field<unsigned>(c, "dir_z") != 0);
 }
 
 void dda_core::seq() {
@@ -112,23 +142,30 @@ void dda_core::seq() {
     cap_q.write(0);
     cdir_x_q.write(false);
     cdir_y_q.write(false);
+    cdir_z_q.write(false);
     dir_x_q.write(false);
     dir_y_q.write(false);
+    dir_z_q.write(false);
     step_x_q.write(false);
     step_y_q.write(false);
+    step_z_q.write(false);
     return;
   }
   if (load.read()) {
     cap_q.write(cmd_cap.read());
     cdir_x_q.write(cmd_dir_x.read());
     cdir_y_q.write(cmd_dir_y.read());
+    cdir_z_q.write(cmd_dir_z.read());
   }
   // A step carries the direction of the command that made it (see the RTL).
   const bool sx = iterate.read() && ovf_x.read(), sy = iterate.read() && ovf_y.read();
+  const bool sz = iterate.read() && ovf_z.read();
   step_x_q.write(sx);
   step_y_q.write(sy);
+  step_z_q.write(sz);
   if (sx) dir_x_q.write(cdir_x_q.read());
   if (sy) dir_y_q.write(cdir_y_q.read());
+  if (sz) dir_z_q.write(cdir_z_q.read());
 }
 
 void dda_core::outputs() {
@@ -136,6 +173,8 @@ void dda_core::outputs() {
   step_y_o.write(step_y_q.read());
   dir_x_o.write(dir_x_q.read());
   dir_y_o.write(dir_y_q.read());
+  step_z_o.write(step_z_q.read());
+  dir_z_o.write(dir_z_q.read());
 }
 
 void dda_core::trace(sc_core::sc_trace_file* tf) const {
@@ -147,17 +186,22 @@ void dda_core::trace(sc_core::sc_trace_file* tf) const {
   sc_core::sc_trace(tf, cap_q, "cap_q");
   sc_core::sc_trace(tf, cdir_x_q, "cdir_x_q");
   sc_core::sc_trace(tf, cdir_y_q, "cdir_y_q");
+  sc_core::sc_trace(tf, cdir_z_q, "cdir_z_q");
   sc_core::sc_trace(tf, dir_x_q, "dir_x_q");
   sc_core::sc_trace(tf, dir_y_q, "dir_y_q");
+  sc_core::sc_trace(tf, dir_z_q, "dir_z_q");
   sc_core::sc_trace(tf, step_x_q, "step_x_q");
   sc_core::sc_trace(tf, step_y_q, "step_y_q");
+  sc_core::sc_trace(tf, step_z_q, "step_z_q");
   sc_core::sc_trace(tf, busy_o, "busy_o");
   sc_core::sc_trace(tf, load, "load");
   sc_core::sc_trace(tf, iterate, "iterate");
   u_int_x->trace(tf, "u_int_x");
   u_int_y->trace(tf, "u_int_y");
   u_cnt_x.trace(tf, "u_cnt_x");
+  u_lin_z.trace(tf, "u_lin_z");
   u_cnt_y.trace(tf, "u_cnt_y");
+  u_cnt_z.trace(tf, "u_cnt_z");
   u_ctrl.trace(tf, "u_ctrl");
 }
 

@@ -11,11 +11,11 @@ constexpr unsigned kRun = unsigned(hw::State::Run);
 void dda_ctrl::comb() {
   const bool idle = state_q.read() == kIdle;
   const bool run_ce = state_q.read() == kRun && ce_i.read();
-  const bool fin = run_ce && !active_x_i.read() && !active_y_i.read();
-  const bool st = run_ce && !fin && !can_x_i.read() && !can_y_i.read();
+  const bool fin = run_ce && !active_x_i.read() && !active_y_i.read() && !active_z_i.read();
+  const bool st = run_ce && !fin && !can_x_i.read() && !can_y_i.read() && !can_z_i.read();
   const bool it = run_ce && !fin && !st;
   // The command ends on this edge: the next one may load on the same edge (back to back).
-  const bool ending = fin || (it && last_x_i.read() && last_y_i.read());
+  const bool ending = fin || (it && last_x_i.read() && last_y_i.read() && last_z_i.read());
   finished.write(fin);
   stalled.write(st);
   finishing.write(ending);

@@ -10,9 +10,9 @@ namespace dda::sc {
 SC_MODULE(dda_ctrl) {
   sc_core::sc_in<bool> clk_i, rst_ni;
   sc_core::sc_in<bool> cmd_valid_i, ce_i;
-  sc_core::sc_in<bool> active_x_i, active_y_i;  // counters non-zero
-  sc_core::sc_in<bool> can_x_i, can_y_i;        // active with a non-zero integrand
-  sc_core::sc_in<bool> last_x_i, last_y_i;      // counters zero after this iteration
+  sc_core::sc_in<bool> active_x_i, active_y_i, active_z_i;  // counters non-zero
+  sc_core::sc_in<bool> can_x_i, can_y_i, can_z_i;           // active with a non-zero integrand
+  sc_core::sc_in<bool> last_x_i, last_y_i, last_z_i;        // counters zero after this iteration
   sc_core::sc_out<bool> cmd_ready_o, load_o, iterate_o, busy_o;
   sc_core::sc_out<bool> done_o, err_o, iter_o;
 
@@ -23,8 +23,8 @@ SC_MODULE(dda_ctrl) {
 
   SC_CTOR(dda_ctrl) {
     SC_METHOD(comb);
-    sensitive << state_q << cmd_valid_i << ce_i << active_x_i << active_y_i << can_x_i << can_y_i << last_x_i
-              << last_y_i << done_q << err_q << iter_q;
+    sensitive << state_q << cmd_valid_i << ce_i << active_x_i << active_y_i << active_z_i << can_x_i << can_y_i
+              << can_z_i << last_x_i << last_y_i << last_z_i << done_q << err_q << iter_q;
     SC_METHOD(seq);
     sensitive << clk_i.pos();
     dont_initialize();

@@ -33,6 +33,8 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.step_y_o(step_y);
   u_core.dir_x_o(dir_x);
   u_core.dir_y_o(dir_y);
+  u_core.step_z_o(step_z);
+  u_core.dir_z_o(dir_z);
   u_core.busy_o(core_busy);
   u_core.done_o(core_done);
   u_core.err_o(core_err);

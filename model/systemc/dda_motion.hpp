@@ -53,6 +53,7 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
+  sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};    // the third axis: no stage here yet
   sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
   sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
       sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};

@@ -3,12 +3,12 @@
 // core_logic_cells): the core runs a command list from block RAM, so the only logic
 // beside it is this wrapper's control. The command memory holds CMD_DEPTH words of
 // DDA_CMD_WIDTH bits as 16-bit lanes, one iCE40 EBR (SB_RAM40_4K, 256 x 16) per lane
-// (31 at the default widths); EBRs are not logic cells. A host writes it 16 bits at a
+// (42 at the default widths); EBRs are not logic cells. A host writes it 16 bits at a
 // time on its own clock (wclk_i, we_i, waddr_i = {word, lane}, wdata_i; no read-during-write
 // logic then), so synthesis cannot see its contents
 // and the core stays general; after reset the words 0 .. end_i-1 are offered to the
 // core back to back. Not part of the IP: it exists so that place and route sees the
-// core as a design would use it, without a 495-bit shift register in front of it.
+// core as a design would use it, without a 666-bit shift register in front of it.
 `include "dda_params.vh"
 
 module dda_fpga_top #(
@@ -20,7 +20,7 @@ module dda_fpga_top #(
   input  wire                                  ce_i,
   input  wire                                  wclk_i,   // the host's write clock
   input  wire                                  we_i,
-  input  wire [$clog2(CMD_DEPTH)+5-1:0]        waddr_i,  // {word, lane}
+  input  wire [$clog2(CMD_DEPTH)+$clog2((`DDA_CMD_WIDTH+15)/16)-1:0] waddr_i,  // {word, lane}
   input  wire [15:0]                           wdata_i,
   input  wire [$clog2(CMD_DEPTH)-1:0]          end_i,    // commands to run: 0 .. end_i-1
   output wire                                  cmd_ready_o,
@@ -28,6 +28,8 @@ module dda_fpga_top #(
   output wire                                  step_y_o,
   output wire                                  dir_x_o,
   output wire                                  dir_y_o,
+  output wire                                  step_z_o,
+  output wire                                  dir_z_o,
   output wire                                  busy_o,
   output wire                                  done_o,
   output wire                                  err_o,
@@ -35,7 +37,8 @@ module dda_fpga_top #(
 );
 
   localparam integer AddrWidth = $clog2(CMD_DEPTH);
-  localparam integer Lanes = (`DDA_CMD_WIDTH + 15) / 16;
+  localparam integer Lanes     = (`DDA_CMD_WIDTH + 15) / 16;
+  localparam integer LaneBits  = $clog2(Lanes);
 
   // cmd_q always holds word addr_q one edge after addr_q changes: the read address is
   // the next address, so an accepted command is followed by the next word at once and
@@ -60,7 +63,7 @@ module dda_fpga_top #(
   for (genvar l = 0; l < Lanes; l++) begin : g_lane
     reg [15:0] mem [0:CMD_DEPTH-1];
     reg [15:0] rd_q;
-    always @(posedge wclk_i) if (we_i && waddr_i[4:0] == l) mem[waddr_i[AddrWidth+4:5]] <= wdata_i;
+    always @(posedge wclk_i) if (we_i && waddr_i[LaneBits-1:0] == l) mem[waddr_i[AddrWidth+LaneBits-1:LaneBits]] <= wdata_i;
     always @(posedge clk_i) rd_q <= mem[addr_d];
     assign cmd_q[16*l+:16] = rd_q;
   end
@@ -76,6 +79,8 @@ module dda_fpga_top #(
     .step_y_o    (step_y_o),
     .dir_x_o     (dir_x_o),
     .dir_y_o     (dir_y_o),
+    .step_z_o    (step_z_o),
+    .dir_z_o     (dir_z_o),
     .busy_o      (busy_o),
     .done_o      (done_o),
     .err_o       (err_o),

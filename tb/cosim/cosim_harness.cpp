@@ -12,19 +12,19 @@ namespace dda::cosim {
 
 namespace {
 
-template <typename Core>
-void bind_outputs(Core& c, sc_core::sc_signal<bool>& ready, sc_core::sc_signal<bool>& sx, sc_core::sc_signal<bool>& dx,
-                  sc_core::sc_signal<bool>& sy, sc_core::sc_signal<bool>& dy, sc_core::sc_signal<bool>& busy,
-                  sc_core::sc_signal<bool>& done, sc_core::sc_signal<bool>& err, sc_core::sc_signal<bool>& iter) {
-  c.cmd_ready_o(ready);
-  c.step_x_o(sx);
-  c.dir_x_o(dx);
-  c.step_y_o(sy);
-  c.dir_y_o(dy);
-  c.busy_o(busy);
-  c.done_o(done);
-  c.err_o(err);
-  c.iter_o(iter);
+template <typename Core, typename Outputs>
+void bind_outputs(Core& c, Outputs& o) {
+  c.cmd_ready_o(o.cmd_ready);
+  c.step_x_o(o.step_x);
+  c.dir_x_o(o.dir_x);
+  c.step_y_o(o.step_y);
+  c.dir_y_o(o.dir_y);
+  c.step_z_o(o.step_z);
+  c.dir_z_o(o.dir_z);
+  c.busy_o(o.busy);
+  c.done_o(o.done);
+  c.err_o(o.err);
+  c.iter_o(o.iter);
 }
 
 }  // namespace
@@ -37,15 +37,13 @@ CosimHarness::CosimHarness() {
   sc_->ce_i(ce_);
   sc_->cmd_valid_i(cmd_valid_);
   sc_->cmd_i(cmd_);
-  bind_outputs(*sc_, sc_out_.cmd_ready, sc_out_.step_x, sc_out_.dir_x, sc_out_.step_y, sc_out_.dir_y, sc_out_.busy,
-               sc_out_.done, sc_out_.err, sc_out_.iter);
+  bind_outputs(*sc_, sc_out_);
   rtl_->clk_i(clk_);
   rtl_->rst_ni(rst_n_);
   rtl_->ce_i(ce_);
   rtl_->cmd_valid_i(cmd_valid_);
   rtl_->cmd_i(cmd_);
-  bind_outputs(*rtl_, rtl_out_.cmd_ready, rtl_out_.step_x, rtl_out_.dir_x, rtl_out_.step_y, rtl_out_.dir_y,
-               rtl_out_.busy, rtl_out_.done, rtl_out_.err, rtl_out_.iter);
+  bind_outputs(*rtl_, rtl_out_);
   sc_sampler_ = std::make_unique<sc::ScSampler>(sc_->name(), hw::signal_table());
   rtl_sampler_ = std::make_unique<rtl::VlSampler>(*Verilated::threadContextp(), std::string(rtl_->name()) + ".dda_core",
                                                   hw::signal_table());
@@ -90,6 +88,8 @@ bool CosimHarness::edge() {
       {"dir_x_o", sc_out_.dir_x.read(), rtl_out_.dir_x.read()},
       {"step_y_o", sc_out_.step_y.read(), rtl_out_.step_y.read()},
       {"dir_y_o", sc_out_.dir_y.read(), rtl_out_.dir_y.read()},
+      {"step_z_o", sc_out_.step_z.read(), rtl_out_.step_z.read()},
+      {"dir_z_o", sc_out_.dir_z.read(), rtl_out_.dir_z.read()},
       {"busy_o", sc_out_.busy.read(), rtl_out_.busy.read()},
       {"done_o", sc_out_.done.read(), rtl_out_.done.read()},
       {"err_o", sc_out_.err.read(), rtl_out_.err.read()},
@@ -119,8 +119,8 @@ bool CosimHarness::edge() {
 PortValues CosimHarness::read_ports() {  // the SystemC model's (the RTL's are compared with them)
   const Outputs& o = sc_out_;
   // The order of kHarnessOutputs.
-  return {o.cmd_ready.read(), o.step_x.read(), o.step_y.read(), o.dir_x.read(), o.dir_y.read(),
-          o.busy.read(),      o.done.read(),   o.err.read(),    o.iter.read()};
+  return {o.cmd_ready.read(), o.step_x.read(), o.step_y.read(), o.dir_x.read(), o.dir_y.read(), o.step_z.read(),
+          o.dir_z.read(),     o.busy.read(),   o.done.read(),   o.err.read(),   o.iter.read()};
 }
 
 }  // namespace dda::cosim

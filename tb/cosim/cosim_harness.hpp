@@ -46,7 +46,7 @@ class CosimHarness : public CoreHarness {
   sc_core::sc_signal<sc::cmd_t> cmd_{"cmd"};
   // Each model drives its own copy of every output.
   struct Outputs {
-    sc_core::sc_signal<bool> cmd_ready, step_x, dir_x, step_y, dir_y, busy, done, err, iter;
+    sc_core::sc_signal<bool> cmd_ready, step_x, dir_x, step_y, dir_y, step_z, dir_z, busy, done, err, iter;
   };
   Outputs sc_out_, rtl_out_;
   std::unique_ptr<sc::dda_core> sc_;

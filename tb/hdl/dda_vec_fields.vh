@@ -3,40 +3,49 @@
 // and cli/vectors.cpp: the per-cycle vector layout of `dda vectors` (docs/vectors.md).
 // Do not edit: the test "hw_params: tb/hdl/dda_vec_fields.vh is in sync" checks it.
 `define DDA_VEC_IN_WIDTH 19
-`define DDA_VEC_EXP_WIDTH 512
+`define DDA_VEC_EXP_WIDTH 687
 `define DDA_VEC_IDX_WIDTH 16
 `define DDA_VEC_CMD_ADDR_BITS 12  // the bench holds 2^this commands
 // The word the bench compares after the edge: `ready` is cmd_ready_o sampled before
 // it, step_x .. iter the wires on the core's outputs, dut.* its registers.
-`define DDA_VEC_GOT(ready) {ready, step_x, step_y, dir_x, dir_y, busy, done, err, iter, dut.u_int_x.jv_q, dut.u_int_x.jr_q, dut.u_int_x.inc_on_x_q, dut.u_int_x.inc_on_y_q, dut.u_int_y.jv_q, dut.u_int_y.jr_q, dut.u_int_y.inc_on_x_q, dut.u_int_y.inc_on_y_q, dut.u_cnt_x.cnt_q, dut.u_cnt_y.cnt_q, dut.cap_q, dut.cdir_x_q, dut.cdir_y_q, dut.dir_x_q, dut.dir_y_q, dut.step_x_q, dut.step_y_q, dut.u_ctrl.state_q, dut.u_ctrl.done_q, dut.u_ctrl.err_q, dut.u_ctrl.iter_q}
+`define DDA_VEC_GOT(ready) {ready, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, done, err, iter, dut.u_int_x.jv_q, dut.u_int_x.jr_q, dut.u_int_x.inc_on_x_q, dut.u_int_x.inc_on_y_q, dut.u_int_y.jv_q, dut.u_int_y.jr_q, dut.u_int_y.inc_on_x_q, dut.u_int_y.inc_on_y_q, dut.u_cnt_x.cnt_q, dut.u_cnt_y.cnt_q, dut.u_lin_z.jv_q, dut.u_lin_z.jr_q, dut.u_lin_z.cap_q, dut.u_cnt_z.cnt_q, dut.cap_q, dut.cdir_x_q, dut.cdir_y_q, dut.cdir_z_q, dut.dir_x_q, dut.dir_y_q, dut.dir_z_q, dut.step_x_q, dut.step_y_q, dut.step_z_q, dut.u_ctrl.state_q, dut.u_ctrl.done_q, dut.u_ctrl.err_q, dut.u_ctrl.iter_q}
 // Reports the first field (most significant first) where exp and got differ.
 `define DDA_VEC_REPORT(cyc, exp, got) \
-  if ((exp[511:511]) !== (got[511:511])) $display("MISMATCH cycle %0d field cmd_ready_o: expected 'h%0h, got 'h%0h", cyc, exp[511:511], got[511:511]); \
-  else if ((exp[510:510]) !== (got[510:510])) $display("MISMATCH cycle %0d field step_x_o: expected 'h%0h, got 'h%0h", cyc, exp[510:510], got[510:510]); \
-  else if ((exp[509:509]) !== (got[509:509])) $display("MISMATCH cycle %0d field step_y_o: expected 'h%0h, got 'h%0h", cyc, exp[509:509], got[509:509]); \
-  else if ((exp[508:508]) !== (got[508:508])) $display("MISMATCH cycle %0d field dir_x_o: expected 'h%0h, got 'h%0h", cyc, exp[508:508], got[508:508]); \
-  else if ((exp[507:507]) !== (got[507:507])) $display("MISMATCH cycle %0d field dir_y_o: expected 'h%0h, got 'h%0h", cyc, exp[507:507], got[507:507]); \
-  else if ((exp[506:506]) !== (got[506:506])) $display("MISMATCH cycle %0d field busy_o: expected 'h%0h, got 'h%0h", cyc, exp[506:506], got[506:506]); \
-  else if ((exp[505:505]) !== (got[505:505])) $display("MISMATCH cycle %0d field done_o: expected 'h%0h, got 'h%0h", cyc, exp[505:505], got[505:505]); \
-  else if ((exp[504:504]) !== (got[504:504])) $display("MISMATCH cycle %0d field err_o: expected 'h%0h, got 'h%0h", cyc, exp[504:504], got[504:504]); \
-  else if ((exp[503:503]) !== (got[503:503])) $display("MISMATCH cycle %0d field iter_o: expected 'h%0h, got 'h%0h", cyc, exp[503:503], got[503:503]); \
-  else if ((exp[502:452]) !== (got[502:452])) $display("MISMATCH cycle %0d field u_int_x.jv_q: expected 'h%0h, got 'h%0h", cyc, exp[502:452], got[502:452]); \
-  else if ((exp[451:401]) !== (got[451:401])) $display("MISMATCH cycle %0d field u_int_x.jr_q: expected 'h%0h, got 'h%0h", cyc, exp[451:401], got[451:401]); \
-  else if ((exp[400:350]) !== (got[400:350])) $display("MISMATCH cycle %0d field u_int_x.inc_on_x_q: expected 'h%0h, got 'h%0h", cyc, exp[400:350], got[400:350]); \
-  else if ((exp[349:299]) !== (got[349:299])) $display("MISMATCH cycle %0d field u_int_x.inc_on_y_q: expected 'h%0h, got 'h%0h", cyc, exp[349:299], got[349:299]); \
-  else if ((exp[298:248]) !== (got[298:248])) $display("MISMATCH cycle %0d field u_int_y.jv_q: expected 'h%0h, got 'h%0h", cyc, exp[298:248], got[298:248]); \
-  else if ((exp[247:197]) !== (got[247:197])) $display("MISMATCH cycle %0d field u_int_y.jr_q: expected 'h%0h, got 'h%0h", cyc, exp[247:197], got[247:197]); \
-  else if ((exp[196:146]) !== (got[196:146])) $display("MISMATCH cycle %0d field u_int_y.inc_on_x_q: expected 'h%0h, got 'h%0h", cyc, exp[196:146], got[196:146]); \
-  else if ((exp[145:95]) !== (got[145:95])) $display("MISMATCH cycle %0d field u_int_y.inc_on_y_q: expected 'h%0h, got 'h%0h", cyc, exp[145:95], got[145:95]); \
-  else if ((exp[94:78]) !== (got[94:78])) $display("MISMATCH cycle %0d field u_cnt_x.cnt_q: expected 'h%0h, got 'h%0h", cyc, exp[94:78], got[94:78]); \
-  else if ((exp[77:61]) !== (got[77:61])) $display("MISMATCH cycle %0d field u_cnt_y.cnt_q: expected 'h%0h, got 'h%0h", cyc, exp[77:61], got[77:61]); \
-  else if ((exp[60:10]) !== (got[60:10])) $display("MISMATCH cycle %0d field cap_q: expected 'h%0h, got 'h%0h", cyc, exp[60:10], got[60:10]); \
-  else if ((exp[9:9]) !== (got[9:9])) $display("MISMATCH cycle %0d field cdir_x_q: expected 'h%0h, got 'h%0h", cyc, exp[9:9], got[9:9]); \
-  else if ((exp[8:8]) !== (got[8:8])) $display("MISMATCH cycle %0d field cdir_y_q: expected 'h%0h, got 'h%0h", cyc, exp[8:8], got[8:8]); \
-  else if ((exp[7:7]) !== (got[7:7])) $display("MISMATCH cycle %0d field dir_x_q: expected 'h%0h, got 'h%0h", cyc, exp[7:7], got[7:7]); \
-  else if ((exp[6:6]) !== (got[6:6])) $display("MISMATCH cycle %0d field dir_y_q: expected 'h%0h, got 'h%0h", cyc, exp[6:6], got[6:6]); \
-  else if ((exp[5:5]) !== (got[5:5])) $display("MISMATCH cycle %0d field step_x_q: expected 'h%0h, got 'h%0h", cyc, exp[5:5], got[5:5]); \
-  else if ((exp[4:4]) !== (got[4:4])) $display("MISMATCH cycle %0d field step_y_q: expected 'h%0h, got 'h%0h", cyc, exp[4:4], got[4:4]); \
+  if ((exp[686:686]) !== (got[686:686])) $display("MISMATCH cycle %0d field cmd_ready_o: expected 'h%0h, got 'h%0h", cyc, exp[686:686], got[686:686]); \
+  else if ((exp[685:685]) !== (got[685:685])) $display("MISMATCH cycle %0d field step_x_o: expected 'h%0h, got 'h%0h", cyc, exp[685:685], got[685:685]); \
+  else if ((exp[684:684]) !== (got[684:684])) $display("MISMATCH cycle %0d field step_y_o: expected 'h%0h, got 'h%0h", cyc, exp[684:684], got[684:684]); \
+  else if ((exp[683:683]) !== (got[683:683])) $display("MISMATCH cycle %0d field dir_x_o: expected 'h%0h, got 'h%0h", cyc, exp[683:683], got[683:683]); \
+  else if ((exp[682:682]) !== (got[682:682])) $display("MISMATCH cycle %0d field dir_y_o: expected 'h%0h, got 'h%0h", cyc, exp[682:682], got[682:682]); \
+  else if ((exp[681:681]) !== (got[681:681])) $display("MISMATCH cycle %0d field step_z_o: expected 'h%0h, got 'h%0h", cyc, exp[681:681], got[681:681]); \
+  else if ((exp[680:680]) !== (got[680:680])) $display("MISMATCH cycle %0d field dir_z_o: expected 'h%0h, got 'h%0h", cyc, exp[680:680], got[680:680]); \
+  else if ((exp[679:679]) !== (got[679:679])) $display("MISMATCH cycle %0d field busy_o: expected 'h%0h, got 'h%0h", cyc, exp[679:679], got[679:679]); \
+  else if ((exp[678:678]) !== (got[678:678])) $display("MISMATCH cycle %0d field done_o: expected 'h%0h, got 'h%0h", cyc, exp[678:678], got[678:678]); \
+  else if ((exp[677:677]) !== (got[677:677])) $display("MISMATCH cycle %0d field err_o: expected 'h%0h, got 'h%0h", cyc, exp[677:677], got[677:677]); \
+  else if ((exp[676:676]) !== (got[676:676])) $display("MISMATCH cycle %0d field iter_o: expected 'h%0h, got 'h%0h", cyc, exp[676:676], got[676:676]); \
+  else if ((exp[675:625]) !== (got[675:625])) $display("MISMATCH cycle %0d field u_int_x.jv_q: expected 'h%0h, got 'h%0h", cyc, exp[675:625], got[675:625]); \
+  else if ((exp[624:574]) !== (got[624:574])) $display("MISMATCH cycle %0d field u_int_x.jr_q: expected 'h%0h, got 'h%0h", cyc, exp[624:574], got[624:574]); \
+  else if ((exp[573:523]) !== (got[573:523])) $display("MISMATCH cycle %0d field u_int_x.inc_on_x_q: expected 'h%0h, got 'h%0h", cyc, exp[573:523], got[573:523]); \
+  else if ((exp[522:472]) !== (got[522:472])) $display("MISMATCH cycle %0d field u_int_x.inc_on_y_q: expected 'h%0h, got 'h%0h", cyc, exp[522:472], got[522:472]); \
+  else if ((exp[471:421]) !== (got[471:421])) $display("MISMATCH cycle %0d field u_int_y.jv_q: expected 'h%0h, got 'h%0h", cyc, exp[471:421], got[471:421]); \
+  else if ((exp[420:370]) !== (got[420:370])) $display("MISMATCH cycle %0d field u_int_y.jr_q: expected 'h%0h, got 'h%0h", cyc, exp[420:370], got[420:370]); \
+  else if ((exp[369:319]) !== (got[369:319])) $display("MISMATCH cycle %0d field u_int_y.inc_on_x_q: expected 'h%0h, got 'h%0h", cyc, exp[369:319], got[369:319]); \
+  else if ((exp[318:268]) !== (got[318:268])) $display("MISMATCH cycle %0d field u_int_y.inc_on_y_q: expected 'h%0h, got 'h%0h", cyc, exp[318:268], got[318:268]); \
+  else if ((exp[267:251]) !== (got[267:251])) $display("MISMATCH cycle %0d field u_cnt_x.cnt_q: expected 'h%0h, got 'h%0h", cyc, exp[267:251], got[267:251]); \
+  else if ((exp[250:234]) !== (got[250:234])) $display("MISMATCH cycle %0d field u_cnt_y.cnt_q: expected 'h%0h, got 'h%0h", cyc, exp[250:234], got[250:234]); \
+  else if ((exp[233:183]) !== (got[233:183])) $display("MISMATCH cycle %0d field u_lin_z.jv_q: expected 'h%0h, got 'h%0h", cyc, exp[233:183], got[233:183]); \
+  else if ((exp[182:132]) !== (got[182:132])) $display("MISMATCH cycle %0d field u_lin_z.jr_q: expected 'h%0h, got 'h%0h", cyc, exp[182:132], got[182:132]); \
+  else if ((exp[131:81]) !== (got[131:81])) $display("MISMATCH cycle %0d field u_lin_z.cap_q: expected 'h%0h, got 'h%0h", cyc, exp[131:81], got[131:81]); \
+  else if ((exp[80:64]) !== (got[80:64])) $display("MISMATCH cycle %0d field u_cnt_z.cnt_q: expected 'h%0h, got 'h%0h", cyc, exp[80:64], got[80:64]); \
+  else if ((exp[63:13]) !== (got[63:13])) $display("MISMATCH cycle %0d field cap_q: expected 'h%0h, got 'h%0h", cyc, exp[63:13], got[63:13]); \
+  else if ((exp[12:12]) !== (got[12:12])) $display("MISMATCH cycle %0d field cdir_x_q: expected 'h%0h, got 'h%0h", cyc, exp[12:12], got[12:12]); \
+  else if ((exp[11:11]) !== (got[11:11])) $display("MISMATCH cycle %0d field cdir_y_q: expected 'h%0h, got 'h%0h", cyc, exp[11:11], got[11:11]); \
+  else if ((exp[10:10]) !== (got[10:10])) $display("MISMATCH cycle %0d field cdir_z_q: expected 'h%0h, got 'h%0h", cyc, exp[10:10], got[10:10]); \
+  else if ((exp[9:9]) !== (got[9:9])) $display("MISMATCH cycle %0d field dir_x_q: expected 'h%0h, got 'h%0h", cyc, exp[9:9], got[9:9]); \
+  else if ((exp[8:8]) !== (got[8:8])) $display("MISMATCH cycle %0d field dir_y_q: expected 'h%0h, got 'h%0h", cyc, exp[8:8], got[8:8]); \
+  else if ((exp[7:7]) !== (got[7:7])) $display("MISMATCH cycle %0d field dir_z_q: expected 'h%0h, got 'h%0h", cyc, exp[7:7], got[7:7]); \
+  else if ((exp[6:6]) !== (got[6:6])) $display("MISMATCH cycle %0d field step_x_q: expected 'h%0h, got 'h%0h", cyc, exp[6:6], got[6:6]); \
+  else if ((exp[5:5]) !== (got[5:5])) $display("MISMATCH cycle %0d field step_y_q: expected 'h%0h, got 'h%0h", cyc, exp[5:5], got[5:5]); \
+  else if ((exp[4:4]) !== (got[4:4])) $display("MISMATCH cycle %0d field step_z_q: expected 'h%0h, got 'h%0h", cyc, exp[4:4], got[4:4]); \
   else if ((exp[3:3]) !== (got[3:3])) $display("MISMATCH cycle %0d field u_ctrl.state_q: expected 'h%0h, got 'h%0h", cyc, exp[3:3], got[3:3]); \
   else if ((exp[2:2]) !== (got[2:2])) $display("MISMATCH cycle %0d field u_ctrl.done_q: expected 'h%0h, got 'h%0h", cyc, exp[2:2], got[2:2]); \
   else if ((exp[1:1]) !== (got[1:1])) $display("MISMATCH cycle %0d field u_ctrl.err_q: expected 'h%0h, got 'h%0h", cyc, exp[1:1], got[1:1]); \

@@ -19,7 +19,7 @@ module dda_vec_tb;
   reg                          ce = 1'b0;
   reg                          cmd_valid = 1'b0;
   reg  [`DDA_CMD_WIDTH-1:0]    cmd = {`DDA_CMD_WIDTH{1'b0}};
-  wire                         cmd_ready, step_x, step_y, dir_x, dir_y, busy, done, err, iter;
+  wire                         cmd_ready, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, done, err, iter;
 
   dda_core dut (
     .clk_i       (clk),
@@ -32,6 +32,8 @@ module dda_vec_tb;
     .step_y_o    (step_y),
     .dir_x_o     (dir_x),
     .dir_y_o     (dir_y),
+    .step_z_o    (step_z),
+    .dir_z_o     (dir_z),
     .busy_o      (busy),
     .done_o      (done),
     .err_o       (err),

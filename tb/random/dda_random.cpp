@@ -137,8 +137,57 @@ std::optional<Plan> RandomArcs::next_program() {
   }
 }
 
+std::optional<Plan> RandomArcs::next_spatial() {
+  const auto uni = [&](std::uint64_t n) { return rng_() % n; };
+  const auto span = [&](std::int64_t m) { return std::int64_t(uni(std::uint64_t(2 * m + 1))) - m; };
+  const Preload pre = uni(2) ? Preload::Half : Preload::Zero;
+  const Point from{span(1000), span(1000), span(1000)};
+  const unsigned what = unsigned(uni(4));
+  try {
+    if (what <= 1) {  // a 3-D line (what 0) or a move of the third axis alone (what 1)
+      drawn_ = Drawn::Line;
+      const std::int64_t m = 1 + std::int64_t(uni(std::uint64_t(max_axis_)));
+      Point to{from.x, from.y, from.z + span(m)};
+      if (what == 0) to.x += span(m), to.y += span(m);
+      if (to.z == from.z) to.z += 1;
+      drawn_options_ = "--line --from " + std::to_string(from.x) + "," + std::to_string(from.y) + "," +
+                       std::to_string(from.z) + " --to " + std::to_string(to.x) + "," + std::to_string(to.y) + "," +
+                       std::to_string(to.z) + " --preload " + to_string(pre);
+      return plan_line(from, to, pre);
+    }
+    Plan arc;
+    for (;;) {
+      std::optional<Plan> drawn = next_program();
+      if (drawn && !drawn->is_line()) {
+        arc = std::move(*drawn);
+        break;
+      }
+    }
+    // A rise of either sign up to the path's iterations (about twice its steps): halved
+    // until the third axis can follow it.
+    std::uint64_t steps = 0;
+    for (const Piece& pc : arc.pieces) steps += std::uint64_t(pc.cmd.cnt_x + pc.cmd.cnt_y);
+    std::int64_t rise = span(std::int64_t(std::max<std::uint64_t>(steps, 1)));
+    for (;;) {
+      try {
+        lift(arc, from.z, from.z + rise, arc.preload());
+        break;
+      } catch (const InputError&) {
+        rise /= 2;
+      }
+    }
+    drawn_options_ += " (a helix rising " + std::to_string(rise) + " from z " + std::to_string(from.z) + ")";
+    return arc;
+  } catch (const InputError& e) {
+    ++rejected_;
+    last_refusal_ = e.what();
+    return std::nullopt;
+  }
+}
+
 std::optional<Plan> RandomArcs::next() {
   if (kind_ == ArcKind::Program) return next_program();
+  if (kind_ == ArcKind::Spatial) return next_spatial();
   // Floating point only shapes the draw (axis lengths, angles); what is drawn is an exact
   // integer configuration and describe() prints it, so a failure is reproducible from its
   // printed options even where another libm would round a draw differently.

@@ -29,6 +29,9 @@ enum class ArcKind {
   Program,  // as part programs give them: lattice start and end points
             // rounded from random points of the curve, full turns by point and by angle,
             // aspect ratios up to 1000, half of the ellipses rotated, and lines
+  Spatial,  // the third axis: 3-D lines (each axis in turn the longest), moves of the
+            // third axis alone (plunges), and helices (Program's arcs with a random rise
+            // of either sign, up to one step per iteration)
 };
 
 // The seed of case `index` of a run seeded `seed`: every case draws from its own stream,
@@ -70,6 +73,7 @@ class RandomArcs {
   bool drawn_thin_ = false;
   std::string drawn_options_;
   std::optional<Plan> next_program();
+  std::optional<Plan> next_spatial();
 };
 
 }  // namespace dda
