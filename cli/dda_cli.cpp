@@ -132,6 +132,7 @@ struct FeedCli {
 // Every subcommand's options, as the command line fills them in.
 struct Cli {
   ArcOptions trace, path, stats, plot;
+  std::string plot_view = "xy";
   VectorsCli vectors;
   FeedCli feed;
   GenParamsCli gen_params;
@@ -168,7 +169,11 @@ void set_up_feed(CLI::App* sub, Cli& c) {
   sub->add_option("--label", c.feed.label, "the arc's name in the --summary row (default: empty)");
 }
 
-void set_up_plot(CLI::App* sub, Cli& c) { add_arc_options(sub, c.plot, "svg", "svg"); }
+void set_up_plot(CLI::App* sub, Cli& c) {
+  add_arc_options(sub, c.plot, "svg", "svg");
+  sub->add_option("--view", c.plot_view,
+                  "xy (default: the plane of the two ellipse axes), xz or yz: the third axis against x or y");
+}
 
 void set_up_gen_params(CLI::App* sub, Cli& c) { add_gen_params_options(sub, c.gen_params); }
 
@@ -295,13 +300,14 @@ void run_plot(const Cli& c, int argc, char** argv) {
   if (!ext.empty() && ext != ".svg") {
     throw InputError("out = '" + pl.out + "' is invalid: plot writes SVG (a file name ending in .svg)");
   }
+  const View view = parse_enum<View>("view", c.plot_view, {{"xy", View::XY}, {"xz", View::XZ}, {"yz", View::YZ}});
   const std::string esc = plot_title(argc, argv);
   run_arc_command(pl, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
     if (t.program) {
       return std::make_unique<program::ProgramSvgSink>(os, t.program->lattice,
-                                                       t.program->read.start.value_or(program::Point2{}), esc);
+                                                       t.program->read.start.value_or(program::Point2{}), esc, view);
     }
-    return std::make_unique<SvgSink>(os, *t.plan, esc);
+    return std::make_unique<SvgSink>(os, *t.plan, esc, view);
   });
 }
 

@@ -8,7 +8,10 @@ For each program of a corpus, run rs274 (scripts/rs274-setup.sh puts it in a cac
   agree               both accept, the same motion blocks: kind (rapid, line, arc and its
                       direction), plane, turns, every end (X, Y, Z) and every arc centre
                       within half a step plus rs274's print precision (4 decimals of the
-                      unit in force, of each offset and of the XY rotation)
+                      unit in force, of each offset and of the XY rotation); the column
+                      "agree and run" counts those the planner and the golden model then
+                      run too (`dda stats --program FILE`, exit 0: every block planned,
+                      the third axis included, and on its rounded end)
   refused by both     both refuse (at any line)
   no motion           otherwise, neither prints a motion (rs274: no STRAIGHT_TRAVERSE,
                       STRAIGHT_FEED, ARC_FEED, STRAIGHT_PROBE, RIGID_TAP or NURBS_FEED;
@@ -123,6 +126,25 @@ def run_ours(args, program, options):
         return {"accepted": False, "message": m.group(4), "where": "%s:%s" % (m.group(2), m.group(3)),
                 "blocks": blocks}
     raise RunError("our reader exited with status %d: %s" % (p.returncode, err[:300] or "(nothing on stderr)"))
+
+
+def run_stats(args, program, options):
+    """(ran, message): `dda stats` on the golden model, the planner and the run."""
+    cmd = [args.dda, "stats", "--program", os.path.abspath(program), "--format", "json"]
+    for key, value in options.items():
+        cmd += [key] + ([value] if value is not None else [])
+    if args.subroutine_path:
+        cmd += ["--subroutine-path", ":".join(os.path.abspath(d) for d in args.subroutine_path.split(":"))]
+    try:
+        p = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(program)), stdin=subprocess.DEVNULL,
+                           capture_output=True, timeout=args.timeout)
+    except subprocess.TimeoutExpired:
+        return False, "dda stats timed out after %g s" % args.timeout
+    if p.returncode != 0:
+        return False, "dda stats: " + (p.stderr.decode("utf-8", "replace").strip()[:300] or "status %d" % p.returncode)
+    if '"on_ends": true' not in p.stdout.decode("utf-8", "replace"):
+        return False, "dda stats: not every block on its rounded end"
+    return True, ""
 
 
 def feature_key(message):
@@ -274,15 +296,20 @@ def compare_one(args, program, ncfiles):
     except RunError as e:
         return {"error": str(e)}
     cls, detail, key = classify(theirs, ours, args.step / 2)
-    return {"class": cls, "detail": detail, "feature": key, "theirs": theirs}
+    result = {"class": cls, "detail": detail, "feature": key, "theirs": theirs}
+    if cls == "agree":
+        result["ran"], why = run_stats(args, program, options)
+        if why:
+            result["detail"] += "; not run: " + why
+    return result
 
 
 # ---------------------------------------------------------------------------- report
 
 
 def table(results, rows):
-    head = ("| source | programs | no motion | compared | agree | refused by both | refused by feature | disagree |\n"
-            "|---|---|---|---|---|---|---|---|")
+    head = ("| source | programs | no motion | compared | agree | agree and run | refused by both | refused by feature "
+            "| disagree |\n|---|---|---|---|---|---|---|---|---|")
     lines = [head]
     tally = {}
 
@@ -290,7 +317,8 @@ def table(results, rows):
         n = {c: sum(1 for r in rs if r.get("class") == c) for c in CLASSES}
         errors = sum(1 for r in rs if "error" in r)
         compared = len(rs) - n["no motion"] - errors
-        cells = [name, len(rs), n["no motion"], compared] + [n[c] for c in CLASSES[:4]]
+        ran = sum(1 for r in rs if r.get("ran"))
+        cells = [name, len(rs), n["no motion"], compared, n["agree"], ran] + [n[c] for c in CLASSES[1:4]]
         text = "| " + " | ".join(str(c) for c in cells) + " |"
         return text + (" (%d errors)" % errors if errors else "")
 

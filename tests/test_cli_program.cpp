@@ -176,3 +176,38 @@ TEST_CASE("cli program: a program longer than a core vector set holds is refused
   const Result b = run_dda(s, "vectors --bus --program " + prog.string() + " --out-dir " + (s.dir / "bus").string());
   CHECK(b.status == 0);
 }
+
+TEST_CASE("cli program: the third axis in the reports, and dda plot's views", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "p.ngc";
+  write_file(prog, "G21 G17 F100\nG1 X1 Y0\nG1 Z-0.5\nG2 X1 Y0 I-1 J0 Z-1\nG0 Z1\nM2\n");
+  // Every report has the third axis' columns, the same on the three engines.
+  const Result path = run_dda(s, "path --program " + prog.string());
+  REQUIRE(path.status == 0);
+  CHECK(path.out.rfind("point,x,y,z\n0,0,0,0\n", 0) == 0);
+  CHECK(path.out.size() > 10);
+  CHECK(path.out.substr(path.out.rfind('\n', path.out.size() - 2) + 1).find(",1000,0,1000\n") != std::string::npos);
+  for (const std::string engine : {"systemc", "rtl"}) {
+    CHECK(run_dda(s, "path --engine " + engine + " --program " + prog.string()).out == path.out);
+  }
+  const Result trace = run_dda(s, "trace --program " + prog.string());
+  CHECK(trace.out.rfind("iter,seg,jvx,jrx,dx,rem_x,jvy,jry,dy,rem_y,dir_x,dir_y,x,y,jvz,jrz,dz,rem_z,dir_z,z\n", 0) ==
+        0);
+  const Result stats = run_dda(s, "stats --format csv --program " + prog.string());
+  CHECK(stats.out.find(",end_w_mm,end_z\n") != std::string::npos);
+  CHECK(stats.out.find(",-1,-1000\n") != std::string::npos);  // the helix's end: Z in mm and in steps
+  // A program of the plane alone: no third axis' columns.
+  const fs::path flat = s.dir / "flat.ngc";
+  write_file(flat, "G21 G17 F100\nG1 X1 Y0\nG2 X1 Y0 I-1 J0\nM2\n");
+  CHECK(run_dda(s, "path --program " + flat.string()).out.rfind("point,x,y\n", 0) == 0);
+  // plot --view: the third axis against x or y.
+  const fs::path svg = s.dir / "xz.svg";
+  CHECK(run_dda(s, "plot --view xz --program " + prog.string() + " --out " + svg.string()).status == 0);
+  std::ifstream in(svg);
+  const std::string pic((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(pic.find(">x (steps)</text>") != std::string::npos);
+  CHECK(pic.find(">z (steps)</text>") != std::string::npos);
+  const Result bad = run_dda(s, "plot --view zz --program " + prog.string() + " --out " + svg.string());
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("view = 'zz' is invalid") != std::string::npos);
+}

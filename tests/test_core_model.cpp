@@ -58,11 +58,11 @@ bool same(const Iteration& a, const Iteration& b) {
 
 }  // namespace
 
-TEST_CASE("core model: 300 random arcs make the golden runner's iterations, back to back", "[core_model]") {
+TEST_CASE("core model: 200 random arcs make the golden runner's iterations, back to back", "[core_model]") {
   const std::uint64_t seed = test_seed(41);
   RandomArcs quarter(seed, 4096, 8), whole(seed + 1, 4096, 8, ArcKind::Whole);
   RandomArcs spatial(seed + 2, 1024, 8, ArcKind::Spatial);  // lines, plunges, helices
-  for (int n = 0; n < 300;) {
+  for (int n = 0; n < 200;) {
     const auto plan = (n % 3 == 2 ? spatial : n % 2 ? whole : quarter).next();
     if (!plan) continue;
     ++n;

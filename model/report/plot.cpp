@@ -74,13 +74,16 @@ void PathSample::take(std::vector<Point>& pts, std::vector<double>& dist) {
   kept_.clear();
 }
 
-SvgSink::SvgSink(std::ostream& os, const Plan& plan, std::string title)
-    : os_(os), plan_(plan), title_(std::move(title)) {
-  sample_.add(plan.from, plan_distance(plan, double(plan.from.x), double(plan.from.y)));
+SvgSink::SvgSink(std::ostream& os, const Plan& plan, std::string title, View view)
+    : os_(os), plan_(plan), title_(std::move(title)), view_(view) {
+  sample_.add(project(plan.from, view), plan_distance(plan, double(plan.from.x), double(plan.from.y)));
 }
 
 void SvgSink::record(const Iteration& it) {
-  if (it.step_x || it.step_y) sample_.add(it.pos, plan_distance(plan_, double(it.pos.x), double(it.pos.y)));
+  // (The plane's view takes the plane's points; the others every step of any axis.)
+  if (it.step_x || it.step_y || (view_ != View::XY && it.step_z)) {
+    sample_.add(project(it.pos, view_), plan_distance(plan_, double(it.pos.x), double(it.pos.y)));
+  }
 }
 
 void SvgSink::finish() {
@@ -90,13 +93,20 @@ void SvgSink::finish() {
   sample_.take(pic.pts, pic.dist);
   pic.title = title_;
   pic.curve = "the ellipse";
-  // The ideal curve: the whole ellipse, sampled finely (a line: the line between its ends).
+  pic.projection = view_;
+  // The ideal curve: the whole ellipse, sampled finely (a line: the line between its
+  // ends); in the other views projected, the third axis along it from its start to its end.
   if (plan.is_line()) {
-    pic.ideal.push_back({{double(plan.from.x), double(plan.from.y)}, {double(plan.to.x), double(plan.to.y)}});
+    const Point a = project(plan.from, view_), b = project(plan.to, view_);
+    pic.ideal.push_back({{double(a.x), double(a.y)}, {double(b.x), double(b.y)}});
   } else {
     const ArcSpec& spec = plan.arc().spec;
     const EllipseDrawing e{center_x(spec), center_y(spec), a_steps(spec), b_steps(spec), spec.angle};
-    pic.ideal.push_back(ellipse_points(e, 0, 2 * M_PI, 4096));
+    std::vector<std::pair<double, double>> pts = ellipse_points(e, 0, 2 * M_PI, 4096);
+    if (view_ != View::XY) {
+      for (auto& [x, y] : pts) x = view_ == View::XZ ? x : y, y = double(plan.from.z);
+    }
+    pic.ideal.push_back(std::move(pts));
   }
   write_svg(os_, pic);
 }
@@ -181,7 +191,8 @@ void write_head(std::ostream& os, const Frame& f, const std::string& title) {
 }
 
 // The grid with its tick labels, the plot area's border and the axis labels.
-void write_axes(std::ostream& os, const Frame& f) {
+void write_axes(std::ostream& os, const Frame& f, View view) {
+  const auto [h, v] = view_axes(view);
   const double L = Frame::L, T = Frame::T, W = f.W, H = f.H;
   const double step = tick_step(std::max(f.x1 - f.x0, f.y1 - f.y0), 8);
   const auto tick = [&](double v) { return std::fabs(v) < step * 1e-9 ? 0.0 : v; };  // no "-0"
@@ -199,12 +210,12 @@ void write_axes(std::ostream& os, const Frame& f) {
   fmt::print(
       os, "</g>\n<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n",
       L, T, W, H);
-  fmt::print(os, "<text class=\"axis-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">x (steps)</text>\n",
-             L + W / 2, T + H + 44);
+  fmt::print(os, "<text class=\"axis-label\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{} (steps)</text>\n",
+             L + W / 2, T + H + 44, h);
   fmt::print(os,
              "<text class=\"axis-label\" x=\"24\" y=\"{:.1f}\" text-anchor=\"middle\" "
-             "transform=\"rotate(-90 24 {:.1f})\">y (steps)</text>\n",
-             T + H / 2, T + H / 2);
+             "transform=\"rotate(-90 24 {:.1f})\">{} (steps)</text>\n",
+             T + H / 2, T + H / 2, v);
 }
 
 // The ideal geometry, clipped to the view.
@@ -320,7 +331,7 @@ void write_svg(std::ostream& os, const SvgPicture& pic) {
   const Frame f = frame_of(pic);
   const double dscale = std::max(1.0, dist[imax]);  // colour ramp 0..max(1, worst)
   write_head(os, f, pic.title);
-  write_axes(os, f);
+  write_axes(os, f, pic.projection);
   write_ideal(os, f, pic.ideal);
   // The path and its point markers (at most max_markers: every k-th point beyond that,
   // always the worst one), the second path's drawn between them.

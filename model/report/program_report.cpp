@@ -252,32 +252,45 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
   }
 }
 
-ProgramSvgSink::ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, std::string title)
+ProgramSvgSink::ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, std::string title,
+                               View view)
     : os_(os),
       lattice_(lattice),
       title_(std::move(title)),
+      view_(view),
       window_(lattice.step),
       start_(on_lattice(start, lattice.step)) {}
 
 void ProgramSvgSink::block(const BlockPlan& b) {
-  if (first_) sample_.add(start_, block_distance(b, lattice_.step, double(start_.x), double(start_.y)));
+  if (first_) {
+    sample_.add(project(start_, view_), block_distance(b, lattice_.step, double(start_.x), double(start_.y)));
+  }
   first_ = false;
   window_.push(b);
   geometry(b);
 }
 
 void ProgramSvgSink::record(const Iteration& it) {
-  if (!it.step_x && !it.step_y) return;
+  if (!it.step_x && !it.step_y && (view_ == View::XY || !it.step_z)) return;
   const BlockWindow::Entry& e = window_.of_piece(it.piece, [](const BlockWindow::Entry&) {});
   const bool end = it.pos == e.block.to;
-  sample_.add(it.pos, e.distance(double(it.pos.x), double(it.pos.y)), end);
+  sample_.add(project(it.pos, view_), e.distance(double(it.pos.x), double(it.pos.y)), end);
 }
 
 // The block's programmed geometry, joined to the polyline before it where it goes on
 // from that one's end. Beyond the budget every ideal_stride_-th vertex stays, and the
 // last vertex so far (provisional: replaced by the next one that joins).
 void ProgramSvgSink::geometry(const BlockPlan& b) {
-  const auto pts = block_geometry(b, lattice_.step);
+  auto pts = block_geometry(b, lattice_.step);
+  if (view_ != View::XY) {  // the normal axis along the block, from its start to its end
+    const double w0 = double(b.move.w) / double(lattice_.step), w1 = double(b.move.w_to) / double(lattice_.step);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      auto& [u, v] = pts[k];
+      const double t = pts.size() > 1 ? double(k) / double(pts.size() - 1) : 1.0;
+      u = view_ == View::XZ ? u : v;
+      v = w0 + (w1 - w0) * t;
+    }
+  }
   if (ideal_.empty() || ideal_.back().back() != pts.front()) {
     ideal_.emplace_back(1, pts.front());
     ++ideal_vertices_;
@@ -313,6 +326,7 @@ void ProgramSvgSink::finish() {
   SvgPicture pic;
   pic.title = title_;
   pic.curve = "the program";
+  pic.projection = view_;
   if (sample_.stride() > 1) pic.sampled_from = sample_.seen(), pic.sample_stride = sample_.stride();
   sample_.take(pic.pts, pic.dist);
   pic.ideal = std::move(ideal_);

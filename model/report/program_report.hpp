@@ -105,7 +105,10 @@ class BlockStatsSink : public RunSink {
 // through PathSample, the geometry's vertices likewise.
 class ProgramSvgSink : public RunSink {
  public:
-  ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, std::string title);
+  // view: the projection (the third axis against x or y: --view xz|yz); the markers are
+  // coloured by their distance in the plane from the programmed geometry in every view.
+  ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, Point2 start, std::string title,
+                 View view = View::XY);
   void block(const BlockPlan& b) override;
   void record(const Iteration& it) override;
   void finish() override;
@@ -117,6 +120,7 @@ class ProgramSvgSink : public RunSink {
   std::ostream& os_;
   LatticeOptions lattice_;
   std::string title_;
+  View view_;
   BlockWindow window_;
   PathSample sample_;
   bool first_ = true;

@@ -149,9 +149,23 @@ class PathSample {
 };
 
 // The plot of one arc's or line's run (write_svg at finish()).
+// The projection a picture draws (dda plot --view): the plane of the two ellipse axes,
+// or the third axis against one of them.
+enum class View { XY, XZ, YZ };
+// A point in a view: (x, y), (x, z) or (y, z) as the picture's (x, y).
+inline Point project(Point p, View v) {
+  return v == View::XY ? Point{p.x, p.y} : v == View::XZ ? Point{p.x, p.z} : Point{p.y, p.z};
+}
+// The view's axis names ("x", "y"; "x", "z"; "y", "z").
+inline std::pair<const char*, const char*> view_axes(View v) {
+  return v == View::XY ? std::pair{"x", "y"} : v == View::XZ ? std::pair{"x", "z"} : std::pair{"y", "z"};
+}
+
 class SvgSink : public RunSink {
  public:
-  SvgSink(std::ostream& os, const Plan& plan, std::string title);
+  // The markers are coloured by their distance in the plane (x, y) from the ellipse in
+  // every view.
+  SvgSink(std::ostream& os, const Plan& plan, std::string title, View view = View::XY);
   void record(const Iteration& it) override;
   void finish() override;
   bool steps_only() const override { return true; }
@@ -160,6 +174,7 @@ class SvgSink : public RunSink {
   std::ostream& os_;
   const Plan& plan_;
   std::string title_;
+  View view_;
   PathSample sample_;
 };
 
@@ -182,6 +197,7 @@ struct SvgPicture {
   std::vector<Point> other;
   std::string other_label;
   std::vector<double> view;
+  View projection = View::XY;      // names the axes
   std::size_t max_markers = 4000;  // point markers drawn at most (every k-th beyond)
   // The path's points before sampling (PathSample): 0 when pts holds them all.
   std::uint64_t sampled_from = 0;
