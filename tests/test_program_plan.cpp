@@ -313,6 +313,16 @@ TEST_CASE("program plan: the axis normal to the plane runs on the third axis, an
   CHECK(refusal("G1 X1 Z0\nG1 X2").empty());  // a Z word that leaves Z where it is
 }
 
+TEST_CASE("program plan: an arc end off its circle within LinuxCNC's tolerance runs to that end", "[program]") {
+  ReadOptions lcnc;
+  lcnc.dialect = Dialect::LinuxCnc;
+  // 0.028 mm (28 steps) off a 5 mm radius: LinuxCNC accepts up to 0.0283 mm.
+  const ProgramPlan pp =
+      plan_program(read("F1\nG2 X10.028 Y0 I5 J0\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+  REQUIRE(pp.blocks.size() == 1);
+  CHECK(run_records(pp.plan).back().pos == Point{10028, 0});
+}
+
 TEST_CASE("program plan: the block targets", "[program]") {
   const ProgramPlan pp = plan_text(
       "G01 X1 Y0.0005\nG02 X0 Y-1 I-1 J0\nG6.3 X-3 Y0 A3 B1 I0 J1\nG6.3 X3 Y0 A3 B0.5 I3 J0\nG6.2 X-3 Y0 A3 B2 Q1000 "

@@ -52,9 +52,10 @@ ArcSpec arc_spec(const Move& mv, Length step, Preload preload, Point from, Point
   s.preload = preload;
   s.from = from;
   s.to = to;
-  // The ends may lie off the curve by the reader's tolerance plus the rounding to the
+  // The ends may lie off the curve by the reader's tolerance (or as far as the reader
+  // found this block's end, within its dialect's tolerance) plus the rounding to the
   // lattice (at most half a step on each axis) and one step of margin.
-  s.tolerance = 1.0 + double(kEndTolerance) / double(step);
+  s.tolerance = 1.0 + double(std::max(kEndTolerance, mv.end_off)) / double(step);
   // The width: 4 bits above the smallest valid (where the targets were measured; the
   // fixed-point capacity is 2^kRotCapBits whatever the size, so the exact datapath's
   // capacity limit of default_bits() does not apply), fewer if the coefficients'
