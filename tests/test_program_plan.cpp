@@ -317,8 +317,7 @@ TEST_CASE("program plan: an arc end off its circle within LinuxCNC's tolerance r
   ReadOptions lcnc;
   lcnc.dialect = Dialect::LinuxCnc;
   // 0.028 mm (28 steps) off a 5 mm radius: LinuxCNC accepts up to 0.0283 mm.
-  const ProgramPlan pp =
-      plan_program(read("F1\nG2 X10.028 Y0 I5 J0\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
+  const ProgramPlan pp = plan_program(read("F1\nG2 X10.028 Y0 I5 J0\nM2\n", "p.nc", lcnc), LatticeOptions{}, "p.nc");
   REQUIRE(pp.blocks.size() == 1);
   CHECK(run_records(pp.plan).back().pos == Point{10028, 0});
 }

@@ -95,6 +95,11 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
 void MotionDriver::queue(const Command& c, std::uint32_t feed) {
+  // The block passes the core's third axis to no pin yet: refused, not dropped.
+  if (c.cnt_z != 0) {
+    throw InputError("the motion block drives X and Y only: a command that moves the third axis (" +
+                     std::to_string(c.cnt_z) + " steps) needs its step/dir stage, which the block does not have yet");
+  }
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
   const std::vector<std::uint32_t> w = entry_words(c, feed);
   std::vector<std::size_t> order(w.size());
