@@ -96,11 +96,14 @@ inline StepOut next_state(const Command& cmd, RegState& r) {
   r.cnt_y -= o.step_y ? 1 : 0;
   r.jv_x += (o.step_x ? cmd.inc_x_on_x : 0) + (o.step_y ? cmd.inc_x_on_y : 0);
   r.jv_y += (o.step_x ? cmd.inc_y_on_x : 0) + (o.step_y ? cmd.inc_y_on_y : 0);
-  o.active_z = r.cnt_z != 0;
-  o.sum_z = o.active_z ? r.jr_z + cmd.jv_z : r.jr_z;
-  o.step_z = o.active_z && o.sum_z >= cmd.cap_z;
-  r.jr_z = o.step_z ? o.sum_z - cmd.cap_z : o.sum_z;
-  r.cnt_z -= o.step_z ? 1 : 0;
+  o.sum_z = r.jr_z;
+  if (r.cnt_z != 0) {  // (a plane's command skips the third axis in one predictable branch)
+    o.active_z = true;
+    o.sum_z += cmd.jv_z;
+    o.step_z = o.sum_z >= cmd.cap_z;
+    r.jr_z = o.step_z ? o.sum_z - cmd.cap_z : o.sum_z;
+    r.cnt_z -= o.step_z ? 1 : 0;
+  }
   return o;
 }
 

@@ -146,17 +146,20 @@ void run_program(std::istream& in, const ProgramRun& run, Engine& engine, RunSin
 bool moves_third_axis(const std::string& path, const ProgramRun& run) {
   if (run.read.machine == program::Machine::Lathe) return false;  // two axes: the reader refuses Y
   if (path == "-") return true;
-  bool moves = false;
+  struct Found {};  // the first such move ends the reading
   try {
     const auto in = program::open_program(path);
     program::read_stream(*in, run.file, run.read, [&](const program::Move& mv) {
-      moves =
-          moves || program::to_steps(mv.w, run.lattice.step) != 0 || program::to_steps(mv.w_to, run.lattice.step) != 0;
+      if (program::to_steps(mv.w, run.lattice.step) != 0 || program::to_steps(mv.w_to, run.lattice.step) != 0) {
+        throw Found{};
+      }
     });
+  } catch (const Found&) {
+    return true;
   } catch (const InputError&) {
-    return moves;
+    return false;
   }
-  return moves;
+  return false;
 }
 
 void PieceWindow::push(const Piece& pc) { pieces_.push_back(pc); }

@@ -74,10 +74,11 @@ struct ProgramRun {
   bool third_axis = false;
 };
 // Does the program at `path` move the axis normal to its plane (or leave it off 0)? A
-// first reading of the program, its moves counted and dropped (memory bounded as the
-// run's); false on a lathe (two axes), true for a mill's program from standard input,
-// which cannot be read twice, and, when the reader refuses the program, what it read
-// before (the run then reports the refusal where it occurs).
+// first reading of the program up to its first such move, its moves dropped (memory
+// bounded as the run's; a program of the plane alone is read twice); false on a lathe
+// (two axes), true for a mill's program from standard input, which cannot be read
+// twice, and false when the reader refuses the program before such a move (the run then
+// reports the refusal where it occurs).
 bool moves_third_axis(const std::string& path, const ProgramRun& run);
 // Reads `in` (program::open_program), plans each block as it leaves the planner's
 // window and runs its pieces. Throws ProgramError naming the block at fault; the
