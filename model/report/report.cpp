@@ -176,47 +176,51 @@ void TraceSink::header(const RegState& init) {
             : z_   ? "-----|------|--------|--------|----|-------|--------|\n"
                    : "-----|------|--------|--------|\n");
   } else {
-    // JSON: the full records, exact scaled integers.
-    nlohmann::ordered_json j;
-    if (p) {
-      // A line has the arc's fields too (one shape): a = b = bits = 0, counter-clockwise,
-      // centred on its start.
-      const ArcSpec spec = p->is_arc() ? p->arc().spec : ArcSpec{};
-      if (p->is_line()) j["line"] = true;
-      j["a"] = spec.a;
-      j["b"] = spec.b;
-      j["bits"] = spec.bits;
-      j["preload"] = to_string(p->preload());
-      j["dir"] = to_string(spec.dir);
-      const Point c = p->is_arc() ? spec.center : p->from;
-      j["center"] = {c.x, c.y};
-      j["from"] = {p->from.x, p->from.y};
-      j["to"] = {p->to.x, p->to.y};
-      if (z_) j["from"].push_back(p->from.z), j["to"].push_back(p->to.z);
-      j["scale"] = value_scale(*p);
-      j["cap"] = p->cmd().cap;
-      j["iteration_bound"] = p->iteration_bound;
-      auto& pieces = j["segments"] = nlohmann::ordered_json::array();
-      for (const auto& sg : p->pieces) pieces.push_back(command_json(sg, z_));
-    } else {
-      j["program"] = true;
-      j["preload"] = to_string(preload_);
-      j["from"] = {from_.x, from_.y};
-      if (z_) j["from"].push_back(from_.z);
-    }
-    nlohmann::ordered_json in;
-    in["jv_x"] = init.jv_x;
-    in["jv_y"] = init.jv_y;
-    in["jr_x"] = init.jr_x;
-    in["jr_y"] = init.jr_y;
-    in["cnt_x"] = init.cnt_x;
-    in["cnt_y"] = init.cnt_y;
-    if (z_) in["jr_z"] = init.jr_z, in["cnt_z"] = init.cnt_z;
-    j["initial"] = std::move(in);
-    os_ << json_stream::open_object(j) << ",\n \"iterations\": [";
+    json_header(init);  // JSON: the full records, exact scaled integers
     return;
   }
   record(row0);  // row 0: the registers as loaded
+}
+
+void TraceSink::json_header(const RegState& init) {
+  const Plan* p = plan_;
+  nlohmann::ordered_json j;
+  if (p) {
+    // A line has the arc's fields too (one shape): a = b = bits = 0, counter-clockwise,
+    // centred on its start.
+    const ArcSpec spec = p->is_arc() ? p->arc().spec : ArcSpec{};
+    if (p->is_line()) j["line"] = true;
+    j["a"] = spec.a;
+    j["b"] = spec.b;
+    j["bits"] = spec.bits;
+    j["preload"] = to_string(p->preload());
+    j["dir"] = to_string(spec.dir);
+    const Point c = p->is_arc() ? spec.center : p->from;
+    j["center"] = {c.x, c.y};
+    j["from"] = {p->from.x, p->from.y};
+    j["to"] = {p->to.x, p->to.y};
+    if (z_) j["from"].push_back(p->from.z), j["to"].push_back(p->to.z);
+    j["scale"] = value_scale(*p);
+    j["cap"] = p->cmd().cap;
+    j["iteration_bound"] = p->iteration_bound;
+    auto& pieces = j["segments"] = nlohmann::ordered_json::array();
+    for (const auto& sg : p->pieces) pieces.push_back(command_json(sg, z_));
+  } else {
+    j["program"] = true;
+    j["preload"] = to_string(preload_);
+    j["from"] = {from_.x, from_.y};
+    if (z_) j["from"].push_back(from_.z);
+  }
+  nlohmann::ordered_json in;
+  in["jv_x"] = init.jv_x;
+  in["jv_y"] = init.jv_y;
+  in["jr_x"] = init.jr_x;
+  in["jr_y"] = init.jr_y;
+  in["cnt_x"] = init.cnt_x;
+  in["cnt_y"] = init.cnt_y;
+  if (z_) in["jr_z"] = init.jr_z, in["cnt_z"] = init.cnt_z;
+  j["initial"] = std::move(in);
+  os_ << json_stream::open_object(j) << ",\n \"iterations\": [";
 }
 
 void TraceSink::json_record(const Iteration& it, const Piece& pc) {

@@ -67,6 +67,7 @@ class TraceSink : public RunSink {
 
  private:
   void header(const RegState& r);
+  void json_header(const RegState& init);
   void json_record(const Iteration& it, const Piece& pc);
   std::ostream& os_;
   const Plan* plan_ = nullptr;  // null for a program
