@@ -38,10 +38,13 @@ std::vector<Field> bus_expect_fields() {
           {"step_y_o", 1, "Y step pulse", "step_y"},
           {"dir_x_o", 1, "X direction", "dir_x"},
           {"dir_y_o", 1, "Y direction", "dir_y"},
+          {"step_z_o", 1, "Z step pulse", "step_z"},
+          {"dir_z_o", 1, "Z direction", "dir_z"},
           {"busy_o", 1, "the core runs, or a step is on its way to the pins or a pulse is out", "busy"},
           {"irq_o", 1, "interrupt", "irq"},
           {"pos_x_q", 32, "X position register", "dut.pos_x_q"},
           {"pos_y_q", 32, "Y position register", "dut.pos_y_q"},
+          {"pos_z_q", 32, "Z position register", "dut.pos_z_q"},
           {"level_q", motion::kLevelWidth, "queue level register", "dut.level_q"},
           {"done_count_q", 32, "done counter register", "dut.done_count_q"}};
 }
@@ -75,13 +78,15 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
                    "with --bus: abort N cycles after the last commit (default: none, the queue drains)")
       ->check(CLI::Range(1, 100000000));
   vectors->add_option("--timing", c.timing,
-                      "with --bus: STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD in clock cycles, both axes (default 0,0,0,0)");
+                      "with --bus: STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD in clock cycles, every axis (default 0,0,0,0)");
   vectors->add_option("--timing-x", c.timing_x, "with --bus: X's timings (as --timing)");
   vectors->add_option("--timing-y", c.timing_y, "with --bus: Y's timings (as --timing)");
+  vectors->add_option("--timing-z", c.timing_z, "with --bus: Z's timings (as --timing)");
   vectors
       ->add_option("--polarity", c.polarity,
-                   "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8; default 0)")
-      ->check(CLI::Range(0, 15));
+                   "with --bus: POLARITY bits (step_x 1, dir_x 2, step_y 4, dir_y 8, step_z 16, dir_z 32; "
+                   "default 0)")
+      ->check(CLI::Range(0, 63));
   vectors
       ->add_option("--feed", c.feed,
                    "with --bus: every piece's feed increment, iterations per clock x 65536 (default 0: full rate)")
@@ -117,7 +122,7 @@ motion::StageTimings parse_timing(const std::string& opt, const std::string& s) 
 
 BusOptions bus_options(const BusCli& c) {
   const bool any = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() || !c.timing_y.empty() ||
-                   c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0;
+                   !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0;
   if (!c.bus) {
     if (any)
       throw InputError("--pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only");
@@ -126,9 +131,10 @@ BusOptions bus_options(const BusCli& c) {
   BusOptions b;
   b.pipelined = c.pipelined;
   b.abort_after = c.abort_after;
-  if (!c.timing.empty()) b.timing_x = b.timing_y = parse_timing("--timing", c.timing);
+  if (!c.timing.empty()) b.timing_x = b.timing_y = b.timing_z = parse_timing("--timing", c.timing);
   if (!c.timing_x.empty()) b.timing_x = parse_timing("--timing-x", c.timing_x);
   if (!c.timing_y.empty()) b.timing_y = parse_timing("--timing-y", c.timing_y);
+  if (!c.timing_z.empty()) b.timing_z = parse_timing("--timing-z", c.timing_z);
   b.polarity = c.polarity;
   if (c.feed && c.feed_rate != 0) throw InputError("--feed and --feed-rate are alternatives: give one");
   if ((c.feed_rate != 0) != (c.clock_hz != 0)) throw InputError("--feed-rate and --clock go together");
@@ -158,6 +164,7 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
   t.set_reset(true);
   d.set_timings('x', bus.timing_x);
   d.set_timings('y', bus.timing_y);
+  d.set_timings('z', bus.timing_z);
   d.set_polarity(bus.polarity);
   d.preset(plans.front().from);
   for (const auto& p : plans) {
@@ -206,9 +213,9 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
     const motion::BlockOutputs o = m.outputs();
     const auto& r = m.regs();
     in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat}) << '\n';
-    exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.busy, o.irq,
-                              r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("level_q")],
-                              r[motion::breg("done_count_q")]})
+    exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.step_z, o.dir_z, o.busy,
+                              o.irq, r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("pos_z_q")],
+                              r[motion::breg("level_q")], r[motion::breg("done_count_q")]})
             << '\n';
     ++ncycles;
   };
@@ -233,6 +240,7 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   };
   j["timing_x"] = timing(bus.timing_x);
   j["timing_y"] = timing(bus.timing_y);
+  j["timing_z"] = timing(bus.timing_z);
   j["polarity"] = bus.polarity;
   if (bus.feed_rate > 0) {
     j["feed_rate_steps_per_s"] = bus.feed_rate;

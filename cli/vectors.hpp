@@ -32,21 +32,21 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt);
 
 // dda vectors --bus: the motion block's per-cycle set (cli/bus_vectors.cpp).
 struct BusOptions {
-  bool pipelined = false;                   // Wishbone cycles: classic or pipelined
-  int idle_percent = 20;                    // chance of an idle cycle before each request (seeded)
-  int abort_after = 0;                      // > 0: abort that many cycles after the last commit
-  std::string vcd;                          // non-empty: also run the RTL through the same cycles, this waveform
-  motion::StageTimings timing_x, timing_y;  // the step/dir stages' timings (cycles)
-  std::uint32_t polarity = 0;               // POLARITY
-  std::uint32_t feed = 0;                   // every piece's feed increment (0: full rate) ...
-  double feed_rate = 0, clock_hz = 0;       // ... or each piece's for this feed (steps/s) and clock
+  bool pipelined = false;  // Wishbone cycles: classic or pipelined
+  int idle_percent = 20;   // chance of an idle cycle before each request (seeded)
+  int abort_after = 0;     // > 0: abort that many cycles after the last commit
+  std::string vcd;         // non-empty: also run the RTL through the same cycles, this waveform
+  motion::StageTimings timing_x, timing_y, timing_z;  // the step/dir stages' timings (cycles)
+  std::uint32_t polarity = 0;                         // POLARITY
+  std::uint32_t feed = 0;                             // every piece's feed increment (0: full rate) ...
+  double feed_rate = 0, clock_hz = 0;                 // ... or each piece's for this feed (steps/s) and clock
 };
 // The --bus options of `dda vectors` as given, and their checked values (InputError for
 // a malformed timing, a feed without --bus, ...).
 struct BusCli {
   bool bus = false, pipelined = false;
   int abort_after = 0;
-  std::string timing, timing_x, timing_y;
+  std::string timing, timing_x, timing_y, timing_z;
   std::uint32_t polarity = 0, feed = 0;
   double feed_rate = 0, clock_hz = 0;
 };

@@ -127,6 +127,8 @@ void MotionHarness::tick(const BusIn& bus) {
   out_.step_y = top_->step_y_o;
   out_.dir_x = top_->dir_x_o;
   out_.dir_y = top_->dir_y_o;
+  out_.step_z = top_->step_z_o;
+  out_.dir_z = top_->dir_z_o;
   out_.busy = top_->busy_o;
   out_.irq = top_->irq_o;
   const std::string at = "motion block, cycle " + std::to_string(cycle_) + ": ";

@@ -12,9 +12,12 @@
 // and a pipelined master issues one request every other cycle. The bus never waits on
 // the core.
 //
-// Queue: 2^DepthLog2 entries of ENTRY_WORDS words, one EBR lane of 16 bits per half
-// word, read at the next head address on every edge (as rtl/fpga/dda_fpga_top.v), so
-// the core takes queued commands back to back. The host writes the words of an entry
+// Queue: 2^DepthLog2 entries of ENTRY_WORDS words, each in ENTRY_ROWS rows of ROW_WORDS
+// words (one EBR lane of 16 bits per half word of a row: a whole entry in one row would
+// take more block RAMs than the HX8K has). After the head moves (or while the queue is
+// empty) the RAM reads the head entry's row 0, which row0_q keeps on the next edge while
+// the RAM reads row 1: the command is whole two edges after the head moved, so the core
+// takes at most one entry every two clocks. The host writes the words of an entry
 // (ENTRY + 4k) into the free slot at the tail and commits it (CTRL.commit).
 // Refused, with a sticky error: an entry word or a commit while the queue is full
 // (err_overflow), a commit before every word was written (err_partial). The core's
@@ -31,7 +34,7 @@
 `include "dda_motion_regs.vh"
 
 module dda_motion #(
-  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..8)
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,      // synchronous, active low
@@ -52,12 +55,15 @@ module dda_motion #(
   output wire                              step_y_o,
   output wire                              dir_x_o,
   output wire                              dir_y_o,
+  output wire                              step_z_o,
+  output wire                              dir_z_o,
   output wire                              busy_o,
   output wire                              irq_o
 );
 
   localparam integer Words = `DDA_MOTION_ENTRY_WORDS;
-  localparam integer Lanes = 2 * Words;
+  localparam integer RowWords = `DDA_MOTION_ROW_WORDS;
+  localparam integer Lanes    = 2 * RowWords;  // EBR lanes of a row
   localparam integer LW    = `DDA_MOTION_LEVEL_WIDTH;
   localparam [LW-1:0] Depth = LW'(1) << DepthLog2;
   localparam integer TW = `DDA_MOTION_TIMING_WIDTH;
@@ -89,7 +95,7 @@ module dda_motion #(
   reg  [DepthLog2-1:0] tail_q  /* verilator public_flat_rd */;
   reg  [LW-1:0]        level_q /* verilator public_flat_rd */;
   reg  [Words-1:0]     mask_q  /* verilator public_flat_rd */;  // words written since the last commit
-  reg                  primed_q /* verilator public_flat_rd */; // the RAM output holds the head entry
+  reg  [1:0]           fetch_q /* verilator public_flat_rd */;  // rows of the head entry read: 0, 1 (row 0 at the RAM output), 2 (row 0 in row0_q, row 1 at the output)
   wire                 full  = level_q == Depth;
   wire                 empty = level_q == {LW{1'b0}};
   wire                 wr_entry  = wr & in_entry & ~abort;
@@ -100,11 +106,15 @@ module dda_motion #(
 
   wire        core_ready, core_busy, core_done, core_err, core_iter;
   wire        core_step_x, core_step_y, core_dir_x, core_dir_y;
-  wire        core_step_z, core_dir_z;  // the third axis: no step/dir stage in this block yet
-  wire        cmd_valid = primed_q & ~empty;
+  wire        core_step_z, core_dir_z;
+  wire        cmd_valid = (fetch_q == 2'd2) & ~empty;
   wire        take      = cmd_valid & core_ready & ~abort;  // the core loads the head entry
   wire [DepthLog2-1:0] head_d = !rst_ni ? '0 : abort ? tail_q : take ? head_q + 1'b1 : head_q;
   wire [LW-1:0]        level_d = level_q + {{(LW-1){1'b0}}, commit_ok} - {{(LW-1){1'b0}}, take};
+  // The row the RAM reads on this edge: row 0 of the head after it moves, while the
+  // queue is empty (the host may be writing that slot) and after reset; else row 1.
+  wire        refetch   = !rst_ni | empty | take | abort | (fetch_q == 2'd0);
+  wire [1:0]  fetch_d   = refetch ? 2'd1 : 2'd2;
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -112,9 +122,9 @@ module dda_motion #(
       tail_q   <= '0;
       level_q  <= '0;
       mask_q   <= '0;
-      primed_q <= 1'b0;
+      fetch_q  <= 2'd0;
     end else begin
-      primed_q <= 1'b1;
+      fetch_q  <= fetch_d;
       head_q   <= head_d;
       if (abort) begin
         level_q <= '0;
@@ -131,17 +141,23 @@ module dda_motion #(
     end
   end
 
-  wire [16*Lanes-1:0] entry_q;
+  // Entry word k is word k % RowWords of row k / RowWords.
+  wire [16*Lanes-1:0] rd_row;
+  reg  [16*Lanes-1:0] row0_q;
+  wire                wr_row = word >= 5'(RowWords);
+  wire [4:0]          wr_word = wr_row ? word - 5'(RowWords) : word;
   genvar l;
   for (l = 0; l < Lanes; l = l + 1) begin : g_lane
-    (* no_rw_check *) reg [15:0] mem [0:(1 << DepthLog2)-1];
+    (* no_rw_check *) reg [15:0] mem [0:(2 << DepthLog2)-1];
     reg [15:0] rd_q;
     always @(posedge clk_i) begin
-      if (entry_ok && {1'b0, word} == 6'(l / 2)) mem[tail_q] <= wb_dat_i[16*(l%2)+:16];
-      rd_q <= mem[head_d];
+      if (entry_ok && wr_word == 5'(l / 2)) mem[{tail_q, wr_row}] <= wb_dat_i[16*(l%2)+:16];
+      rd_q <= mem[{head_d, fetch_d == 2'd2}];
     end
-    assign entry_q[16*l+:16] = rd_q;
+    assign rd_row[16*l+:16] = rd_q;
   end
+  always @(posedge clk_i) if (fetch_q == 2'd1) row0_q <= rd_row;
+  wire [32*`DDA_MOTION_ENTRY_ROWS*RowWords-1:0] entry_q = {rd_row, row0_q};
   // The feed increment: the top FW bits of the entry's last word (above the command).
   wire [FW-1:0] entry_feed = entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB +: FW];
   wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:`DDA_CMD_WIDTH]};
@@ -173,7 +189,7 @@ module dda_motion #(
     .err_o       (core_err),
     .iter_o      (core_iter)
   );
-  wire unused_core = &{1'b0, core_iter, core_step_z, core_dir_z};
+  wire unused_core = &{1'b0, core_iter};
 
   always @(posedge clk_i) begin
     if (!rst_ni || abort) begin
@@ -194,9 +210,14 @@ module dda_motion #(
   reg [TW-1:0] stepspace_y_q /* verilator public_flat_rd */;
   reg [TW-1:0] dirsetup_y_q  /* verilator public_flat_rd */;
   reg [TW-1:0] dirhold_y_q   /* verilator public_flat_rd */;
-  reg [3:0]    polarity_q    /* verilator public_flat_rd */;  // {dir_y, step_y, dir_x, step_x}
+  reg [TW-1:0] steplen_z_q   /* verilator public_flat_rd */;
+  reg [TW-1:0] stepspace_z_q /* verilator public_flat_rd */;
+  reg [TW-1:0] dirsetup_z_q  /* verilator public_flat_rd */;
+  reg [TW-1:0] dirhold_z_q   /* verilator public_flat_rd */;
+  reg [5:0]    polarity_q    /* verilator public_flat_rd */;  // {dir_z, step_z, dir_y, step_y, dir_x, step_x}
   wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left, sx_busy;
   wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left, sy_busy;
+  wire sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left, sz_busy;
   dda_stepdir #(.TW(TW)) u_sx (
     .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_x), .dir_i(core_dir_x), .tag_i(core_done),
     .steplen_i(steplen_x_q), .stepspace_i(stepspace_x_q), .dirsetup_i(dirsetup_x_q), .dirhold_i(dirhold_x_q),
@@ -209,17 +230,27 @@ module dda_motion #(
     .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .wait_o(sy_wait),
     .tag_left_o(sy_tag_left), .busy_o(sy_busy)
   );
+  dda_stepdir #(.TW(TW)) u_sz (
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_z), .dir_i(core_dir_z), .tag_i(core_done),
+    .steplen_i(steplen_z_q), .stepspace_i(stepspace_z_q), .dirsetup_i(dirsetup_z_q), .dirhold_i(dirhold_z_q),
+    .step_o(sz_step), .dir_o(sz_dir), .hold_o(sz_hold), .rise_o(sz_rise), .rise_dir_o(sz_rise_dir), .wait_o(sz_wait),
+    .tag_left_o(sz_tag_left), .busy_o(sz_busy)
+  );
   wire wr_step_x = wr & (adr == `DDA_MOTION_STEP_X_ADDR);
   wire wr_dir_x  = wr & (adr == `DDA_MOTION_DIR_X_ADDR);
   wire wr_step_y = wr & (adr == `DDA_MOTION_STEP_Y_ADDR);
   wire wr_dir_y  = wr & (adr == `DDA_MOTION_DIR_Y_ADDR);
+  wire wr_step_z = wr & (adr == `DDA_MOTION_STEP_Z_ADDR);
+  wire wr_dir_z  = wr & (adr == `DDA_MOTION_DIR_Z_ADDR);
   // A timing written on this edge is not in the stages' look-ahead: hold the core once.
-  assign hold     = sx_hold | sy_hold | wr_step_x | wr_dir_x | wr_step_y | wr_dir_y;
+  assign hold     = sx_hold | sy_hold | sz_hold | wr_step_x | wr_dir_x | wr_step_y | wr_dir_y | wr_step_z | wr_dir_z;
   assign step_x_o = sx_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_X_LSB];
   assign dir_x_o  = sx_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_X_LSB];
   assign step_y_o = sy_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_Y_LSB];
   assign dir_y_o  = sy_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_Y_LSB];
-  wire   busy     = core_busy | sx_busy | sy_busy;
+  assign step_z_o = sz_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_Z_LSB];
+  assign dir_z_o  = sz_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_Z_LSB];
+  wire   busy     = core_busy | sx_busy | sy_busy | sz_busy;
   assign busy_o   = busy;
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -231,6 +262,10 @@ module dda_motion #(
       stepspace_y_q <= '0;
       dirsetup_y_q  <= '0;
       dirhold_y_q   <= '0;
+      steplen_z_q   <= '0;
+      stepspace_z_q <= '0;
+      dirsetup_z_q  <= '0;
+      dirhold_z_q   <= '0;
       polarity_q    <= '0;
     end else begin
       if (wr_step_x) begin
@@ -249,7 +284,15 @@ module dda_motion #(
         dirsetup_y_q <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW];
         dirhold_y_q  <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW];
       end
-      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wb_dat_i[3:0];
+      if (wr_step_z) begin
+        steplen_z_q   <= wb_dat_i[`DDA_MOTION_STEP_Z_STEPLEN_LSB+:TW];
+        stepspace_z_q <= wb_dat_i[`DDA_MOTION_STEP_Z_STEPSPACE_LSB+:TW];
+      end
+      if (wr_dir_z) begin
+        dirsetup_z_q <= wb_dat_i[`DDA_MOTION_DIR_Z_DIRSETUP_LSB+:TW];
+        dirhold_z_q  <= wb_dat_i[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW];
+      end
+      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wb_dat_i[5:0];
     end
   end
 
@@ -266,6 +309,7 @@ module dda_motion #(
   reg [31:0] err_count_q    /* verilator public_flat_rd */;
   reg [31:0] pos_x_q        /* verilator public_flat_rd */;
   reg [31:0] pos_y_q        /* verilator public_flat_rd */;
+  reg [31:0] pos_z_q        /* verilator public_flat_rd */;
 
   wire err_set = err_overflow | err_partial | core_err;
   wire low_set = take & (level_d < irq_level_q);
@@ -275,16 +319,18 @@ module dda_motion #(
   // piece's can wait yet); done_wait_q holds the piece until no tagged step waits. A
   // piece finished on the edge a tagged one leaves makes two on that edge.
   reg  done_wait_q /* verilator public_flat_rd */;
-  wire tags_left = sx_tag_left | sy_tag_left;
+  wire tags_left = sx_tag_left | sy_tag_left | sz_tag_left;
   wire old_done  = done_wait_q & ~tags_left;
-  wire new_wait  = core_done & (sx_wait | sy_wait);
+  wire new_wait  = core_done & (sx_wait | sy_wait | sz_wait);
   wire new_done  = core_done & ~new_wait;
   wire [2:0] irq_set = {low_set, err_set, old_done | new_done};
   // The pulses the stages start on this edge: +1, -1 or 0.
   wire [31:0] dx = sx_rise ? (sx_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
   wire [31:0] dy = sy_rise ? (sy_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
+  wire [31:0] dz = sz_rise ? (sz_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
   wire wr_pos_x = wr & (adr == `DDA_MOTION_POS_X_ADDR);
   wire wr_pos_y = wr & (adr == `DDA_MOTION_POS_Y_ADDR);
+  wire wr_pos_z = wr & (adr == `DDA_MOTION_POS_Z_ADDR);
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -301,6 +347,7 @@ module dda_motion #(
       err_count_q    <= '0;
       pos_x_q        <= '0;
       pos_y_q        <= '0;
+      pos_z_q        <= '0;
     end else begin
       // Sticky bits: a cause on the edge of a clear stays set.
       err_q          <= (err_q & ~clear) | err_set;
@@ -318,6 +365,7 @@ module dda_motion #(
       // A preset is the position before the steps of the same edge: none is lost.
       pos_x_q <= (wr_pos_x ? wb_dat_i : pos_x_q) + dx;
       pos_y_q <= (wr_pos_y ? wb_dat_i : pos_y_q) + dy;
+      pos_z_q <= (wr_pos_z ? wb_dat_i : pos_z_q) + dz;
     end
   end
   assign irq_o = |(irq_status_q & irq_enable_q);
@@ -332,6 +380,7 @@ module dda_motion #(
       `DDA_MOTION_CONFIG_ADDR: begin
         rd[`DDA_MOTION_CONFIG_ENTRY_WORDS_LSB+:`DDA_MOTION_CONFIG_ENTRY_WORDS_WIDTH] = `DDA_MOTION_CONFIG_ENTRY_WORDS_WIDTH'(Words);
         rd[`DDA_MOTION_CONFIG_DEPTH_LOG2_LSB+:`DDA_MOTION_CONFIG_DEPTH_LOG2_WIDTH]   = `DDA_MOTION_CONFIG_DEPTH_LOG2_WIDTH'(DepthLog2);
+        rd[`DDA_MOTION_CONFIG_ENTRY_ROWS_LSB+:`DDA_MOTION_CONFIG_ENTRY_ROWS_WIDTH]   = `DDA_MOTION_CONFIG_ENTRY_ROWS_WIDTH'(`DDA_MOTION_ENTRY_ROWS);
         rd[`DDA_MOTION_CONFIG_ACC_WIDTH_LSB+:`DDA_MOTION_CONFIG_ACC_WIDTH_WIDTH]     = `DDA_ACC_WIDTH;
         rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
       end
@@ -353,6 +402,7 @@ module dda_motion #(
       `DDA_MOTION_ERR_COUNT_ADDR:  rd = err_count_q;
       `DDA_MOTION_POS_X_ADDR:      rd = pos_x_q;
       `DDA_MOTION_POS_Y_ADDR:      rd = pos_y_q;
+      `DDA_MOTION_POS_Z_ADDR:      rd = pos_z_q;
       `DDA_MOTION_ENTRY_MASK_ADDR: rd[Words-1:0] = mask_q;
       `DDA_MOTION_STEP_X_ADDR: begin
         rd[`DDA_MOTION_STEP_X_STEPLEN_LSB+:TW]   = steplen_x_q;
@@ -370,7 +420,15 @@ module dda_motion #(
         rd[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW] = dirsetup_y_q;
         rd[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW]  = dirhold_y_q;
       end
-      `DDA_MOTION_POLARITY_ADDR: rd[3:0] = polarity_q;
+      `DDA_MOTION_STEP_Z_ADDR: begin
+        rd[`DDA_MOTION_STEP_Z_STEPLEN_LSB+:TW]   = steplen_z_q;
+        rd[`DDA_MOTION_STEP_Z_STEPSPACE_LSB+:TW] = stepspace_z_q;
+      end
+      `DDA_MOTION_DIR_Z_ADDR: begin
+        rd[`DDA_MOTION_DIR_Z_DIRSETUP_LSB+:TW] = dirsetup_z_q;
+        rd[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW]  = dirhold_z_q;
+      end
+      `DDA_MOTION_POLARITY_ADDR: rd[5:0] = polarity_q;
       default: rd = 32'd0;
     endcase
   end

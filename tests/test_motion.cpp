@@ -206,6 +206,7 @@ TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and over
     CHECK(st.arcs == 50);
     CHECK(st.position_checks > 0);
     CHECK(st.piece_checks > 0);
-    CHECK(st.piece_checks > 0);
+    CHECK(st.spatial > 0);   // the third axis in the mix,
+    CHECK(st.pulses_z > 0);  // its pulses through its stage
   }
 }

@@ -28,6 +28,7 @@ TEST_CASE("motion cosim: 60 random arcs queued on classic cycles, SystemC model 
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
   CHECK(st.piece_checks > 0);
+  CHECK(st.pulses_z > 0);  // the third axis' stage ran
 }
 
 TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC model and RTL equal every cycle",
@@ -39,4 +40,5 @@ TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC mode
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
   CHECK(st.piece_checks > 0);
+  CHECK(st.pulses_z > 0);  // the third axis' stage ran
 }

@@ -22,13 +22,15 @@ PieceMotion piece_motion(const Command& c) {
     const RegState& r = d.regs();
     const double vx = r.cnt_x != 0 && r.jv_x > 0 ? double(r.jv_x) : 0.0;
     const double vy = r.cnt_y != 0 && r.jv_y > 0 ? double(r.jv_y) : 0.0;
-    const double v = std::hypot(vx, vy) / double(c.cap);
+    const double vz = r.cnt_z != 0 ? double(c.jv_z) / double(c.cap_z) : 0.0;
+    const double v = std::hypot(std::hypot(vx, vy) / double(c.cap), vz);
     m.speed_min = std::min(m.speed_min, v);
     m.speed_max = std::max(m.speed_max, v);
     sum += v;
     const Iteration it = d.iterate();
     m.steps_x += it.step_x;
     m.steps_y += it.step_y;
+    m.steps_z += it.step_z;
   }
   m.path = sum;
   m.iterations = d.iterations();

@@ -18,7 +18,7 @@ namespace dda::feed {
 // What one piece does, from the golden datapath.
 struct PieceMotion {
   std::uint64_t iterations = 0;
-  std::uint64_t steps_x = 0, steps_y = 0;
+  std::uint64_t steps_x = 0, steps_y = 0, steps_z = 0;
   // The length of the curve the piece follows, in steps: the sum over its iterations of
   // the DDA's velocity |(jv_x, jv_y)| / cap (a staircase count of the steps, 1 per axial
   // and sqrt 2 per diagonal step, would overstate it by up to a quarter on a circle).

@@ -43,10 +43,11 @@ void PieceMonitor::tick(const BusIn& bus) {
   next_ += std::size_t(finished);
   const Point want = ends_[next_ - 1];
   const auto x = std::int32_t(r[breg("pos_x_q")]), y = std::int32_t(r[breg("pos_y_q")]);
-  if (x != want.x || y != want.y) {
+  const auto z = std::int32_t(r[breg("pos_z_q")]);
+  if (x != want.x || y != want.y || z != want.z) {
     throw GuardError("piece monitor: piece " + std::to_string(next_) + " finished at (" + std::to_string(x) + ", " +
-                     std::to_string(y) + "), its end point is (" + std::to_string(want.x) + ", " +
-                     std::to_string(want.y) + ")");
+                     std::to_string(y) + ", " + std::to_string(z) + "), its end point is (" + std::to_string(want.x) +
+                     ", " + std::to_string(want.y) + ", " + std::to_string(want.z) + ")");
   }
   ++checked_;
 }
@@ -95,11 +96,6 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
 void MotionDriver::queue(const Command& c, std::uint32_t feed) {
-  // The block passes the core's third axis to no pin yet: refused, not dropped.
-  if (c.cnt_z != 0) {
-    throw InputError("the motion block drives X and Y only: a command that moves the third axis (" +
-                     std::to_string(c.cnt_z) + " steps) needs its step/dir stage, which the block does not have yet");
-  }
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
   const std::vector<std::uint32_t> w = entry_words(c, feed);
   std::vector<std::size_t> order(w.size());
@@ -121,6 +117,7 @@ void MotionDriver::drain(int max_polls) {
 void MotionDriver::preset(Point p) {
   m_.write(reg_offset("POS_X"), std::uint32_t(p.x));
   m_.write(reg_offset("POS_Y"), std::uint32_t(p.y));
+  m_.write(reg_offset("POS_Z"), std::uint32_t(p.z));
 }
 
 void MotionDriver::set_timings(char axis, const StageTimings& t) {
@@ -140,7 +137,8 @@ void MotionDriver::set_polarity(std::uint32_t bits) { m_.write(reg_offset("POLAR
 Point MotionDriver::position() {
   const auto x = std::int32_t(m_.read(reg_offset("POS_X")));
   const auto y = std::int32_t(m_.read(reg_offset("POS_Y")));
-  return Point{x, y};
+  const auto z = std::int32_t(m_.read(reg_offset("POS_Z")));
+  return Point{x, y, z};
 }
 
 }  // namespace dda::motion

@@ -110,6 +110,7 @@ std::string c_header(const Map& m) {
   o += fmt::format("#define DDA_MOTION_VERSION_MAJOR {}u\n#define DDA_MOTION_VERSION_MINOR {}u\n", kVersionMajor,
                    kVersionMinor);
   o += fmt::format("#define DDA_MOTION_ENTRY_WORDS {}u\n#define DDA_MOTION_CMD_BITS {}u\n", kEntryWords, hw::kCmdWidth);
+  o += fmt::format("#define DDA_MOTION_MAX_DEPTH {}u  /* entries of the largest queue */\n", 1u << kMaxDepthLog2);
   o += fmt::format(
       "#define DDA_MOTION_FEED_WORD {}u  /* the entry word holding the feed increment */\n"
       "#define DDA_MOTION_FEED_LSB {}u\n#define DDA_MOTION_FEED_MASK 0x{:08X}u\n#define DDA_MOTION_TIMING_WIDTH "
@@ -141,7 +142,9 @@ std::string verilog_header(const Map& m) {
   o += fmt::format("`define DDA_MOTION_ID_VALUE 32'h{:08X}\n", kId);
   o += fmt::format("`define DDA_MOTION_VERSION_VALUE 32'h{:04X}{:04X}\n", kVersionMajor, kVersionMinor);
   o += fmt::format("`define DDA_MOTION_ENTRY_WORDS {}\n`define DDA_MOTION_LEVEL_WIDTH {}\n", kEntryWords, kLevelWidth);
-  o += fmt::format("`define DDA_MOTION_MAX_DEPTH_LOG2 {}\n", kMaxDepthLog2);
+  o += fmt::format(
+      "`define DDA_MOTION_MAX_DEPTH_LOG2 {}\n`define DDA_MOTION_ENTRY_ROWS {}\n`define DDA_MOTION_ROW_WORDS {}\n",
+      kMaxDepthLog2, kEntryRows, kRowWords);
   o +=
       fmt::format("`define DDA_MOTION_FEED_WORD {}\n`define DDA_MOTION_FEED_LSB {}\n`define DDA_MOTION_FEED_WIDTH {}\n",
                   kFeedWord, kFeedLsb, kFeedWidth);

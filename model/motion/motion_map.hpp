@@ -32,8 +32,14 @@ inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 3
 inline constexpr int kEntrySpareBits = 32 * kEntryWords - hw::kCmdWidth;
 inline constexpr int kAddrWidth = 8;          // byte address bits the block decodes
 inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
-inline constexpr int kLevelWidth = 9;         // queue level: 0 .. 256 entries
+inline constexpr int kLevelWidth = 8;         // queue level: 0 .. 128 entries
 inline constexpr int kMaxDepthLog2 = kLevelWidth - 1;
+// The queue holds an entry in kEntryRows rows of the block RAM (kRowWords words each,
+// two 16-bit lanes per word): the HX8K's 32 block RAMs are 16 bits wide at most, too few
+// for a whole entry in one row. The block reads an entry's rows one per clock, so the
+// core takes at most one entry every kEntryRows clocks.
+inline constexpr int kEntryRows = 2;
+inline constexpr int kRowWords = (kEntryWords + kEntryRows - 1) / kEntryRows;
 // The feed increment of an entry: bits kFeedLsb .. kFeedLsb + kFeedWidth - 1 of entry word
 // kFeedWord. The phase accumulator of the same width adds it every cycle the core may go
 // on and lets the core iterate on its carry: feed / 2^kFeedWidth iterations per clock
@@ -42,9 +48,11 @@ inline constexpr int kFeedWidth = 16;
 inline constexpr int kFeedWord = kEntryWords - 1;
 inline constexpr int kFeedLsb = 32 - kFeedWidth;
 static_assert(kEntrySpareBits >= kFeedWidth, "the feed increment sits in the entry's spare bits");
-// The step/dir stages' timings (STEP_X/Y, DIR_X/Y fields), in clock cycles: each is
-// field `name` of register `reg`_X / `reg`_Y, held in the block register
-// `name`_x_q / `name`_y_q.
+// The axes of the block, each with a step/dir stage, a position counter and its timings.
+inline constexpr std::array<char, 3> kAxes{{'x', 'y', 'z'}};
+// The step/dir stages' timings (STEP_X/Y/Z, DIR_X/Y/Z fields), in clock cycles: each is
+// field `name` of register `reg`_X / `reg`_Y / `reg`_Z, held in the block register
+// `name`_x_q / `name`_y_q / `name`_z_q.
 inline constexpr int kTimingWidth = 12;
 struct TimingField {
   std::string_view reg, name;
@@ -61,7 +69,7 @@ struct Register {
   Access access;
   std::string_view meaning;
 };
-inline constexpr std::array<Register, 19> kRegisters{{
+inline constexpr std::array<Register, 22> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
     {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
@@ -80,6 +88,9 @@ inline constexpr std::array<Register, 19> kRegisters{{
     {"STEP_Y", 0x3C, Access::RW, "Y step/dir stage: step pulse length and space (clock cycles)"},
     {"DIR_Y", 0x40, Access::RW, "Y step/dir stage: direction setup and hold (clock cycles)"},
     {"POLARITY", 0x44, Access::RW, "output polarity: a bit set inverts that output"},
+    {"POS_Z", 0x48, Access::RW, "Z position in steps, signed; counts the steps sent out; a write presets it"},
+    {"STEP_Z", 0x4C, Access::RW, "Z step/dir stage: step pulse length and space (clock cycles)"},
+    {"DIR_Z", 0x50, Access::RW, "Z step/dir stage: direction setup and hold (clock cycles)"},
     {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
 }};
 
@@ -90,12 +101,14 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 44> kFields{{
+inline constexpr std::array<Field, 52> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
     {"CONFIG", "entry_words", 0, 6, "words of an entry (kEntryWords)"},
     {"CONFIG", "depth_log2", 8, 4, "log2 of the queue depth (entries)"},
+    {"CONFIG", "entry_rows", 12, 2,
+     "block-RAM rows an entry takes (kEntryRows): the core takes one entry per as many clocks at most"},
     {"CONFIG", "acc_width", 16, 6, "the core's AccWidth"},
     {"CONFIG", "cnt_width", 24, 5, "the core's CntWidth"},
     {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},
@@ -137,6 +150,13 @@ inline constexpr std::array<Field, 44> kFields{{
     {"POLARITY", "dir_x", 1, 1, "dir_x_o inverted (low: negative)"},
     {"POLARITY", "step_y", 2, 1, "step_y_o active low"},
     {"POLARITY", "dir_y", 3, 1, "dir_y_o inverted (low: negative)"},
+    {"POLARITY", "step_z", 4, 1, "step_z_o active low"},
+    {"POLARITY", "dir_z", 5, 1, "dir_z_o inverted (low: negative)"},
+    {"POS_Z", "pos", 0, 32, "two's complement"},
+    {"STEP_Z", "steplen", 0, kTimingWidth, "as STEP_X.steplen"},
+    {"STEP_Z", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
+    {"DIR_Z", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
+    {"DIR_Z", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
     {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31; the last word's top bits: the feed"},
 }};
 // A register's offset and a field by name (a name not in the map does not compile where

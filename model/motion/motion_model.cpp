@@ -34,6 +34,8 @@ std::string BlockOutputs::diff(const BlockOutputs& o) const {
   one("step_y_o", step_y, o.step_y);
   one("dir_x_o", dir_x, o.dir_x);
   one("dir_y_o", dir_y, o.dir_y);
+  one("step_z_o", step_z, o.step_z);
+  one("dir_z_o", dir_z, o.dir_z);
   one("busy_o", busy, o.busy);
   one("irq_o", irq, o.irq);
   return d;
@@ -43,10 +45,12 @@ int width_bits(Width w, int depth_log2) {
   switch (w) {
     case Width::One:
       return 1;
+    case Width::Two:
+      return 2;
     case Width::Three:
       return 3;
-    case Width::Four:
-      return 4;
+    case Width::Six:
+      return 6;
     case Width::Timing:
       return kTimingWidth;
     case Width::Feed:
@@ -77,7 +81,7 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 {"wb_ack_o", 1},
                 {"wb_stall_o", 1},
                 {"wb_dat_o", 32}}});
-  g.push_back({"Queue", {reg("head_q"), reg("tail_q"), reg("level_q"), reg("mask_q"), reg("primed_q")}});
+  g.push_back({"Queue", {reg("head_q"), reg("tail_q"), reg("level_q"), reg("mask_q"), reg("fetch_q")}});
   g.push_back({"Status",
                {reg("err_q"),
                 reg("err_overflow_q"),
@@ -93,9 +97,12 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 {"dir_x_o", 1},
                 {"step_y_o", 1},
                 {"dir_y_o", 1},
+                {"step_z_o", 1},
+                {"dir_z_o", 1},
                 {"busy_o", 1},
                 reg("pos_x_q", true),
                 reg("pos_y_q", true),
+                reg("pos_z_q", true),
                 reg("done_count_q"),
                 reg("done_wait_q"),
                 reg("err_count_q")}});
@@ -108,6 +115,10 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 reg("u_sy.dir_q"),
                 reg("u_sy.pend_q"),
                 reg("u_sy.tf_q"),
+                reg("u_sz.step_q"),
+                reg("u_sz.dir_q"),
+                reg("u_sz.pend_q"),
+                reg("u_sz.tf_q"),
                 reg("feed_q"),
                 reg("acc_q"),
                 {"core_ce", 1}}});
@@ -154,7 +165,7 @@ MotionModel::MotionModel(int depth_log2)
 std::uint64_t MotionModel::get(std::string_view name) const { return r_[breg(name)]; }
 
 StageRegs MotionModel::stage(char axis) const {
-  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  const std::string p = std::string("u_s") + axis + ".";
   StageRegs s;
   s.step = get(p + "step_q") != 0;
   s.dir = get(p + "dir_q") != 0;
@@ -167,7 +178,7 @@ StageRegs MotionModel::stage(char axis) const {
 }
 
 void MotionModel::set_stage(char axis, const StageRegs& s) {
-  const std::string p = axis == 'x' ? "u_sx." : "u_sy.";
+  const std::string p = std::string("u_s") + axis + ".";
   reg(p + "step_q") = s.step;
   reg(p + "dir_q") = s.dir;
   reg(p + "pend_q") = s.pend;
@@ -187,10 +198,11 @@ StageTimings MotionModel::timings(char axis) const {
 bool MotionModel::busy() const {
   // The core runs, or a step is on its way to the pins: the core's step output (it enters
   // a stage on the next edge), a step waiting in a stage, a pulse out.
-  const StageRegs x = stage('x'), y = stage('y');
   const PortValues p = CoreModel::outputs(core_.state(), false);
-  return CoreModel::busy(core_.state()) || p[out("step_x_o")] != 0 || p[out("step_y_o")] != 0 || x.pend || x.step ||
-         y.pend || y.step;
+  bool b =
+      CoreModel::busy(core_.state()) || p[out("step_x_o")] != 0 || p[out("step_y_o")] != 0 || p[out("step_z_o")] != 0;
+  for (const char axis : kAxes) b = b || stage(axis).pend || stage(axis).step;
+  return b;
 }
 std::uint64_t& MotionModel::reg(std::string_view name) { return r_[breg(name)]; }
 
@@ -202,6 +214,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("CONFIG")) {
     return std::uint32_t(kEntryWords) << std::uint32_t(field_of("CONFIG", "entry_words").lsb) |
            std::uint32_t(depth_log2_) << std::uint32_t(field_of("CONFIG", "depth_log2").lsb) |
+           std::uint32_t(kEntryRows) << std::uint32_t(field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb);
   }
@@ -219,10 +232,11 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("ERR_COUNT")) return std::uint32_t(get("err_count_q"));
   if (adr == reg_offset("POS_X")) return std::uint32_t(get("pos_x_q"));
   if (adr == reg_offset("POS_Y")) return std::uint32_t(get("pos_y_q"));
+  if (adr == reg_offset("POS_Z")) return std::uint32_t(get("pos_z_q"));
   if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
   if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
   std::uint32_t v = 0;
-  for (const char axis : {'x', 'y'}) {
+  for (const char axis : kAxes) {
     for (const auto& t : kTimingFields) {
       const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
       if (adr == reg_offset(r))
@@ -242,6 +256,8 @@ BlockOutputs MotionModel::outputs() const {
   o.step_y = (get("u_sy.step_q") != 0) != inv("step_y");
   o.dir_x = (get("u_sx.dir_q") != 0) != inv("dir_x");
   o.dir_y = (get("u_sy.dir_q") != 0) != inv("dir_y");
+  o.step_z = (get("u_sz.step_q") != 0) != inv("step_z");
+  o.dir_z = (get("u_sz.dir_q") != 0) != inv("dir_z");
   o.busy = busy();
   o.irq = (get("irq_status_q") & get("irq_enable_q")) != 0;
   return o;
@@ -254,12 +270,12 @@ struct MotionModel::Wires {
   std::uint32_t adr = 0, word = 0;
   bool req = false, wr = false, commit = false, abort = false, clear = false;
   // The queue.
-  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0;
+  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, fetch_d = 0;
   bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
   bool cmd_valid = false, take = false;
   // The core's registered outputs, the stages and the feed.
   bool core_done = false, core_err = false, running = false, advance = false, core_ce = false;
-  StageEdge ex, ey;
+  StageEdge ex, ey, ez;
   std::uint64_t acc_sum = 0;
   // The read data of a bus read in this cycle.
   std::uint32_t rd = 0;
@@ -301,20 +317,26 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.running = CoreModel::busy(pre);
   const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
   const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
+  const bool step_z = po[out("step_z_o")] != 0, dir_z = po[out("dir_z_o")] != 0;
   w.ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, w.core_done, w.abort);
   w.ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, w.core_done, w.abort);
+  w.ez = stage_edge(stage('z'), timings('z'), step_z, dir_z, w.core_done, w.abort);
   // The feed: the core may iterate when no stage holds it and the accumulator carries
   // (a timing written on this edge holds it once: the stages' look-ahead used the old).
-  const bool wr_timing = w.wr && (w.adr == reg_offset("STEP_X") || w.adr == reg_offset("DIR_X") ||
-                                  w.adr == reg_offset("STEP_Y") || w.adr == reg_offset("DIR_Y"));
-  const bool hold = w.ex.hold || w.ey.hold || wr_timing;
+  bool wr_timing = false;
+  for (const char* r : {"STEP_X", "DIR_X", "STEP_Y", "DIR_Y", "STEP_Z", "DIR_Z"})
+    wr_timing = wr_timing || (w.wr && w.adr == reg_offset(r));
+  const bool hold = w.ex.hold || w.ey.hold || w.ez.hold || wr_timing;
   w.advance = ce && !hold;
   const std::uint64_t feed = get("feed_q");
   w.acc_sum = get("acc_q") + feed;
   w.core_ce = w.advance && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
 
-  w.cmd_valid = get("primed_q") && !w.empty;
+  // The head entry is whole once both its rows are read (fetch_q 2); the RAM reads row 0
+  // again after the head moves, while the queue is empty and after reset.
+  w.cmd_valid = get("fetch_q") == 2 && !w.empty;
   w.take = w.cmd_valid && core_.cmd_ready(w.core_ce) && !w.abort;
+  w.fetch_d = w.empty || w.take || w.abort || get("fetch_q") == 0 ? 1 : 2;
   w.level_d = w.level + w.commit_ok - w.take;
   w.rd = read(w.adr);
   w.head = get("head_q");
@@ -337,6 +359,7 @@ void MotionModel::note_edge(const Wires& w) {
   iterated_ = w.core_ce && !w.abort && w.running;
   rise_x_ = w.ex.rise ? (w.ex.rise_dir ? -1 : 1) : 0;
   rise_y_ = w.ey.rise ? (w.ey.rise_dir ? -1 : 1) : 0;
+  rise_z_ = w.ez.rise ? (w.ez.rise_dir ? -1 : 1) : 0;
 }
 
 void MotionModel::load_bus(const BusIn& b, const Wires& w) {
@@ -345,7 +368,7 @@ void MotionModel::load_bus(const BusIn& b, const Wires& w) {
 }
 
 void MotionModel::load_queue(const Wires& w) {
-  reg("primed_q") = 1;
+  reg("fetch_q") = w.fetch_d;
   reg("head_q") = w.abort ? w.tail : w.take ? (w.head + 1) & mask_of(depth_log2_) : w.head;
   if (w.abort) {
     reg("level_q") = 0;
@@ -365,9 +388,9 @@ void MotionModel::load_status(const BusIn& b, const Wires& w) {
   const bool err_set = w.err_overflow || w.err_partial || w.core_err;
   const bool low_set = w.take && w.level_d < get("irq_level_q");
   // A piece is done once its last steps (tagged on the core's done_o) have left.
-  const bool tags_left = w.ex.tag_left || w.ey.tag_left;
+  const bool tags_left = w.ex.tag_left || w.ey.tag_left || w.ez.tag_left;
   const bool old_done = get("done_wait_q") && !tags_left;
-  const bool new_wait = w.core_done && (w.ex.wait || w.ey.wait);
+  const bool new_wait = w.core_done && (w.ex.wait || w.ey.wait || w.ez.wait);
   const bool new_done = w.core_done && !new_wait;
   reg("done_wait_q") = !w.abort && (new_wait || (get("done_wait_q") && tags_left));
   const std::uint64_t irq_set =
@@ -388,13 +411,15 @@ void MotionModel::load_status(const BusIn& b, const Wires& w) {
 }
 
 void MotionModel::load_positions(const BusIn& b, const Wires& w) {
-  const std::uint64_t dx = w.ex.rise ? (w.ex.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint64_t dy = w.ey.rise ? (w.ey.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
   // A preset is the position before the steps of the same edge: none is lost.
-  const std::uint64_t px = w.wr && w.adr == reg_offset("POS_X") ? b.dat : get("pos_x_q");
-  const std::uint64_t py = w.wr && w.adr == reg_offset("POS_Y") ? b.dat : get("pos_y_q");
-  reg("pos_x_q") = (px + dx) & 0xFFFFFFFFu;
-  reg("pos_y_q") = (py + dy) & 0xFFFFFFFFu;
+  const auto load = [&](const char* r, const char* q, const StageEdge& e) {
+    const std::uint64_t d = e.rise ? (e.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
+    const std::uint64_t p = w.wr && w.adr == reg_offset(r) ? b.dat : get(q);
+    reg(q) = (p + d) & 0xFFFFFFFFu;
+  };
+  load("POS_X", "pos_x_q", w.ex);
+  load("POS_Y", "pos_y_q", w.ey);
+  load("POS_Z", "pos_z_q", w.ez);
 }
 
 void MotionModel::load_feed(const Wires& w) {
@@ -408,7 +433,7 @@ void MotionModel::load_feed(const Wires& w) {
 }
 
 void MotionModel::load_settings(const BusIn& b, const Wires& w) {
-  for (const char axis : {'x', 'y'}) {
+  for (const char axis : kAxes) {
     for (const auto& t : kTimingFields) {
       const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
       if (w.wr && w.adr == reg_offset(r)) {
@@ -416,7 +441,7 @@ void MotionModel::load_settings(const BusIn& b, const Wires& w) {
       }
     }
   }
-  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0xFu;
+  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0x3Fu;
 }
 
 void MotionModel::edge(const BlockInputs& in) {
@@ -429,11 +454,10 @@ void MotionModel::edge(const BlockInputs& in) {
   if (w.entry_ok) mem_[w.tail][w.word] = in.bus.dat;  // the RAM has no reset
   took_ = false;
   core_ce_ = iterated_ = false;
-  rise_x_ = rise_y_ = 0;
+  rise_x_ = rise_y_ = rise_z_ = 0;
   if (!in.rst_n) {
     r_ = BlockRegs{};
-    set_stage('x', stage_reset());
-    set_stage('y', stage_reset());
+    for (const char axis : kAxes) set_stage(axis, stage_reset());
     return;
   }
   note_edge(w);
@@ -443,6 +467,7 @@ void MotionModel::edge(const BlockInputs& in) {
   load_feed(w);
   set_stage('x', w.ex.next);
   set_stage('y', w.ey.next);
+  set_stage('z', w.ez.next);
   load_settings(in.bus, w);
 }
 

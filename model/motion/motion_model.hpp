@@ -38,30 +38,32 @@ inline BlockInputs block_inputs(bool rst_n, bool ce, const BusIn& bus) {
 struct BlockOutputs {
   bool ack = false, stall = false;
   std::uint32_t dat = 0;
-  bool step_x = false, step_y = false, dir_x = false, dir_y = false, busy = false, irq = false;
+  bool step_x = false, step_y = false, dir_x = false, dir_y = false, step_z = false, dir_z = false;
+  bool busy = false, irq = false;
   // "" when equal, else the ports that differ ("ack 1/0, dat 5/0": this/other).
   std::string diff(const BlockOutputs& o) const;
   bool operator==(const BlockOutputs& o) const {
     return ack == o.ack && stall == o.stall && dat == o.dat && step_x == o.step_x && step_y == o.step_y &&
-           dir_x == o.dir_x && dir_y == o.dir_y && busy == o.busy && irq == o.irq;
+           dir_x == o.dir_x && dir_y == o.dir_y && step_z == o.step_z && dir_z == o.dir_z && busy == o.busy &&
+           irq == o.irq;
   }
 };
 
 // The block's own registers by their RTL names (below dda_motion), each masked to its
 // width; the harness reads them by these names (public_flat_rd) and compares them with
 // the model's after every edge, beside the core's register table.
-enum class Width { One, Three, Four, Word, Level, Index, Entry, Timing, Feed };
+enum class Width { One, Two, Three, Six, Word, Level, Index, Entry, Timing, Feed };
 struct BlockReg {
   std::string_view name;
   Width width;
 };
-// Names with a dot are registers of a submodule (u_sx, u_sy: the step/dir stages,
+// Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
 // rtl/dda_stepdir.v).
-inline constexpr std::array<BlockReg, 45> kBlockRegs{{
+inline constexpr std::array<BlockReg, 57> kBlockRegs{{
     {"ack_q", Width::One},           {"dat_q", Width::Word},
     {"head_q", Width::Index},        {"tail_q", Width::Index},
     {"level_q", Width::Level},       {"mask_q", Width::Entry},
-    {"primed_q", Width::One},        {"err_q", Width::One},
+    {"fetch_q", Width::Two},         {"err_q", Width::One},
     {"err_overflow_q", Width::One},  {"err_partial_q", Width::One},
     {"err_stall_q", Width::One},     {"aborted_q", Width::One},
     {"irq_status_q", Width::Three},  {"irq_enable_q", Width::Three},
@@ -73,14 +75,20 @@ inline constexpr std::array<BlockReg, 45> kBlockRegs{{
     {"dirsetup_x_q", Width::Timing}, {"dirhold_x_q", Width::Timing},
     {"steplen_y_q", Width::Timing},  {"stepspace_y_q", Width::Timing},
     {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing},
-    {"polarity_q", Width::Four},     {"u_sx.step_q", Width::One},
+    {"polarity_q", Width::Six},      {"u_sx.step_q", Width::One},
     {"u_sx.dir_q", Width::One},      {"u_sx.pend_q", Width::One},
     {"u_sx.pdir_q", Width::One},     {"u_sx.tf_q", Width::Timing},
     {"u_sx.ts_q", Width::Timing},    {"u_sx.tag_q", Width::One},
     {"u_sy.tag_q", Width::One},      {"u_sy.step_q", Width::One},
     {"u_sy.dir_q", Width::One},      {"u_sy.pend_q", Width::One},
     {"u_sy.pdir_q", Width::One},     {"u_sy.tf_q", Width::Timing},
-    {"u_sy.ts_q", Width::Timing},
+    {"u_sy.ts_q", Width::Timing},    {"pos_z_q", Width::Word},
+    {"steplen_z_q", Width::Timing},  {"stepspace_z_q", Width::Timing},
+    {"dirsetup_z_q", Width::Timing}, {"dirhold_z_q", Width::Timing},
+    {"u_sz.step_q", Width::One},     {"u_sz.dir_q", Width::One},
+    {"u_sz.pend_q", Width::One},     {"u_sz.pdir_q", Width::One},
+    {"u_sz.tf_q", Width::Timing},    {"u_sz.ts_q", Width::Timing},
+    {"u_sz.tag_q", Width::One},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -126,6 +134,7 @@ class MotionModel {
   // The pulses the stages started on the last edge (+1, -1 or 0 per axis).
   int rise_x() const { return rise_x_; }
   int rise_y() const { return rise_y_; }
+  int rise_z() const { return rise_z_; }
 
  private:
   std::uint32_t read(std::uint32_t adr) const;
@@ -143,7 +152,7 @@ class MotionModel {
   Wires bus_wires(const BusIn& b) const;
   void core_wires(bool ce, Wires& w) const;
   void step_core(bool rst_n, const Wires& w);
-  void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_
+  void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_, rise_z_
   void load_bus(const BusIn& b, const Wires& w);
   void load_queue(const Wires& w);
   void load_status(const BusIn& b, const Wires& w);  // status, interrupts, counters
@@ -156,7 +165,7 @@ class MotionModel {
   std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
   BlockRegs r_{};
   bool took_ = false, core_ce_ = false, iterated_ = false;
-  int rise_x_ = 0, rise_y_ = 0;
+  int rise_x_ = 0, rise_y_ = 0, rise_z_ = 0;
 };
 
 // The GTKWave save file of the motion block (docs/dda_motion.gtkw: `dda gen-params

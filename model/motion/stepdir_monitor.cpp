@@ -9,7 +9,7 @@
 namespace dda::motion {
 
 void StepDirChecker::load_timings(Axis& x, const BlockRegs& r, int a) {
-  const std::string n = a == 0 ? "x" : "y";
+  const std::string n(1, kAxes[std::size_t(a)]);
   const auto reg = [&](const std::string& f) { return r[breg(f + "_" + n + "_q")]; };
   x.len = std::max<std::uint64_t>(reg("steplen"), 1);
   x.space = std::max<std::uint64_t>(reg("stepspace"), 1);
@@ -19,7 +19,7 @@ void StepDirChecker::load_timings(Axis& x, const BlockRegs& r, int a) {
 
 void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos) {
   Axis& x = ax_[std::size_t(a)];
-  const std::string n = a == 0 ? "x" : "y";
+  const std::string n(1, kAxes[std::size_t(a)]);
   const std::uint64_t len = x.len, space = x.space, setup = x.setup, hold = x.hold;
   const auto fail = [&](const std::string& what) {
     throw GuardError("step/dir monitor, axis " + n + ", cycle " + std::to_string(cycle_) + ": " + what);
@@ -80,27 +80,26 @@ void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, c
   ++cycle_;
   const std::uint64_t pol = r[breg("polarity_q")];
   const auto inv = [&](std::string_view f) { return ((pol >> field_of("POLARITY", f).lsb) & 1u) != 0; };
-  const bool step_x = o.step_x != inv("step_x"), dir_x = o.dir_x != inv("dir_x");
-  const bool step_y = o.step_y != inv("step_y"), dir_y = o.dir_y != inv("dir_y");
-  const auto pos_x = std::uint32_t(r[breg("pos_x_q")]), pos_y = std::uint32_t(r[breg("pos_y_q")]);
-  if (!started_ || !rst_n) {  // the outputs and counters start again
-    started_ = true;
-    ax_ = {};
-    ax_[0].step = step_x;
-    ax_[0].dir = dir_x;
-    ax_[0].pos0 = pos_x;
-    ax_[1].step = step_y;
-    ax_[1].dir = dir_y;
-    ax_[1].pos0 = pos_y;
-    load_timings(ax_[0], r, 0);
-    load_timings(ax_[1], r, 1);
-    return;
-  }
+  const std::array<bool, kAxes.size()> steps{o.step_x, o.step_y, o.step_z}, dirs{o.dir_x, o.dir_y, o.dir_z};
+  const bool restart = !started_ || !rst_n;  // the outputs and counters start again
+  started_ = true;
+  if (restart) ax_ = {};
   // A write the block took on this edge: it acknowledges it after the edge.
   const std::uint32_t adr = bus.adr & ((1u << kAddrWidth) - 1) & ~3u;
   const bool wrote = bus.cyc && bus.stb && bus.we && o.ack;
-  check_axis(r, 0, step_x, dir_x, wrote && adr == reg_offset("POS_X"), pos_x);
-  check_axis(r, 1, step_y, dir_y, wrote && adr == reg_offset("POS_Y"), pos_y);
+  for (std::size_t a = 0; a < kAxes.size(); ++a) {
+    const std::string n(1, kAxes[a]), up(1, char(kAxes[a] - 'a' + 'A'));
+    const bool step = steps[a] != inv("step_" + n), dir = dirs[a] != inv("dir_" + n);
+    const auto pos = std::uint32_t(r[breg("pos_" + n + "_q")]);
+    if (restart) {
+      ax_[a].step = step;
+      ax_[a].dir = dir;
+      ax_[a].pos0 = pos;
+      load_timings(ax_[a], r, int(a));
+    } else {
+      check_axis(r, int(a), step, dir, wrote && adr == reg_offset("POS_" + up), pos);
+    }
+  }
 }
 
 }  // namespace dda::motion

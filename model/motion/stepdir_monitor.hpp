@@ -26,7 +26,7 @@ class StepDirChecker {
   // After an edge with these bus inputs and reset: the block's outputs and its registers
   // (the reference model's, kBlockRegs: the timings, polarity, position counters) after it.
   void edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const BlockRegs& r);
-  // Pulses seen per axis (0: x, 1: y) since the checker started.
+  // Pulses seen per axis (0: x, 1: y, 2: z) since the checker started.
   std::uint64_t pulses(int axis) const { return pulses_[std::size_t(axis)]; }
   // The shortest of each timing seen per axis, in cycles (kNone: not seen): pulse high,
   // low between pulses, direction before the first rising edge after a change, and
@@ -53,9 +53,9 @@ class StepDirChecker {
   static void load_timings(Axis& x, const BlockRegs& r, int a);
   void check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos);
 
-  std::array<Axis, 2> ax_{};
-  std::array<std::uint64_t, 2> pulses_{};
-  std::array<Shortest, 2> short_{};
+  std::array<Axis, kAxes.size()> ax_{};
+  std::array<std::uint64_t, kAxes.size()> pulses_{};
+  std::array<Shortest, kAxes.size()> short_{};
   bool started_ = false;
   std::uint64_t cycle_ = 0;
 };

@@ -9,7 +9,9 @@ using motion::kEntryWords;
 
 const std::uint32_t kCtrl = motion::reg_offset("CTRL"), kIrqStatus = motion::reg_offset("IRQ_STATUS"),
                     kIrqEnable = motion::reg_offset("IRQ_ENABLE"), kIrqLevel = motion::reg_offset("IRQ_LEVEL"),
-                    kPosX = motion::reg_offset("POS_X"), kPosY = motion::reg_offset("POS_Y");
+                    kPosX = motion::reg_offset("POS_X"), kPosY = motion::reg_offset("POS_Y"),
+                    kPosZ = motion::reg_offset("POS_Z");
+const std::string kAxisSuffix[] = {"_X", "_Y", "_Z"};
 
 cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
   cmd_t c;
@@ -22,13 +24,15 @@ cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
 dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
     : sc_core::sc_module(name),
       depth_log2_(depth_log2),
-      mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
+      mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)),
+      rd_row_q(motion::kRowWords, 0),
+      row0_q(motion::kRowWords, 0) {
   u_core.clk_i(clk_i);
   u_core.rst_ni(core_rst_n);
   u_core.ce_i(core_ce);
   u_core.cmd_valid_i(cmd_valid);
   u_core.cmd_ready_o(core_ready);
-  u_core.cmd_i(rd_q);
+  u_core.cmd_i(entry);
   u_core.step_x_o(step_x);
   u_core.step_y_o(step_y);
   u_core.dir_x_o(dir_x);
@@ -39,50 +43,48 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.done_o(core_done);
   u_core.err_o(core_err);
   u_core.iter_o(core_iter);
-  u_sx.clk_i(clk_i);
-  u_sx.rst_ni(rst_ni);
-  u_sx.flush_i(flush);
-  u_sx.step_i(step_x);
-  u_sx.dir_i(dir_x);
-  u_sx.tag_i(core_done);
-  u_sx.wait_o(sx_wait);
-  u_sx.tag_left_o(sx_tag_left);
-  u_sx.steplen_i(steplen_x_q);
-  u_sx.stepspace_i(stepspace_x_q);
-  u_sx.dirsetup_i(dirsetup_x_q);
-  u_sx.dirhold_i(dirhold_x_q);
-  u_sx.step_o(sx_step);
-  u_sx.dir_o(sx_dir);
-  u_sx.hold_o(sx_hold);
-  u_sx.rise_o(sx_rise);
-  u_sx.rise_dir_o(sx_rise_dir);
-  u_sx.busy_o(sx_busy);
-  u_sy.clk_i(clk_i);
-  u_sy.rst_ni(rst_ni);
-  u_sy.flush_i(flush);
-  u_sy.step_i(step_y);
-  u_sy.dir_i(dir_y);
-  u_sy.tag_i(core_done);
-  u_sy.wait_o(sy_wait);
-  u_sy.tag_left_o(sy_tag_left);
-  u_sy.steplen_i(steplen_y_q);
-  u_sy.stepspace_i(stepspace_y_q);
-  u_sy.dirsetup_i(dirsetup_y_q);
-  u_sy.dirhold_i(dirhold_y_q);
-  u_sy.step_o(sy_step);
-  u_sy.dir_o(sy_dir);
-  u_sy.hold_o(sy_hold);
-  u_sy.rise_o(sy_rise);
-  u_sy.rise_dir_o(sy_rise_dir);
-  u_sy.busy_o(sy_busy);
+  bind_stages();
 
   SC_METHOD(comb);
-  sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << primed_q
-            << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q << sx_step
-            << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy;
+  sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << fetch_q << level_q
+            << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q << sx_step << sx_dir
+            << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir << sz_hold << sz_busy;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
+}
+
+void dda_motion::bind_stages() {
+  struct Stage {
+    dda_stepdir& s;
+    sc_core::sc_signal<bool>&step, &dir, &out_step, &out_dir, &hold, &rise, &rise_dir, &wait, &tag_left, &busy;
+    sc_core::sc_signal<std::uint32_t>&steplen, &stepspace, &dirsetup, &dirhold;
+  };
+  for (Stage t : {Stage{u_sx, step_x, dir_x, sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left,
+                        sx_busy, steplen_x_q, stepspace_x_q, dirsetup_x_q, dirhold_x_q},
+                  Stage{u_sy, step_y, dir_y, sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left,
+                        sy_busy, steplen_y_q, stepspace_y_q, dirsetup_y_q, dirhold_y_q},
+                  Stage{u_sz, step_z, dir_z, sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left,
+                        sz_busy, steplen_z_q, stepspace_z_q, dirsetup_z_q, dirhold_z_q}}) {
+    t.s.clk_i(clk_i);
+    t.s.rst_ni(rst_ni);
+    t.s.flush_i(flush);
+    t.s.step_i(t.step);
+    t.s.dir_i(t.dir);
+    t.s.tag_i(core_done);
+    t.s.steplen_i(t.steplen);
+    t.s.stepspace_i(t.stepspace);
+    t.s.dirsetup_i(t.dirsetup);
+    t.s.dirhold_i(t.dirhold);
+    t.s.step_o(t.out_step);
+    t.s.dir_o(t.out_dir);
+    t.s.hold_o(t.hold);
+    t.s.rise_o(t.rise);
+    t.s.rise_dir_o(t.rise_dir);
+    t.s.wait_o(t.wait);
+    t.s.tag_left_o(t.tag_left);
+    t.s.busy_o(t.busy);
+  }
 }
 
 void dda_motion::comb() {
@@ -92,12 +94,13 @@ void dda_motion::comb() {
                      ((wb_dat_i.read() >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
-  cmd_valid.write(primed_q.read() && level_q.read() != 0);
+  cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
   // A timing written on this edge holds the core once (the stages' look-ahead used the old).
   const bool wr = req && wb_we_i.read();
   const bool wr_timing = wr && (adr == motion::reg_offset("STEP_X") || adr == motion::reg_offset("DIR_X") ||
-                                adr == motion::reg_offset("STEP_Y") || adr == motion::reg_offset("DIR_Y"));
-  const bool held = sx_hold.read() || sy_hold.read() || wr_timing;
+                                adr == motion::reg_offset("STEP_Y") || adr == motion::reg_offset("DIR_Y") ||
+                                adr == motion::reg_offset("STEP_Z") || adr == motion::reg_offset("DIR_Z"));
+  const bool held = sx_hold.read() || sy_hold.read() || sz_hold.read() || wr_timing;
   hold.write(held);
   const bool advance = ce_i.read() && !held;
   const std::uint32_t feed = feed_q.read(), sum = acc_q.read() + feed;
@@ -111,7 +114,9 @@ void dda_motion::comb() {
   step_y_o.write(sy_step.read() != inv("step_y"));
   dir_x_o.write(sx_dir.read() != inv("dir_x"));
   dir_y_o.write(sy_dir.read() != inv("dir_y"));
-  busy_o.write(core_busy.read() || sx_busy.read() || sy_busy.read());
+  step_z_o.write(sz_step.read() != inv("step_z"));
+  dir_z_o.write(sz_dir.read() != inv("dir_z"));
+  busy_o.write(core_busy.read() || sx_busy.read() || sy_busy.read() || sz_busy.read());
   irq_o.write((irq_status_q.read() & irq_enable_q.read()) != 0);
 }
 
@@ -122,15 +127,17 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == motion::reg_offset("CONFIG")) {
     return std::uint32_t(kEntryWords) << std::uint32_t(motion::field_of("CONFIG", "entry_words").lsb) |
            std::uint32_t(depth_log2_) << std::uint32_t(motion::field_of("CONFIG", "depth_log2").lsb) |
+           std::uint32_t(motion::kEntryRows) << std::uint32_t(motion::field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(motion::field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb);
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
-    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read()) | bit("empty", level == 0) |
-           bit("full", level == depth) | bit("err", err_q.read()) | bit("err_overflow", err_overflow_q.read()) |
-           bit("err_partial", err_partial_q.read()) | bit("err_stall", err_stall_q.read()) |
-           bit("aborted", aborted_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
+    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read() || sz_busy.read()) |
+           bit("empty", level == 0) | bit("full", level == depth) | bit("err", err_q.read()) |
+           bit("err_overflow", err_overflow_q.read()) | bit("err_partial", err_partial_q.read()) |
+           bit("err_stall", err_stall_q.read()) | bit("aborted", aborted_q.read()) |
+           level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
   if (adr == kIrqEnable) return irq_enable_q.read();
@@ -139,13 +146,14 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == motion::reg_offset("ERR_COUNT")) return err_count_q.read();
   if (adr == kPosX) return pos_x_q.read();
   if (adr == kPosY) return pos_y_q.read();
+  if (adr == kPosZ) return pos_z_q.read();
   if (adr == motion::reg_offset("ENTRY_MASK")) return mask_q.read();
   if (adr == motion::reg_offset("POLARITY")) return polarity_q.read();
   std::uint32_t v = 0;
   const auto regs = timing_regs();
   for (std::size_t i = 0; i < regs.size(); ++i) {
     const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
-    const std::string r = std::string(t.reg) + (i < motion::kTimingFields.size() ? "_X" : "_Y");
+    const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
     if (adr == motion::reg_offset(r)) v |= regs[i]->read() << motion::field_of(r, t.name).lsb;
   }
   return v;
@@ -154,7 +162,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
 // The decode of this edge's bus request and queue (the RTL's wires), read from the ports
 // and registers before the edge.
 struct dda_motion::Decode {
-  std::uint32_t adr = 0, dat = 0, word = 0, tail = 0, level_d = 0, head_d = 0;
+  std::uint32_t adr = 0, dat = 0, word = 0, tail = 0, level_d = 0, head_d = 0, fetch_d = 0;
   bool req = false, wr = false, abort = false, clear = false;
   bool entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false, take = false;
 };
@@ -185,23 +193,35 @@ dda_motion::Decode dda_motion::decode() const {
   d.take = cmd_valid.read() && core_ready.read() && !d.abort;
   d.level_d = level + d.commit_ok - d.take;
   d.head_d = !rst_ni.read() ? 0 : d.abort ? d.tail : d.take ? (head + 1) & imask : head;
+  // Row 0 of the head after it moves, while the queue is empty and after reset; else row 1.
+  const bool refetch = !rst_ni.read() || level == 0 || d.take || d.abort || fetch_q.read() == 0;
+  d.fetch_d = refetch ? 1 : 2;
   return d;
 }
 
-// The RAM lanes: read at the next head address, then this edge's entry word written.
+// The RAM lanes: row 0 kept when the output holds it, the row fetch_d of the next head
+// read, then this edge's entry word written; the command of the two rows to the core.
 void dda_motion::seq_ram(const Decode& d) {
-  rd_q.write(entry_bits(mem_[d.head_d]));  // read before this edge's write
-  rd_feed_q.write((mem_[d.head_d][motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
+  if (fetch_q.read() == 1) row0_q = rd_row_q;
+  const std::size_t first = d.fetch_d == 2 ? motion::kRowWords : 0;
+  const auto& slot = mem_[d.head_d];
+  for (std::size_t k = 0; k < rd_row_q.size(); ++k)
+    rd_row_q[k] = first + k < slot.size() ? slot[first + k] : 0;  // read before this edge's write
   if (d.entry_ok) mem_[d.tail][d.word] = d.dat;
+  std::vector<std::uint32_t> words(row0_q);
+  words.insert(words.end(), rd_row_q.begin(), rd_row_q.end());
+  entry.write(entry_bits(words));
+  entry_feed.write((words[motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
 }
 
 void dda_motion::seq_reset() {
-  for (auto* s : {&ack_q, &primed_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
+  for (auto* s : {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
     s->write(false);
-  for (auto* s : {&dat_q,        &head_q,        &tail_q,       &level_q,       &mask_q,       &irq_status_q,
-                  &irq_enable_q, &irq_level_q,   &done_count_q, &err_count_q,   &pos_x_q,      &pos_y_q,
-                  &feed_q,       &acc_q,         &steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
-                  &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q,   &polarity_q})
+  for (auto* s : {&dat_q,        &head_q,        &tail_q,        &level_q,       &mask_q,       &irq_status_q,
+                  &irq_enable_q, &irq_level_q,   &done_count_q,  &err_count_q,   &pos_x_q,      &pos_y_q,
+                  &feed_q,       &acc_q,         &steplen_x_q,   &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
+                  &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q,  &dirhold_y_q,   &polarity_q,   &pos_z_q,
+                  &fetch_q,      &steplen_z_q,   &stepspace_z_q, &dirsetup_z_q,  &dirhold_z_q})
     s->write(0);
 }
 
@@ -211,10 +231,10 @@ void dda_motion::seq_bus(const Decode& d) {
   if (d.req && !wb_we_i.read()) dat_q.write(read(d.adr));
 }
 
-// primed_q, head_q, level_q, tail_q, mask_q.
+// fetch_q, head_q, level_q, tail_q, mask_q.
 void dda_motion::seq_queue(const Decode& d) {
   const std::uint32_t imask = (1u << depth_log2_) - 1;
-  primed_q.write(true);
+  fetch_q.write(d.fetch_d);
   head_q.write(d.head_d);
   if (d.abort) {
     level_q.write(0);
@@ -233,9 +253,9 @@ void dda_motion::seq_queue(const Decode& d) {
 // done_wait_q, the sticky errors, the interrupt registers, the counters and positions.
 void dda_motion::seq_status(const Decode& d) {
   // A piece is done once its last steps (tagged on the core's done_o) have left.
-  const bool tags_left = sx_tag_left.read() || sy_tag_left.read();
+  const bool tags_left = sx_tag_left.read() || sy_tag_left.read() || sz_tag_left.read();
   const bool old_done = done_wait_q.read() && !tags_left;
-  const bool new_wait = core_done.read() && (sx_wait.read() || sy_wait.read());
+  const bool new_wait = core_done.read() && (sx_wait.read() || sy_wait.read() || sz_wait.read());
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
   done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
@@ -256,9 +276,11 @@ void dda_motion::seq_status(const Decode& d) {
   err_count_q.write(err_count_q.read() + cerr);
   const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dz = sz_rise.read() ? (sz_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   // A preset is the position before the steps of the same edge: none is lost.
   pos_x_q.write((d.wr && d.adr == kPosX ? d.dat : pos_x_q.read()) + dx);
   pos_y_q.write((d.wr && d.adr == kPosY ? d.dat : pos_y_q.read()) + dy);
+  pos_z_q.write((d.wr && d.adr == kPosZ ? d.dat : pos_z_q.read()) + dz);
 }
 
 // feed_q, acc_q: the phase accumulator that paces the core.
@@ -268,7 +290,7 @@ void dda_motion::seq_feed(const Decode& d) {
     feed_q.write(0);
     acc_q.write(0);
   } else {
-    if (d.take) feed_q.write(rd_feed_q.read());
+    if (d.take) feed_q.write(entry_feed.read());
     if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
   }
 }
@@ -279,10 +301,10 @@ void dda_motion::seq_settings(const Decode& d) {
   const auto regs = timing_regs();
   for (std::size_t i = 0; i < regs.size(); ++i) {
     const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
-    const std::string r = std::string(t.reg) + (i < motion::kTimingFields.size() ? "_X" : "_Y");
+    const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
     if (d.wr && d.adr == motion::reg_offset(r)) regs[i]->write((d.dat >> motion::field_of(r, t.name).lsb) & tmask);
   }
-  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.dat & 0xFu);
+  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.dat & 0x3Fu);
 }
 
 void dda_motion::seq() {

@@ -2,8 +2,9 @@
 // SystemC model of the motion block: same ports, registers and hierarchy as
 // rtl/dda_motion.v (docs/design.md, "Motion block"), around the SystemC model of the
 // core. Register for register: a co-simulation names the register and the cycle where
-// the two differ. The queue memory is a plain array; `rd_q` holds the entry read at the
-// next head address on the last edge (the RTL's block-RAM output registers).
+// the two differ. The queue memory is a plain array of entries; `rd_row_q` holds the row
+// of the head entry read on the last edge (the RTL's block-RAM output registers),
+// `row0_q` the row 0 kept from the edge before.
 #pragma once
 
 #include <array>
@@ -24,52 +25,56 @@ SC_MODULE(dda_motion) {
   sc_core::sc_out<std::uint32_t> wb_dat_o;
   sc_core::sc_out<bool> wb_ack_o, wb_stall_o;
   sc_core::sc_in<bool> ce_i;
-  sc_core::sc_out<bool> step_x_o, step_y_o, dir_x_o, dir_y_o, busy_o, irq_o;
+  sc_core::sc_out<bool> step_x_o, step_y_o, dir_x_o, dir_y_o, step_z_o, dir_z_o, busy_o, irq_o;
 
   SC_HAS_PROCESS(dda_motion);
   dda_motion(sc_core::sc_module_name name, int depth_log2);
 
   dda_core u_core{"u_core"};
-  dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"};
+  dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"}, u_sz{"u_sz"};
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
-  sc_core::sc_signal<bool> ack_q{"ack_q"}, primed_q{"primed_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"},
-      err_overflow_q{"err_overflow_q"}, err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"},
-      aborted_q{"aborted_q"};
+  sc_core::sc_signal<bool> ack_q{"ack_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
+      err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"};
   sc_core::sc_signal<std::uint32_t> dat_q{"dat_q"}, head_q{"head_q"}, tail_q{"tail_q"}, level_q{"level_q"},
       mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
       done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"},
-      feed_q{"feed_q"}, acc_q{"acc_q"}, steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"},
-      dirsetup_x_q{"dirsetup_x_q"}, dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"},
-      stepspace_y_q{"stepspace_y_q"}, dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"},
-      polarity_q{"polarity_q"};
+      pos_z_q{"pos_z_q"}, fetch_q{"fetch_q"}, steplen_z_q{"steplen_z_q"}, stepspace_z_q{"stepspace_z_q"},
+      dirsetup_z_q{"dirsetup_z_q"}, dirhold_z_q{"dirhold_z_q"}, feed_q{"feed_q"}, acc_q{"acc_q"},
+      steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"}, dirsetup_x_q{"dirsetup_x_q"},
+      dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"}, stepspace_y_q{"stepspace_y_q"},
+      dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"}, polarity_q{"polarity_q"};
 
  private:
   int depth_log2_;
   std::vector<std::vector<std::uint32_t>> mem_;
-  sc_core::sc_signal<cmd_t> rd_q{"rd_q"};
-  sc_core::sc_signal<std::uint32_t> rd_feed_q{"rd_feed_q"};  // the feed lane of the RAM output
+  std::vector<std::uint32_t> rd_row_q, row0_q;  // the RAM output and the row 0 kept (words)
+  sc_core::sc_signal<cmd_t> entry{"entry"};     // the command of {rd_row_q, row0_q}
+  sc_core::sc_signal<std::uint32_t> entry_feed{"entry_feed"};
   // Wires.
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
-  sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};    // the third axis: no stage here yet
+  sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};
   sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
   sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
       sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};
   sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
       sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
+  sc_core::sc_signal<bool> sz_step{"sz_step"}, sz_dir{"sz_dir"}, sz_hold{"sz_hold"}, sz_rise{"sz_rise"},
+      sz_rise_dir{"sz_rise_dir"}, sz_wait{"sz_wait"}, sz_tag_left{"sz_tag_left"}, sz_busy{"sz_busy"};
   sc_core::sc_signal<bool> hold{"hold"};
 
-  // The timing registers in motion::kTimingFields' order, X's then Y's.
-  std::array<sc_core::sc_signal<std::uint32_t>*, 8> timing_regs() {
-    return {&steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
-            &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q};
+  // The timing registers in motion::kTimingFields' order, X's, Y's then Z's.
+  std::array<sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() {
+    return {&steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,   &steplen_y_q,  &stepspace_y_q,
+            &dirsetup_y_q, &dirhold_y_q,   &steplen_z_q,  &stepspace_z_q, &dirsetup_z_q, &dirhold_z_q};
   }
-  std::array<const sc_core::sc_signal<std::uint32_t>*, 8> timing_regs() const {
-    return {&steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
-            &steplen_y_q, &stepspace_y_q, &dirsetup_y_q, &dirhold_y_q};
+  std::array<const sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() const {
+    return {&steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,   &steplen_y_q,  &stepspace_y_q,
+            &dirsetup_y_q, &dirhold_y_q,   &steplen_z_q,  &stepspace_z_q, &dirsetup_z_q, &dirhold_z_q};
   }
+  void bind_stages();
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;

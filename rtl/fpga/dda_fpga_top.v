@@ -2,17 +2,20 @@
 // Place-and-route wrapper that counts the core's own cells (scripts/synth,
 // core_logic_cells): the core runs a command list from block RAM, so the only logic
 // beside it is this wrapper's control. The command memory holds CMD_DEPTH words of
-// DDA_CMD_WIDTH bits as 16-bit lanes, one iCE40 EBR (SB_RAM40_4K, 256 x 16) per lane
-// (42 at the default widths); EBRs are not logic cells. A host writes it 16 bits at a
-// time on its own clock (wclk_i, we_i, waddr_i = {word, lane}, wdata_i; no read-during-write
-// logic then), so synthesis cannot see its contents
-// and the core stays general; after reset the words 0 .. end_i-1 are offered to the
-// core back to back. Not part of the IP: it exists so that place and route sees the
-// core as a design would use it, without a 666-bit shift register in front of it.
+// DDA_CMD_WIDTH bits as 16-bit lanes, each word in two rows as the motion block's queue
+// holds an entry (42 lanes at the default widths would take more EBRs than the HX8K's
+// 32): 21 lanes of one iCE40 EBR each (SB_RAM40_4K, 256 x 16, two rows per word at
+// CMD_DEPTH 128); EBRs are not logic cells, row0_q (the first row kept while the second
+// is read) is the wrapper's. A host writes it 16 bits at a time on its own clock
+// (wclk_i, we_i, waddr_i = {word, lane}, wdata_i; no read-during-write logic then), so
+// synthesis cannot see its contents and the core stays general; after reset the words
+// 0 .. end_i-1 are offered to the core, each two edges after the one before was taken.
+// Not part of the IP: it exists so that place and route sees the core as a design would
+// use it, without a 666-bit shift register in front of it.
 `include "dda_params.vh"
 
 module dda_fpga_top #(
-  parameter integer CMD_DEPTH = 256,
+  parameter integer CMD_DEPTH = 128,
   parameter         Impl      = "small"  // the core's implementation (dda_core.Impl)
 ) (
   input  wire                                  clk_i,
@@ -39,33 +42,40 @@ module dda_fpga_top #(
   localparam integer AddrWidth = $clog2(CMD_DEPTH);
   localparam integer Lanes     = (`DDA_CMD_WIDTH + 15) / 16;
   localparam integer LaneBits  = $clog2(Lanes);
+  localparam integer RowLanes  = (Lanes + 1) / 2;
 
-  // cmd_q always holds word addr_q one edge after addr_q changes: the read address is
-  // the next address, so an accepted command is followed by the next word at once and
-  // the core can load it on its finishing edge (back to back).
-  reg  [AddrWidth-1:0] addr_q;
-  reg                  primed_q;  // cmd_q holds word addr_q
-  wire [16*Lanes-1:0]  cmd_q;
-  wire                 cmd_valid = primed_q & (addr_q != end_i);
-  wire                 accept = cmd_valid & cmd_ready_o;
-  wire [AddrWidth-1:0] addr_d = !rst_ni ? '0 : accept ? addr_q + 1'b1 : addr_q;
+  // The RAM reads row 0 of word addr_d after addr moves (and after reset), then row 1
+  // while row0_q keeps row 0: the word is whole when fetch_q is 2.
+  reg  [AddrWidth-1:0]  addr_q;
+  reg  [1:0]            fetch_q;  // rows of word addr_q read
+  wire                  cmd_valid = (fetch_q == 2'd2) & (addr_q != end_i);
+  wire                  accept = cmd_valid & cmd_ready_o;
+  wire [AddrWidth-1:0]  addr_d = !rst_ni ? '0 : accept ? addr_q + 1'b1 : addr_q;
+  wire [1:0]            fetch_d = (!rst_ni | accept | fetch_q == 2'd0) ? 2'd1 : 2'd2;
+  wire [16*RowLanes-1:0] rd_row;
+  reg  [16*RowLanes-1:0] row0_q;
+  wire [32*RowLanes-1:0] cmd_q = {rd_row, row0_q};
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
-      addr_q   <= '0;
-      primed_q <= 1'b0;
+      addr_q  <= '0;
+      fetch_q <= 2'd0;
     end else begin
-      addr_q   <= addr_d;
-      primed_q <= 1'b1;
+      addr_q  <= addr_d;
+      fetch_q <= fetch_d;
     end
+    if (fetch_q == 2'd1) row0_q <= rd_row;
   end
 
-  for (genvar l = 0; l < Lanes; l++) begin : g_lane
-    reg [15:0] mem [0:CMD_DEPTH-1];
+  wire [LaneBits-1:0]  wlane = waddr_i[LaneBits-1:0];
+  wire                 wrow = wlane >= LaneBits'(RowLanes);
+  wire [AddrWidth-1:0] wword = waddr_i[AddrWidth+LaneBits-1:LaneBits];
+  for (genvar l = 0; l < RowLanes; l++) begin : g_lane
+    reg [15:0] mem [0:2*CMD_DEPTH-1];
     reg [15:0] rd_q;
-    always @(posedge wclk_i) if (we_i && waddr_i[LaneBits-1:0] == l) mem[waddr_i[AddrWidth+LaneBits-1:LaneBits]] <= wdata_i;
-    always @(posedge clk_i) rd_q <= mem[addr_d];
-    assign cmd_q[16*l+:16] = rd_q;
+    always @(posedge wclk_i) if (we_i && (wlane == LaneBits'(l) || wlane == LaneBits'(l + RowLanes))) mem[{wword, wrow}] <= wdata_i;
+    always @(posedge clk_i) rd_q <= mem[{addr_d, fetch_d == 2'd2}];
+    assign rd_row[16*l+:16] = rd_q;
   end
 
   dda_core #(.Impl(Impl)) u_core (

@@ -17,6 +17,8 @@ BlockOutputs MotionCosim::Ports::read() const {
   o.step_y = step_y.read();
   o.dir_x = dir_x.read();
   o.dir_y = dir_y.read();
+  o.step_z = step_z.read();
+  o.dir_z = dir_z.read();
   o.busy = busy.read();
   o.irq = irq.read();
   return o;
@@ -40,6 +42,8 @@ void MotionCosim::bind(M& m, Ports& p) {
   m.step_y_o(p.step_y);
   m.dir_x_o(p.dir_x);
   m.dir_y_o(p.dir_y);
+  m.step_z_o(p.step_z);
+  m.dir_z_o(p.dir_z);
   m.busy_o(p.busy);
   m.irq_o(p.irq);
 }

@@ -42,10 +42,12 @@ class MotionCosim : public BusTarget {
           step_y((p + "step_y").c_str()),
           dir_x((p + "dir_x").c_str()),
           dir_y((p + "dir_y").c_str()),
+          step_z((p + "step_z").c_str()),
+          dir_z((p + "dir_z").c_str()),
           busy((p + "busy").c_str()),
           irq((p + "irq").c_str()) {}
     sc_core::sc_signal<std::uint32_t> dat;
-    sc_core::sc_signal<bool> ack, stall, step_x, step_y, dir_x, dir_y, busy, irq;
+    sc_core::sc_signal<bool> ack, stall, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, irq;
     BlockOutputs read() const;
   };
   template <typename M>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Self-checking bench for a bus-level vector set written by `dda vectors --bus`
-// (docs/vectors.md): the motion block (rtl/dda_motion.v, queue depth 2^8) driven by the
+// (docs/vectors.md): the motion block (rtl/dda_motion.v, its largest queue) driven by the
 // set's Wishbone cycles. Runs unchanged under Icarus (iverilog -g2012 + vvp) and
 // under verilator --binary. Argument: +vectors=DIR, the vector set.
 // Each cycle: apply that cycle's inputs, clock one rising edge, compare the outputs and
@@ -20,7 +20,7 @@ module dda_bus_tb;
   reg  [`DDA_MOTION_ADDR_WIDTH-1:0] adr = '0;
   reg  [31:0]                       dat_i = 32'd0;
   wire [31:0]                       dat_o;
-  wire                              ack, stall, step_x, step_y, dir_x, dir_y, busy, irq;
+  wire                              ack, stall, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, irq;
 
   dda_motion dut (
     .clk_i      (clk),
@@ -39,6 +39,8 @@ module dda_bus_tb;
     .step_y_o   (step_y),
     .dir_x_o    (dir_x),
     .dir_y_o    (dir_y),
+    .step_z_o   (step_z),
+    .dir_z_o    (dir_z),
     .busy_o     (busy),
     .irq_o      (irq)
   );

@@ -3,20 +3,23 @@
 // per-cycle layout of `dda vectors --bus` (docs/vectors.md). Do not edit: ctest
 // vectors.bus.fields_in_sync checks it.
 `define DDA_BVEC_IN_WIDTH 45
-`define DDA_BVEC_EXP_WIDTH 145
-`define DDA_BVEC_GOT {ack, stall, dat_o, step_x, step_y, dir_x, dir_y, busy, irq, dut.pos_x_q, dut.pos_y_q, dut.level_q, dut.done_count_q}
+`define DDA_BVEC_EXP_WIDTH 178
+`define DDA_BVEC_GOT {ack, stall, dat_o, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, irq, dut.pos_x_q, dut.pos_y_q, dut.pos_z_q, dut.level_q, dut.done_count_q}
 `define DDA_BVEC_REPORT(cyc, exp, got) \
-  if ((exp[144:144]) !== (got[144:144])) $display("MISMATCH cycle %0d field wb_ack_o: expected 'h%0h, got 'h%0h", cyc, exp[144:144], got[144:144]); \
-  else if ((exp[143:143]) !== (got[143:143])) $display("MISMATCH cycle %0d field wb_stall_o: expected 'h%0h, got 'h%0h", cyc, exp[143:143], got[143:143]); \
-  else if ((exp[142:111]) !== (got[142:111])) $display("MISMATCH cycle %0d field wb_dat_o: expected 'h%0h, got 'h%0h", cyc, exp[142:111], got[142:111]); \
-  else if ((exp[110:110]) !== (got[110:110])) $display("MISMATCH cycle %0d field step_x_o: expected 'h%0h, got 'h%0h", cyc, exp[110:110], got[110:110]); \
-  else if ((exp[109:109]) !== (got[109:109])) $display("MISMATCH cycle %0d field step_y_o: expected 'h%0h, got 'h%0h", cyc, exp[109:109], got[109:109]); \
-  else if ((exp[108:108]) !== (got[108:108])) $display("MISMATCH cycle %0d field dir_x_o: expected 'h%0h, got 'h%0h", cyc, exp[108:108], got[108:108]); \
-  else if ((exp[107:107]) !== (got[107:107])) $display("MISMATCH cycle %0d field dir_y_o: expected 'h%0h, got 'h%0h", cyc, exp[107:107], got[107:107]); \
-  else if ((exp[106:106]) !== (got[106:106])) $display("MISMATCH cycle %0d field busy_o: expected 'h%0h, got 'h%0h", cyc, exp[106:106], got[106:106]); \
-  else if ((exp[105:105]) !== (got[105:105])) $display("MISMATCH cycle %0d field irq_o: expected 'h%0h, got 'h%0h", cyc, exp[105:105], got[105:105]); \
-  else if ((exp[104:73]) !== (got[104:73])) $display("MISMATCH cycle %0d field pos_x_q: expected 'h%0h, got 'h%0h", cyc, exp[104:73], got[104:73]); \
-  else if ((exp[72:41]) !== (got[72:41])) $display("MISMATCH cycle %0d field pos_y_q: expected 'h%0h, got 'h%0h", cyc, exp[72:41], got[72:41]); \
-  else if ((exp[40:32]) !== (got[40:32])) $display("MISMATCH cycle %0d field level_q: expected 'h%0h, got 'h%0h", cyc, exp[40:32], got[40:32]); \
+  if ((exp[177:177]) !== (got[177:177])) $display("MISMATCH cycle %0d field wb_ack_o: expected 'h%0h, got 'h%0h", cyc, exp[177:177], got[177:177]); \
+  else if ((exp[176:176]) !== (got[176:176])) $display("MISMATCH cycle %0d field wb_stall_o: expected 'h%0h, got 'h%0h", cyc, exp[176:176], got[176:176]); \
+  else if ((exp[175:144]) !== (got[175:144])) $display("MISMATCH cycle %0d field wb_dat_o: expected 'h%0h, got 'h%0h", cyc, exp[175:144], got[175:144]); \
+  else if ((exp[143:143]) !== (got[143:143])) $display("MISMATCH cycle %0d field step_x_o: expected 'h%0h, got 'h%0h", cyc, exp[143:143], got[143:143]); \
+  else if ((exp[142:142]) !== (got[142:142])) $display("MISMATCH cycle %0d field step_y_o: expected 'h%0h, got 'h%0h", cyc, exp[142:142], got[142:142]); \
+  else if ((exp[141:141]) !== (got[141:141])) $display("MISMATCH cycle %0d field dir_x_o: expected 'h%0h, got 'h%0h", cyc, exp[141:141], got[141:141]); \
+  else if ((exp[140:140]) !== (got[140:140])) $display("MISMATCH cycle %0d field dir_y_o: expected 'h%0h, got 'h%0h", cyc, exp[140:140], got[140:140]); \
+  else if ((exp[139:139]) !== (got[139:139])) $display("MISMATCH cycle %0d field step_z_o: expected 'h%0h, got 'h%0h", cyc, exp[139:139], got[139:139]); \
+  else if ((exp[138:138]) !== (got[138:138])) $display("MISMATCH cycle %0d field dir_z_o: expected 'h%0h, got 'h%0h", cyc, exp[138:138], got[138:138]); \
+  else if ((exp[137:137]) !== (got[137:137])) $display("MISMATCH cycle %0d field busy_o: expected 'h%0h, got 'h%0h", cyc, exp[137:137], got[137:137]); \
+  else if ((exp[136:136]) !== (got[136:136])) $display("MISMATCH cycle %0d field irq_o: expected 'h%0h, got 'h%0h", cyc, exp[136:136], got[136:136]); \
+  else if ((exp[135:104]) !== (got[135:104])) $display("MISMATCH cycle %0d field pos_x_q: expected 'h%0h, got 'h%0h", cyc, exp[135:104], got[135:104]); \
+  else if ((exp[103:72]) !== (got[103:72])) $display("MISMATCH cycle %0d field pos_y_q: expected 'h%0h, got 'h%0h", cyc, exp[103:72], got[103:72]); \
+  else if ((exp[71:40]) !== (got[71:40])) $display("MISMATCH cycle %0d field pos_z_q: expected 'h%0h, got 'h%0h", cyc, exp[71:40], got[71:40]); \
+  else if ((exp[39:32]) !== (got[39:32])) $display("MISMATCH cycle %0d field level_q: expected 'h%0h, got 'h%0h", cyc, exp[39:32], got[39:32]); \
   else if ((exp[31:0]) !== (got[31:0])) $display("MISMATCH cycle %0d field done_count_q: expected 'h%0h, got 'h%0h", cyc, exp[31:0], got[31:0]); \
   else $display("MISMATCH cycle %0d", cyc);

@@ -24,6 +24,7 @@ class Mix {
       : rng_(seed),
         gen_(seed, max_axis, 4, ArcKind::Program),
         short_arcs_(seed + 3, std::min<std::int64_t>(max_axis, 8), 4, ArcKind::Program),
+        spatial_(seed + 4, max_axis, 4, ArcKind::Spatial),
         timing_(t),
         mon_(timing_),
         m_(mon_, seed + 1, pipelined, 20),
@@ -49,7 +50,7 @@ class Mix {
 
   MixStats st_;
   std::mt19937_64 rng_;
-  RandomArcs gen_, short_arcs_;
+  RandomArcs gen_, short_arcs_, spatial_;
   StepDirMonitor timing_;
   PieceMonitor mon_;
   WishboneMaster m_;
@@ -79,24 +80,29 @@ MixStats Mix::run(std::uint64_t arcs) {
     check_position(want);
   }
   st_.piece_checks = mon_.checked();
-  st_.pulses = timing_.pulses(0) + timing_.pulses(1);
+  st_.pulses = timing_.pulses(0) + timing_.pulses(1) + timing_.pulses(2);
+  st_.pulses_z = timing_.pulses(2);
   return st_;
 }
 
 // The arcs of a batch: one short arc if large, else one to four, no more than the run
-// still needs.
+// still needs; a third of the others move the third axis (3-D lines, plunges, helices).
 std::vector<Plan> Mix::draw_batch(bool large, std::uint64_t arcs) {
   std::vector<Plan> batch;
   const std::uint64_t n = large ? 1 : 1 + rng_() % 4;
   while (batch.size() < n && st_.arcs + batch.size() < arcs) {
-    if (auto p = (large ? short_arcs_ : gen_).next()) batch.push_back(std::move(*p));
+    RandomArcs& g = large ? short_arcs_ : rng_() % 3 == 0 ? spatial_ : gen_;
+    if (auto p = g.next()) {
+      st_.spatial += &g == &spatial_;
+      batch.push_back(std::move(*p));
+    }
   }
   return batch;
 }
 
 // The batch's step/dir timings (all 0 on an even kind) and output polarity.
 void Mix::set_outputs(unsigned kind, bool large) {
-  for (const char axis : {'x', 'y'}) {
+  for (const char axis : kAxes) {
     const auto draw = [&]() -> std::uint32_t {
       if (large) return rng_() % 8 == 0 ? kTimingMax : std::uint32_t(rng_() % 1024);
       return std::uint32_t(rng_() % 9);
@@ -107,7 +113,7 @@ void Mix::set_outputs(unsigned kind, bool large) {
   }
   st_.timed_batches += large || kind % 2 == 1;
   st_.large_timing_batches += large;
-  d_.set_polarity(std::uint32_t(rng_() % 16));
+  d_.set_polarity(std::uint32_t(rng_() % 64));
 }
 
 // A partial entry committed: refused, with err_partial.
@@ -128,13 +134,13 @@ Point Mix::queue_batch(const std::vector<Plan>& batch) {
   Point at = batch.front().from;
   for (const auto& p : batch) {
     for (const auto& piece : p.pieces) {
-      at = Point{at.x + (piece.to.x - piece.from.x), at.y + (piece.to.y - piece.from.y)};
+      at = at + Point{piece.to.x - piece.from.x, piece.to.y - piece.from.y, piece.to.z - piece.from.z};
       mon_.expect(at);
       const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng_() % 0xE000);
       st_.fed_pieces += feed != 0;
       d_.queue(piece.cmd, feed);
     }
-    want = Point{want.x + (p.to.x - p.from.x), want.y + (p.to.y - p.from.y)};
+    want = want + Point{p.to.x - p.from.x, p.to.y - p.from.y, p.to.z - p.from.z};
     st_.pieces += p.pieces.size();
   }
   return want;
@@ -203,10 +209,12 @@ void Mix::overflow(const Plan& first) {
 void Mix::check_position(Point want) {
   const Point got = d_.position();
   ++st_.position_checks;
-  if (got.x != want.x || got.y != want.y) {
-    throw GuardError("motion mix: the position counters read (" + std::to_string(got.x) + ", " + std::to_string(got.y) +
-                     "), the batch ends at (" + std::to_string(want.x) + ", " + std::to_string(want.y) +
-                     "); last arc: " + gen_.drawn_options());
+  if (got != want) {
+    const auto text = [](Point p) {
+      return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+    };
+    throw GuardError("motion mix: the position counters read " + text(got) + ", the batch ends at " + text(want) +
+                     "; last arcs: " + gen_.drawn_options() + " / " + spatial_.drawn_options());
   }
 }
 
