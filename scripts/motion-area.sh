@@ -45,23 +45,23 @@ row() {  # row LABEL "LUT4s FFs carries"
 # Each figure in an assignment of its own, so that a failed edit or synthesis stops the script.
 depth3=$(luts rtl/dda_motion.v 3)
 f=$(variant nopreset '(wr_pos_x ? wb_dat_i : pos_x_q) + dx' 'pos_x_q + dx' \
-  '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy')
+  '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy' '(wr_pos_z ? wb_dat_i : pos_z_q) + dz' 'pos_z_q + dz')
 nopreset=$(luts "$f")
 f=$(variant count16 'reg [31:0] done_count_q' 'reg [15:0] done_count_q' 'reg [31:0] err_count_q' \
   'reg [15:0] err_count_q' "{31'd0, old_done} + {31'd0, new_done}" "{15'd0, old_done} + {15'd0, new_done}" \
   "{31'd0, core_err}" "{15'd0, core_err}")
 count16=$(luts "$f")
 f=$(variant noreadmux 'if (req && !wb_we_i) dat_q <= rd;' \
-  'if (req && !wb_we_i) dat_q <= pos_x_q ^ pos_y_q ^ done_count_q ^ err_count_q;')
+  'if (req && !wb_we_i) dat_q <= pos_x_q ^ pos_y_q ^ pos_z_q ^ done_count_q ^ err_count_q;')
 noreadmux=$(luts "$f")
 echo "| rtl/dda_motion.v, core a black box | LUT4s | flip-flops | carry cells | LUT4s vs the block |"
 echo "|---|---|---|---|---|"
-row "the block (queue 2^8 entries)" "$base"
+row "the block (queue 2^7 entries)" "$base"
 row "queue 2^3 entries (DepthLog2 = 3)" "$depth3"
 row "no position preset" "$nopreset"
 row "done and err counters of 16 bits" "$count16"
-row "read multiplexer replaced by the XOR of the four 32-bit registers" "$noreadmux"
-# One step/dir stage by itself (two in the block).
+row "read multiplexer replaced by the XOR of the five 32-bit registers" "$noreadmux"
+# One step/dir stage by itself (three in the block).
 yosys -q -p "read_verilog -sv -Irtl rtl/dda_stepdir.v; synth_ice40 -top dda_stepdir; tee -o $work/stat.txt stat" >/dev/null
 echo
 echo "one step/dir stage alone (rtl/dda_stepdir.v, 12-bit timings): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 ~ /^SB_DFF/ {s += $2} END {print s}' "$work/stat.txt") flip-flops, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"

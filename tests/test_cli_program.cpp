@@ -210,12 +210,15 @@ TEST_CASE("cli program: the third axis in the reports, and dda plot's views", "[
   const Result bad = run_dda(s, "plot --view zz --program " + prog.string() + " --out " + svg.string());
   CHECK(bad.status == 2);
   CHECK(bad.err.find("view = 'zz' is invalid") != std::string::npos);
-  // The motion block has no third stage yet: its vector set is refused, not written without Z.
+  // The motion block's vector set carries the third axis' pins, position and timings.
   const fs::path bus = s.dir / "bus";
-  const Result nobus = run_dda(s, "vectors --bus --program " + prog.string() + " --out-dir " + bus.string());
-  CHECK(nobus.status == 2);
-  CHECK(nobus.err.find("the motion block drives X and Y only") != std::string::npos);
-  CHECK_FALSE(fs::exists(bus));
+  const Result withbus = run_dda(s, "vectors --bus --program " + prog.string() + " --out-dir " + bus.string());
+  REQUIRE(withbus.status == 0);
+  std::ifstream man(bus / "manifest.json");
+  const std::string manifest((std::istreambuf_iterator<char>(man)), std::istreambuf_iterator<char>());
+  CHECK(manifest.find("\"step_z_o\"") != std::string::npos);
+  CHECK(manifest.find("\"pos_z_q\"") != std::string::npos);
+  CHECK(manifest.find("\"timing_z\"") != std::string::npos);
   // The core's vector set has the third axis.
   CHECK(run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "core").string()).status == 0);
 }

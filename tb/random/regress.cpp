@@ -44,6 +44,7 @@ void MixedStats::add(const MixedStats& o) {
   thin += o.thin;
   lines += o.lines;
   program += o.program;
+  spatial += o.spatial;
   refused += o.refused;
 }
 
@@ -66,7 +67,7 @@ nlohmann::json to_json(const MixedStats& st) {
   for (const auto& [k, v] :
        {std::pair{"full", st.full}, std::pair{"circles", st.circles}, std::pair{"turned", st.turned},
         std::pair{"rotated", st.rotated}, std::pair{"thin", st.thin}, std::pair{"lines", st.lines},
-        std::pair{"program", st.program}, std::pair{"refused", st.refused}}) {
+        std::pair{"program", st.program}, std::pair{"spatial", st.spatial}, std::pair{"refused", st.refused}}) {
     j[k] = v;
   }
   return j;
@@ -86,9 +87,10 @@ MixedStats from_json(const nlohmann::json& j) {
   for (auto& s : st.quadrant_pairs)
     for (auto& e : s)
       for (long& v : e) v = q.at(std::size_t(n++));
-  for (auto [k, v] : {std::pair{"full", &st.full}, std::pair{"circles", &st.circles}, std::pair{"turned", &st.turned},
-                      std::pair{"rotated", &st.rotated}, std::pair{"thin", &st.thin}, std::pair{"lines", &st.lines},
-                      std::pair{"program", &st.program}, std::pair{"refused", &st.refused}}) {
+  for (auto [k, v] :
+       {std::pair{"full", &st.full}, std::pair{"circles", &st.circles}, std::pair{"turned", &st.turned},
+        std::pair{"rotated", &st.rotated}, std::pair{"thin", &st.thin}, std::pair{"lines", &st.lines},
+        std::pair{"program", &st.program}, std::pair{"spatial", &st.spatial}, std::pair{"refused", &st.refused}}) {
     *v = j.at(k);
   }
   return st;
@@ -105,9 +107,10 @@ void print(const char* name, const std::string& what, const MixedStats& st) {
   std::printf(
       "coverage: %d of 32 (start quadrant, end quadrant, direction) combinations, %ld full "
       "ellipses, %ld circles, %ld turned by 90 or 270 degrees, %ld rotated by other angles, %ld "
-      "with aspect ratio > 100, %ld lines, %ld arcs with lattice ends as programs give them; %ld "
-      "draws refused by the planner\n",
-      st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin, st.lines, st.program, st.refused);
+      "with aspect ratio > 100, %ld lines, %ld arcs with lattice ends as programs give them, %ld moves "
+      "of the third axis; %ld draws refused by the planner\n",
+      st.pairs_covered(), st.full, st.circles, st.turned, st.rotated, st.thin, st.lines, st.program, st.spatial,
+      st.refused);
 }
 
 }  // namespace
@@ -118,7 +121,8 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long cases, Shard shard
   for (long i = 0; i < cases; ++i) {
     if (!shard.has(std::uint64_t(i))) continue;
     const std::uint64_t cs = case_seed(seed, std::uint64_t(i));
-    const ArcKind kind = i % 3 == 0 ? ArcKind::Quarter : i % 3 == 1 ? ArcKind::Whole : ArcKind::Program;
+    constexpr ArcKind kKinds[] = {ArcKind::Quarter, ArcKind::Whole, ArcKind::Program, ArcKind::Spatial};
+    const ArcKind kind = kKinds[i % 4];
     RandomArcs gen(cs, 4096, 8, kind);
     std::optional<Plan> plan;
     while (!(plan = gen.next())) {
@@ -148,6 +152,7 @@ MixedStats run_mixed(CoreHarness& h, std::uint64_t seed, long cases, Shard shard
         ++st.quadrant_pairs[p.pieces.front().quadrant - 1][p.pieces.back().quadrant - 1][cw];
         st.lines += p.is_line();
         st.program += kind == ArcKind::Program && p.is_arc();
+        st.spatial += kind == ArcKind::Spatial;
         if (p.is_arc()) {
           const ArcGeometry& g = p.arc();
           st.full += g.full;

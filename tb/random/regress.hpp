@@ -20,15 +20,17 @@ struct MixedStats {
   // Coverage of the arcs run to their end: [start quadrant][end quadrant][direction]
   // (quadrants of the first and last piece), full turns, circles, quarter-turned
   // ellipses, rotated ones, aspect ratio above 100, lines, arcs with lattice ends (the
-  // program kind), and draws the planner refused.
+  // program kind), moves of the third axis (3-D lines, plunges, helices), and draws the
+  // planner refused.
   long quadrant_pairs[4][4][2] = {};
-  long full = 0, circles = 0, turned = 0, rotated = 0, thin = 0, lines = 0, program = 0, refused = 0;
+  long full = 0, circles = 0, turned = 0, rotated = 0, thin = 0, lines = 0, program = 0, spatial = 0, refused = 0;
   int pairs_covered() const;
   void add(const MixedStats& o);
 };
 
 // Cases 0 .. cases-1 of the run `seed` that lie in `shard`, back to back: case i is a
-// quarter arc, a whole-ellipse arc or a program arc (i mod 3), a, b log-uniform in
+// quarter arc, a whole-ellipse arc, a program arc or a move of the third axis (a 3-D
+// line, a plunge or a helix; i mod 4), a, b log-uniform in
 // [1, 4096]; three in sixteen with random ce_i stalls, one in eight reset on a random
 // clock edge of the arc (the load edge and ce_i stalls included), after which the core
 // must be idle and run the next arc. A drawn arc the planner refuses is counted and
