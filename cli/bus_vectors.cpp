@@ -172,7 +172,7 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
       const std::uint32_t f = bus.feed_rate > 0
                                   ? feed::feed_increment(feed::piece_motion(piece.cmd), bus.feed_rate, bus.clock_hz)
                                   : bus.feed;
-      d.queue(piece.cmd, f);
+      d.queue(piece.cmd, f, piece.rot);
     }
   }
   if (bus.abort_after > 0) {

@@ -252,7 +252,8 @@ std::uint64_t run_model(const std::vector<Plan>& plans, const std::vector<Cmd>& 
     const CoreEdge e = model.edge(in);
     const Signals& post = model.state();
     if (e.iterate) {
-      pos = pos + CoreModel::step_of(post);
+      const int rot = plans[cmds[cur].arc].pieces[cmds[cur].piece].rot;  // its axes onto the run's
+      pos = pos + to_run_axes(CoreModel::step_of(post), rot);
       traces.iteration(CoreModel::iteration_record(pre, post), cmds[cur], e.finishing, pos);
     }
     if (e.load) {

@@ -116,7 +116,9 @@ bool CoreDrive::edge() {
   if (CoreModel::iterated(post)) {
     ++res_.iterations;
     Iteration rec = CoreModel::iteration_record(pre, post);
-    pos_ = pos_ + CoreModel::step_of(post);
+    // (The iteration is the front piece's: its core axes drive the run's turned by its rot.)
+    const int rot = running_.empty() ? 0 : running_.front().rot;
+    pos_ = pos_ + to_run_axes(CoreModel::step_of(post), rot);
     rec.iter = res_.iterations;
     rec.piece = done_pieces_;
     rec.pos = pos_;

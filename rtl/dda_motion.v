@@ -158,9 +158,12 @@ module dda_motion #(
   end
   always @(posedge clk_i) if (fetch_q == 2'd1) row0_q <= rd_row;
   wire [32*`DDA_MOTION_ENTRY_ROWS*RowWords-1:0] entry_q = {rd_row, row0_q};
-  // The feed increment: the top FW bits of the entry's last word (above the command).
+  // The feed increment: the top FW bits of the entry's last word; the axes: the bits
+  // right above the command.
+  localparam integer AxesBit = 32 * `DDA_MOTION_AXES_WORD + `DDA_MOTION_AXES_LSB;
   wire [FW-1:0] entry_feed = entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB +: FW];
-  wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:`DDA_CMD_WIDTH]};
+  wire [1:0]    entry_axes = entry_q[AxesBit +: 2];
+  wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:AxesBit + 2]};
 
   // ---- feed: the phase accumulator that paces the core ----
   reg  [FW-1:0] feed_q /* verilator public_flat_rd */;  // the running entry's increment
@@ -191,15 +194,33 @@ module dda_motion #(
   );
   wire unused_core = &{1'b0, core_iter};
 
+  // ---- axes: which stage each of the core's axes drives ----
+  // axes_q is the running entry's; route_q the one of the core's step outputs, which
+  // show the iteration of the edge before (the finishing edge of a piece also loads the
+  // next entry): axes_q a clock later.
+  reg [1:0] axes_q  /* verilator public_flat_rd */;
+  reg [1:0] route_q /* verilator public_flat_rd */;
+
   always @(posedge clk_i) begin
     if (!rst_ni || abort) begin
-      feed_q <= '0;
-      acc_q  <= '0;
+      feed_q  <= '0;
+      acc_q   <= '0;
+      axes_q  <= '0;
+      route_q <= '0;
     end else begin
       if (take) feed_q <= entry_feed;
       if (advance) acc_q <= acc_sum[FW-1:0];
+      if (take) axes_q <= entry_axes;
+      route_q <= axes_q;
     end
   end
+  // Stage j takes the core's axis (j - route) mod 3 (route 3 as 0).
+  wire [2:0] c_step = {core_step_z, core_step_y, core_step_x};
+  wire [2:0] c_dir  = {core_dir_z, core_dir_y, core_dir_x};
+  wire [2:0] r_step = route_q == 2'd1 ? {c_step[1], c_step[0], c_step[2]}
+                    : route_q == 2'd2 ? {c_step[0], c_step[2], c_step[1]} : c_step;
+  wire [2:0] r_dir  = route_q == 2'd1 ? {c_dir[1], c_dir[0], c_dir[2]}
+                    : route_q == 2'd2 ? {c_dir[0], c_dir[2], c_dir[1]} : c_dir;
 
   // ---- step/dir stages ----
   reg [TW-1:0] steplen_x_q   /* verilator public_flat_rd */;
@@ -219,19 +240,19 @@ module dda_motion #(
   wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left, sy_busy;
   wire sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left, sz_busy;
   dda_stepdir #(.TW(TW)) u_sx (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_x), .dir_i(core_dir_x), .tag_i(core_done),
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[0]), .dir_i(r_dir[0]), .tag_i(core_done),
     .steplen_i(steplen_x_q), .stepspace_i(stepspace_x_q), .dirsetup_i(dirsetup_x_q), .dirhold_i(dirhold_x_q),
     .step_o(sx_step), .dir_o(sx_dir), .hold_o(sx_hold), .rise_o(sx_rise), .rise_dir_o(sx_rise_dir), .wait_o(sx_wait),
     .tag_left_o(sx_tag_left), .busy_o(sx_busy)
   );
   dda_stepdir #(.TW(TW)) u_sy (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_y), .dir_i(core_dir_y), .tag_i(core_done),
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[1]), .dir_i(r_dir[1]), .tag_i(core_done),
     .steplen_i(steplen_y_q), .stepspace_i(stepspace_y_q), .dirsetup_i(dirsetup_y_q), .dirhold_i(dirhold_y_q),
     .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .wait_o(sy_wait),
     .tag_left_o(sy_tag_left), .busy_o(sy_busy)
   );
   dda_stepdir #(.TW(TW)) u_sz (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(core_step_z), .dir_i(core_dir_z), .tag_i(core_done),
+    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[2]), .dir_i(r_dir[2]), .tag_i(core_done),
     .steplen_i(steplen_z_q), .stepspace_i(stepspace_z_q), .dirsetup_i(dirsetup_z_q), .dirhold_i(dirhold_z_q),
     .step_o(sz_step), .dir_o(sz_dir), .hold_o(sz_hold), .rise_o(sz_rise), .rise_dir_o(sz_rise_dir), .wait_o(sz_wait),
     .tag_left_o(sz_tag_left), .busy_o(sz_busy)

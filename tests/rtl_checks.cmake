@@ -149,15 +149,18 @@ set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_pa
              APPEND PROPERTY LABELS program)
 # The three-axis examples (the third axis through its own step/dir stage): a helix with
 # Z timings and inverted Z outputs, a pocket on pipelined cycles, the drilling cycles at
-# a feed, 3-D lines with ce_i low a tenth of the time.
+# a feed, 3-D lines with ce_i low a tenth of the time, arcs in the three planes (the
+# entry's axes routing the core's to the stages).
 dda_bus_vec_set(helix --program ${PROJECT_SOURCE_DIR}/examples/helix.ngc --step 0.005 --timing-z 3,2,2,1
                 --polarity 48 --seed 21)
 dda_bus_vec_set(pocket --program ${PROJECT_SOURCE_DIR}/examples/pocket.ngc --step 0.005 --pipelined --seed 23)
 dda_bus_vec_set(drilling --program ${PROJECT_SOURCE_DIR}/examples/drilling.ngc --step 0.005 --feed 40000
                 --timing 1,1,1,1 --seed 25)
 dda_bus_vec_set(lines_3d --program ${PROJECT_SOURCE_DIR}/examples/lines-3d.ngc --ce-percent 90 --seed 27)
+dda_bus_vec_set(planes --program ${PROJECT_SOURCE_DIR}/examples/planes.ngc --step 0.005 --timing 2,1,1,1 --seed 29)
 set_property(TEST vectors.bus.gen_helix vectors.bus.helix vectors.bus.gen_pocket vectors.bus.pocket
              vectors.bus.gen_drilling vectors.bus.drilling vectors.bus.gen_lines_3d vectors.bus.lines_3d
+             vectors.bus.gen_planes vectors.bus.planes
              APPEND PROPERTY LABELS "program;stepdir")
 dda_rtl_test(vectors.bus.detects_corruption NEEDS IVERILOG VVP VERILATOR
              COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 60 pos_x_q ${_dda_bvec}/paper)

@@ -37,9 +37,6 @@ TEST_CASE("cli program: each class of bad input is one FILE:LINE:COLUMN line, st
        "1:1: the end is 0.0022 mm off the arc's circle (radius 5.0011 mm; tolerance 0.002 mm)"},  // off-curve end
       {"G6.2 X10 Y0 A0 B2\n", "1:13: the semi-axis A must be positive"},
       {"G6.2 X10 Y0 A5 B-2\n", "1:16: the semi-axis B must be positive"},
-      {"G17 G01 X1\nG18 G02 X0 Z0 I-0.5 K0\n",
-       "2:5: block at line 2 (arc cw): an arc in G18: Z, X, outside the plane of the interpolator's two ellipse "
-       "axes (G17: X, Y), is not supported (the axis normal to the plane is the third, linear, axis)"},
       {"G41 G01 X1\n", "1:1: tool radius compensation (G41/G42) is not supported: program the tool's path"},
   };
   // The macro language's classes.

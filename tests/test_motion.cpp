@@ -207,6 +207,7 @@ TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and over
     CHECK(st.position_checks > 0);
     CHECK(st.piece_checks > 0);
     CHECK(st.spatial > 0);   // the third axis in the mix,
-    CHECK(st.pulses_z > 0);  // its pulses through its stage
+    CHECK(st.pulses_z > 0);  // its pulses through its stage,
+    CHECK(st.turned > 0);    // arcs turned onto another plane by the entry's axes
   }
 }

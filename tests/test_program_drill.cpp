@@ -10,28 +10,13 @@
 #include <vector>
 
 #include "program/program.hpp"
+#include "program_helpers.hpp"
 
 using namespace dda::program;
+using dda::program::testing::error_in;
+using dda::program::testing::lcnc;
 
 namespace {
-
-Program lcnc(const std::string& text) {
-  ReadOptions o;
-  o.dialect = Dialect::LinuxCnc;
-  return read(text, "p.ngc", o);
-}
-
-std::string error_in(const std::string& text, Machine m = Machine::Mill) {
-  try {
-    ReadOptions o;
-    o.dialect = Dialect::LinuxCnc;
-    o.machine = m;
-    read(text, "p.ngc", o);
-  } catch (const ProgramError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // A move's end as X, Y, Z in mm, and whether it is a rapid (on G17, u X, v Y, w Z).
 struct End {

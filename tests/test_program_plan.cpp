@@ -16,6 +16,7 @@
 #include "pipeline/pipeline.hpp"
 #include "planner/planner.hpp"
 #include "program_plan/program_plan.hpp"
+#include "report/program_report.hpp"
 #include "runner/runner.hpp"
 
 using namespace dda;
@@ -46,7 +47,8 @@ Measured measure(const ProgramPlan& pp) {
   run(pp.plan, [&](const Iteration& it) {
     const std::size_t k = block_of_piece(pp, it.piece);
     r.end[k] = it.pos;
-    const double d = block_distance(pp.blocks[k], pp.lattice.step, double(it.pos.x), double(it.pos.y));
+    const Point q = to_plane_axes(it.pos, pp.blocks[k].rot);  // in the block's own plane
+    const double d = block_distance(pp.blocks[k], pp.lattice.step, double(q.x), double(q.y));
     r.max_dev[k] = std::max(r.max_dev[k], d);
   });
   return r;
@@ -275,7 +277,7 @@ TEST_CASE("program plan: an arc of several turns runs its full turns first", "[p
       Catch::Contains("100 turns of this arc take") && Catch::Contains("fewer turns (P), or a coarser --step"));
 }
 
-TEST_CASE("program plan: the axis normal to the plane runs on the third axis, an arc in another plane is refused",
+TEST_CASE("program plan: the axis normal to the plane runs on the third axis, an arc in another plane turned",
           "[program]") {
   ReadOptions lcnc;
   lcnc.dialect = Dialect::LinuxCnc;
@@ -305,9 +307,33 @@ TEST_CASE("program plan: the axis normal to the plane runs on the third axis, an
     }
     return std::string();
   };
-  CHECK(refusal("G1 X1\nG18 G2 X0 Z0 I-0.5 K0") ==
-        "p.nc:3:5: block at line 3 (arc cw): an arc in G18: Z, X, outside the plane of the interpolator's two "
-        "ellipse axes (G17: X, Y), is not supported (the axis normal to the plane is the third, linear, axis)");
+  // Arcs in G18 and G19 (a helix along X) in a G17 run: planned in their own plane's
+  // axes, turned onto the run's; every block on its end, the path within the targets
+  // measured in each block's own plane.
+  const ProgramPlan turned = planned("G1 X1\nG18 G2 X0 Z0 I-0.5 K0\nG19 G3 Y1 Z0 J0.5 K0 X0.3\nG17 G1 X0 Y0 Z0");
+  REQUIRE(turned.blocks.size() == 4);
+  CHECK(turned.blocks[1].rot == 2);  // G18's (Z, X, Y) onto (X, Y, Z)
+  CHECK(turned.blocks[2].rot == 1);  // G19's (Y, Z, X)
+  CHECK(turned.blocks[1].to == Point{0, 0, 0});
+  CHECK(turned.blocks[2].to == Point{300, 1000, 0});
+  const std::vector<Iteration> trecs = run_records(turned.plan);
+  CHECK(trecs.back().pos == Point{0, 0, 0});
+  bool z_moved = false, y_moved = false;
+  for (const Iteration& it : trecs) {
+    z_moved = z_moved || it.pos.z != 0;
+    if (it.piece >= turned.blocks[2].first_piece && it.piece < turned.blocks[3].first_piece) {
+      y_moved = y_moved || it.pos.y != 0;
+    }
+  }
+  CHECK(z_moved);  // the G18 arc leaves the plane z = 0 and comes back
+  CHECK(y_moved);
+  std::ostringstream stats;
+  BlockStatsSink sink(stats, LatticeOptions{}, Point2{}, BlockStatsFormat::Text, true);
+  for (const BlockPlan& b : turned.blocks) sink.block(b);
+  for (const Iteration& it : trecs) sink.record(it);
+  sink.finish();
+  CHECK_THAT(stats.str(), Catch::Contains("ends: every block on its rounded end"));
+  CHECK_THAT(stats.str(), Catch::Contains("targets: every block within its target"));
   // A helix steeper than its arc: the third axis steps at most once per iteration.
   CHECK_THAT(refusal("G1 X0.01\nG2 X0.03 I0.01 Z5"), Catch::Contains("at most once per iteration"));
   CHECK(refusal("G1 X1 Z0\nG1 X2").empty());  // a Z word that leaves Z where it is

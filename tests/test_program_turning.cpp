@@ -13,25 +13,13 @@
 #include <vector>
 
 #include "program/program.hpp"
+#include "program_helpers.hpp"
 
 using namespace dda::program;
+using dda::program::testing::error_in;
+using dda::program::testing::lcnc;
 
 namespace {
-
-Program lcnc(const std::string& text) {
-  ReadOptions o;
-  o.dialect = Dialect::LinuxCnc;
-  return read(text, "p.ngc", o);
-}
-
-std::string error_in(const std::string& text) {
-  try {
-    lcnc(text);
-  } catch (const ProgramError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // A move's end (or centre) in the Z-X plane, in mm: the lattice's u is Z, v is X.
 double z_of(const Point2& p) { return double(p.u) / double(kNmPerMm); }

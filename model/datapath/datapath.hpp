@@ -24,6 +24,17 @@ struct Point {
   friend Point operator+(const Point& p, const Point& q) { return Point{p.x + q.x, p.y + q.y, p.z + q.z}; }
 };
 
+// A piece in another plane than the run's: the core's axes (x, y: the piece's plane, z:
+// its normal) drive the run's axes turned by `rot` (0, 1 or 2): core axis i moves run
+// axis (i + rot) mod 3. The planes G17 (X, Y, Z), G18 (Z, X, Y) and G19 (Y, Z, X) are
+// cyclic turns of one another, so a turn maps any of them onto the run's plane.
+inline Point to_run_axes(Point p, int rot) {
+  return rot == 0 ? p : rot == 1 ? Point{p.z, p.x, p.y} : Point{p.y, p.z, p.x};
+}
+inline Point to_plane_axes(Point p, int rot) {
+  return rot == 0 ? p : rot == 1 ? Point{p.y, p.z, p.x} : Point{p.z, p.x, p.y};
+}
+
 // One hardware command: everything the datapath needs to run one piece.
 // All values are the exact (scaled) integers the registers hold.
 struct Command {
@@ -165,7 +176,9 @@ struct Iteration {
 // The datapath running one command: one call of iterate() is one iteration.
 class Datapath {
  public:
-  Datapath(const Command& cmd, Point start) : cmd_(cmd), regs_(initial_regs(cmd)), pos_(start) {}
+  // `rot`: the turn from the core's axes to the position's (to_run_axes).
+  Datapath(const Command& cmd, Point start, int rot = 0)
+      : cmd_(cmd), regs_(initial_regs(cmd)), pos_(start), rot_(rot) {}
   const RegState& regs() const { return regs_; }
   const Command& command() const { return cmd_; }
   Point pos() const { return pos_; }
@@ -217,21 +230,20 @@ class Datapath {
 
  private:
   Point moved(const StepOut& o) const {
-    Point p = pos_;
-    if (o.step_x) p.x += cmd_.dir_x_neg ? -1 : 1;
-    if (o.step_y) p.y += cmd_.dir_y_neg ? -1 : 1;
-    if (o.step_z) p.z += cmd_.dir_z_neg ? -1 : 1;
-    return p;
+    Point d;
+    if (o.step_x) d.x = cmd_.dir_x_neg ? -1 : 1;
+    if (o.step_y) d.y = cmd_.dir_y_neg ? -1 : 1;
+    if (o.step_z) d.z = cmd_.dir_z_neg ? -1 : 1;
+    return pos_ + (rot_ == 0 ? d : to_run_axes(d, rot_));
   }
   void move(const StepOut& o) {
-    if (o.step_x) pos_.x += cmd_.dir_x_neg ? -1 : 1;
-    if (o.step_y) pos_.y += cmd_.dir_y_neg ? -1 : 1;
-    if (o.step_z) pos_.z += cmd_.dir_z_neg ? -1 : 1;
+    pos_ = moved(o);
     ++iter_;
   }
   Command cmd_;
   RegState regs_;
   Point pos_;
+  int rot_ = 0;
   std::uint64_t iter_ = 0;
 };
 

@@ -95,9 +95,9 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
-void MotionDriver::queue(const Command& c, std::uint32_t feed) {
+void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes) {
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
-  const std::vector<std::uint32_t> w = entry_words(c, feed);
+  const std::vector<std::uint32_t> w = entry_words(c, feed, axes);
   std::vector<std::size_t> order(w.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);

@@ -111,7 +111,7 @@ class MotionDriver {
  public:
   MotionDriver(WishboneMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
   // feed: the entry's feed increment (0: the core's full rate).
-  void queue(const Command& c, std::uint32_t feed = 0);
+  void queue(const Command& c, std::uint32_t feed = 0, int axes = 0);
   // Until the queue is empty and the core idle; throws GuardError after max_polls.
   void drain(int max_polls = 1000000);
   void preset(Point p);

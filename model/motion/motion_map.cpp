@@ -33,10 +33,10 @@ std::string_view access_name(Access a) {
 
 std::string constants_comment() {
   return fmt::format(
-      "ID 0x{:08X}, version {}.{}, entry {} words ({} command bits, {} reserved, a {}-bit feed increment at bit {} "
-      "of word {}), AccWidth {}, CntWidth {}",
-      kId, kVersionMajor, kVersionMinor, kEntryWords, hw::kCmdWidth, kEntrySpareBits - kFeedWidth, kFeedWidth, kFeedLsb,
-      kFeedWord, hw::kAccWidth, hw::kCntWidth);
+      "ID 0x{:08X}, version {}.{}, entry {} words ({} command bits, {}-bit axes at bit {} of word {}, {} reserved, a "
+      "{}-bit feed increment at bit {} of word {}), AccWidth {}, CntWidth {}",
+      kId, kVersionMajor, kVersionMinor, kEntryWords, hw::kCmdWidth, kAxesWidth, kAxesLsb, kAxesWord,
+      kEntrySpareBits - kFeedWidth - kAxesWidth, kFeedWidth, kFeedLsb, kFeedWord, hw::kAccWidth, hw::kCntWidth);
 }
 
 }  // namespace
@@ -116,6 +116,11 @@ std::string c_header(const Map& m) {
       "#define DDA_MOTION_FEED_LSB {}u\n#define DDA_MOTION_FEED_MASK 0x{:08X}u\n#define DDA_MOTION_TIMING_WIDTH "
       "{}u\n\n",
       kFeedWord, kFeedLsb, ((std::uint64_t{1} << kFeedWidth) - 1) << kFeedLsb, kTimingWidth);
+  o += fmt::format(
+      "#define DDA_MOTION_AXES_WORD {}u  /* the entry word holding the axes: the core's x, y, z drive axes\n"
+      "                                  (i + AXES) mod 3 of X, Y, Z */\n#define DDA_MOTION_AXES_LSB {}u\n"
+      "#define DDA_MOTION_AXES_MASK 0x{:08X}u\n",
+      kAxesWord, kAxesLsb, ((std::uint64_t{1} << kAxesWidth) - 1) << kAxesLsb);
   for (const auto& r : m.regs) {
     o += fmt::format("#define DDA_MOTION_{}_OFFSET 0x{:02X}u  /* {}: {} */\n", upper(r.name), r.offset,
                      access_name(r.access), r.meaning);
@@ -148,6 +153,9 @@ std::string verilog_header(const Map& m) {
   o +=
       fmt::format("`define DDA_MOTION_FEED_WORD {}\n`define DDA_MOTION_FEED_LSB {}\n`define DDA_MOTION_FEED_WIDTH {}\n",
                   kFeedWord, kFeedLsb, kFeedWidth);
+  o +=
+      fmt::format("`define DDA_MOTION_AXES_WORD {}\n`define DDA_MOTION_AXES_LSB {}\n`define DDA_MOTION_AXES_WIDTH {}\n",
+                  kAxesWord, kAxesLsb, kAxesWidth);
   o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n\n", kTimingWidth);
   for (const auto& r : m.regs) {
     o += fmt::format("`define DDA_MOTION_{}_ADDR {}'h{:02X}  // {}\n", upper(r.name), kAddrWidth, r.offset,

@@ -9,8 +9,9 @@
 // Wishbone B4, 32-bit data, byte addresses (word aligned). A command entry is
 // kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
 // (hw::kCmdFields, LSB first) and the entry's spare bits above it (kEntrySpareBits): the
-// top kFeedWidth bits of the last word are the entry's feed increment, the bits between
-// the command and the feed are reserved (written as 0).
+// kAxesWidth bits right above the command are the entry's axes (which of the block's
+// axes the core's drive), the top kFeedWidth bits of the last word its feed increment,
+// the bits between them reserved (written as 0).
 #pragma once
 
 #include <array>
@@ -47,7 +48,17 @@ inline constexpr int kRowWords = (kEntryWords + kEntryRows - 1) / kEntryRows;
 inline constexpr int kFeedWidth = 16;
 inline constexpr int kFeedWord = kEntryWords - 1;
 inline constexpr int kFeedLsb = 32 - kFeedWidth;
-static_assert(kEntrySpareBits >= kFeedWidth, "the feed increment sits in the entry's spare bits");
+// The entry's axes: bits kAxesLsb .. kAxesLsb + kAxesWidth - 1 of entry word kAxesWord,
+// right above the command. Value r: the core's axis i (x, y, z: a piece's plane and its
+// normal) drives the block's axis (i + r) mod 3 (to_run_axes: 0 X, Y, Z; 1 Y, Z, X;
+// 2 Z, X, Y; 3 as 0), so an arc in another plane than the run's runs on the core's
+// ellipse integrators.
+inline constexpr int kAxesWidth = 2;
+inline constexpr int kAxesWord = hw::kCmdWidth / 32;
+inline constexpr int kAxesLsb = hw::kCmdWidth % 32;
+static_assert(kAxesLsb + kAxesWidth <= 32, "the axes field sits in one word");
+static_assert(kEntrySpareBits >= kFeedWidth + kAxesWidth, "the feed and the axes sit in the entry's spare bits");
+static_assert(kAxesWord < kFeedWord || kAxesLsb + kAxesWidth <= kFeedLsb, "the axes field lies below the feed");
 // The axes of the block, each with a step/dir stage, a position counter and its timings.
 inline constexpr std::array<char, 3> kAxes{{'x', 'y', 'z'}};
 // The step/dir stages' timings (STEP_X/Y/Z, DIR_X/Y/Z fields), in clock cycles: each is
@@ -157,7 +168,8 @@ inline constexpr std::array<Field, 52> kFields{{
     {"STEP_Z", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
     {"DIR_Z", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
     {"DIR_Z", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
-    {"ENTRY", "data", 0, 32, "entry word k: command bits 32k .. 32k+31; the last word's top bits: the feed"},
+    {"ENTRY", "data", 0, 32,
+     "entry word k: command bits 32k .. 32k+31; above the command the axes, the last word's top bits the feed"},
 }};
 // A register's offset and a field by name (a name not in the map does not compile where
 // the result is a constant expression; at run time it throws).

@@ -121,6 +121,8 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 reg("u_sz.tf_q"),
                 reg("feed_q"),
                 reg("acc_q"),
+                reg("axes_q"),
+                reg("route_q"),
                 {"core_ce", 1}}});
   hw::WaveGroup core{"Core", {}};
   for (const auto& r : hw::kSignals) {
@@ -132,11 +134,13 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
   return hw::gtkw_file(g, "the DDA motion block", file, top);
 }
 
-std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed) {
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed, int axes) {
   if (feed >> kFeedWidth)
     throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
+  if (axes < 0 || axes > 2) throw GuardError("motion: axes " + std::to_string(axes) + " is not 0, 1 or 2");
   std::vector<std::uint32_t> w = hw::pack_command(c);
   w.resize(kEntryWords, 0);
+  w[kAxesWord] |= std::uint32_t(axes) << kAxesLsb;
   w[kFeedWord] |= feed << kFeedLsb;
   return w;
 }
@@ -270,7 +274,7 @@ struct MotionModel::Wires {
   std::uint32_t adr = 0, word = 0;
   bool req = false, wr = false, commit = false, abort = false, clear = false;
   // The queue.
-  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, fetch_d = 0;
+  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, entry_axes = 0, fetch_d = 0;
   bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
   bool cmd_valid = false, take = false;
   // The core's registered outputs, the stages and the feed.
@@ -315,12 +319,14 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.core_done = CoreModel::done(pre);
   w.core_err = CoreModel::err(pre);
   w.running = CoreModel::busy(pre);
-  const bool step_x = po[out("step_x_o")] != 0, step_y = po[out("step_y_o")] != 0;
-  const bool dir_x = po[out("dir_x_o")] != 0, dir_y = po[out("dir_y_o")] != 0;
-  const bool step_z = po[out("step_z_o")] != 0, dir_z = po[out("dir_z_o")] != 0;
-  w.ex = stage_edge(stage('x'), timings('x'), step_x, dir_x, w.core_done, w.abort);
-  w.ey = stage_edge(stage('y'), timings('y'), step_y, dir_y, w.core_done, w.abort);
-  w.ez = stage_edge(stage('z'), timings('z'), step_z, dir_z, w.core_done, w.abort);
+  // The core's axes to the stages: stage j takes core axis (j - route) mod 3 (route 3 as 0).
+  const std::array<bool, 3> step{po[out("step_x_o")] != 0, po[out("step_y_o")] != 0, po[out("step_z_o")] != 0};
+  const std::array<bool, 3> dir{po[out("dir_x_o")] != 0, po[out("dir_y_o")] != 0, po[out("dir_z_o")] != 0};
+  const std::size_t route = get("route_q") == 3 ? 0 : std::size_t(get("route_q"));
+  const auto core_axis = [&](std::size_t j) { return (j + 3 - route) % 3; };
+  w.ex = stage_edge(stage('x'), timings('x'), step[core_axis(0)], dir[core_axis(0)], w.core_done, w.abort);
+  w.ey = stage_edge(stage('y'), timings('y'), step[core_axis(1)], dir[core_axis(1)], w.core_done, w.abort);
+  w.ez = stage_edge(stage('z'), timings('z'), step[core_axis(2)], dir[core_axis(2)], w.core_done, w.abort);
   // The feed: the core may iterate when no stage holds it and the accumulator carries
   // (a timing written on this edge holds it once: the stages' look-ahead used the old).
   bool wr_timing = false;
@@ -342,6 +348,7 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.head = get("head_q");
   w.tail = get("tail_q");
   w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
+  w.entry_axes = (mem_[w.head][kAxesWord] >> kAxesLsb) & mask_of(kAxesWidth);
 }
 
 void MotionModel::step_core(bool rst_n, const Wires& w) {
@@ -426,9 +433,13 @@ void MotionModel::load_feed(const Wires& w) {
   if (w.abort) {
     reg("feed_q") = 0;
     reg("acc_q") = 0;
+    reg("axes_q") = 0;
+    reg("route_q") = 0;
   } else {
     if (w.take) reg("feed_q") = w.entry_feed;
     if (w.advance) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+    reg("route_q") = get("axes_q");
+    if (w.take) reg("axes_q") = w.entry_axes;
   }
 }
 

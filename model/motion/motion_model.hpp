@@ -59,7 +59,7 @@ struct BlockReg {
 };
 // Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
 // rtl/dda_stepdir.v).
-inline constexpr std::array<BlockReg, 57> kBlockRegs{{
+inline constexpr std::array<BlockReg, 59> kBlockRegs{{
     {"ack_q", Width::One},           {"dat_q", Width::Word},
     {"head_q", Width::Index},        {"tail_q", Width::Index},
     {"level_q", Width::Level},       {"mask_q", Width::Entry},
@@ -88,7 +88,8 @@ inline constexpr std::array<BlockReg, 57> kBlockRegs{{
     {"u_sz.step_q", Width::One},     {"u_sz.dir_q", Width::One},
     {"u_sz.pend_q", Width::One},     {"u_sz.pdir_q", Width::One},
     {"u_sz.tf_q", Width::Timing},    {"u_sz.ts_q", Width::Timing},
-    {"u_sz.tag_q", Width::One},
+    {"u_sz.tag_q", Width::One},      {"axes_q", Width::Two},
+    {"route_q", Width::Two},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -174,9 +175,9 @@ class MotionModel {
 // 2^depth_log2 entries.
 std::string gtkw(std::string_view file, std::string_view top, int depth_log2);
 
-// The entry words of a command: the core's command word LSB first, reserved bits 0, the
-// feed increment (0: full rate) in its field.
-std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0);
+// The entry words of a command: the core's command word LSB first, the axes (0: X, Y, Z;
+// Piece::rot) and the feed increment (0: full rate) in their fields, reserved bits 0.
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0, int axes = 0);
 // The core's command fields of entry words (the inverse of entry_words on its bits).
 CmdFields entry_fields(const std::vector<std::uint32_t>& words);
 

@@ -149,8 +149,11 @@ bool moves_third_axis(const std::string& path, const ProgramRun& run) {
   struct Found {};  // the first such move ends the reading
   try {
     const auto in = program::open_program(path);
+    int run_plane = 0;  // (a move in another plane than the first's moves the run's third axis)
     program::read_stream(*in, run.file, run.read, [&](const program::Move& mv) {
-      if (program::to_steps(mv.w, run.lattice.step) != 0 || program::to_steps(mv.w_to, run.lattice.step) != 0) {
+      if (run_plane == 0) run_plane = mv.plane;
+      if (program::to_steps(mv.w, run.lattice.step) != 0 || program::to_steps(mv.w_to, run.lattice.step) != 0 ||
+          mv.plane != run_plane) {
         throw Found{};
       }
     });

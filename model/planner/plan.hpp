@@ -69,6 +69,7 @@ struct Piece {
   PieceKind kind = PieceKind::Arc;
   Command cmd;
   std::uint64_t iteration_bound = 0;  // a run of this piece that passes it is stopped
+  int rot = 0;                        // its core axes drive the run's turned by rot (to_run_axes)
 };
 
 // Fixed-point coefficients of a rotated ellipse (docs/golden-model.md, "Rotated

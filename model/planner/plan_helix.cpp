@@ -28,6 +28,14 @@ std::uint64_t piece_iterations(const Piece& pc) {
 }  // namespace
 
 void lift(Plan& plan, std::int64_t z0, std::int64_t z1, Preload preload) {
+  if (z0 == z1) {  // the path at its height: no iterations to count, no command changes
+    for (const Piece& pc : plan.pieces) {
+      if (pc.cmd.cnt_z != 0) throw InputError("lift: a piece of the path already moves the third axis");
+    }
+    for (Piece& pc : plan.pieces) pc.from.z = pc.to.z = z0;
+    plan.from.z = plan.to.z = z0;
+    return;
+  }
   std::uint64_t total = 0;
   std::vector<std::uint64_t> its;
   its.reserve(plan.pieces.size());
@@ -73,6 +81,17 @@ void lift(Plan& plan, std::int64_t z0, std::int64_t z1, Preload preload) {
     }
     at = end;
   }
+}
+
+void turn_axes(Plan& plan, int rot) {
+  if (rot == 0) return;
+  for (Piece& pc : plan.pieces) {
+    pc.from = to_run_axes(pc.from, rot);
+    pc.to = to_run_axes(pc.to, rot);
+    pc.rot = (pc.rot + rot) % 3;
+  }
+  plan.from = to_run_axes(plan.from, rot);
+  plan.to = to_run_axes(plan.to, rot);
 }
 
 }  // namespace dda

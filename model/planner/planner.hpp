@@ -55,6 +55,11 @@ std::vector<Piece> line_pieces(Point from, Point to, Preload preload);
 // InputError when the rise exceeds the path's iterations (at most one step per
 // iteration) or a piece's counter.
 void lift(Plan& plan, std::int64_t z0, std::int64_t z1, Preload preload);
+// Turns a plan planned in another plane's axes onto the run's (a G18 arc in a G17
+// program): each piece's core axes drive the run's axes turned by rot more
+// (Piece::rot, to_run_axes), its ends and the plan's turned alike. The commands and the
+// geometry stay in the plane they were planned in.
+void turn_axes(Plan& plan, int rot);
 
 // The curve point of parametric angle theta (micro-degrees) relative to the centre, in
 // Q(kPosFrac): (a cos theta, b sin theta) turned by the spec's angle, computed with the

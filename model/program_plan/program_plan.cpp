@@ -171,49 +171,53 @@ void BlockPlanner::move(const Move& mv) {
   if (held_.size() > window_) plan_front();
 }
 
-// Why the interpolator cannot run a move, or empty: an arc in another plane than the
-// run's (the core's ellipse integrators drive the run plane's two axes).
-static std::string outside_plane(const Move& mv, int run_plane) {
-  static const char* const kPlane[] = {"G17: X, Y", "G18: Z, X", "G19: Y, Z"};
-  const auto plane = [](int p) { return std::string(kPlane[p == 180 ? 1 : p == 190 ? 2 : 0]); };
-  if (mv.plane == run_plane) return "";
-  return "an arc in " + plane(mv.plane) + ", outside the plane of the interpolator's two ellipse axes (" +
-         plane(run_plane) + "), is not supported (the axis normal to the plane is the third, linear, axis)";
+// The turn from a plane's axes onto the run plane's (to_run_axes): G17's axes are
+// (X, Y, Z), G18's (Z, X, Y), G19's (Y, Z, X), each a cyclic turn of X, Y, Z.
+static int turn_of(int plane, int run_plane) {
+  const auto first = [](int p) { return p == 180 ? 2 : p == 190 ? 1 : 0; };  // the index of its u in X, Y, Z
+  return (first(plane) - first(run_plane) + 3) % 3;
 }
 
 void BlockPlanner::plan_front() {
   const Move& mv = held_.front();
   const Length step = opt_.step;
   if (run_plane_ == 0) run_plane_ = mv.plane;  // (the reader gives the first move in the run's plane)
-  if (const std::string why = outside_plane(mv, run_plane_); !why.empty()) fail(file_, mv, why);
+  // The block is planned in its own plane's axes (u, v and the normal w), then turned
+  // onto the run's: an arc in another plane runs on the core's ellipse integrators,
+  // which drive that plane's axes.
+  const int rot = turn_of(mv.plane, run_plane_);
+  const Point from = to_plane_axes(at_, rot);
+  Point to = on_lattice(mv.to, step);
+  to.z = to_steps(mv.w_to, step);  // the axis normal to the plane
   BlockPlan b;
   b.move = mv;
   b.from = at_;
-  b.to = on_lattice(mv.to, step);
-  b.to.z = to_steps(mv.w_to, step);  // the axis normal to the plane
-  b.rounding = rounding(b.to, mv.to, step);
+  b.to = to_run_axes(to, rot);
+  b.rot = rot;
+  b.rounding = rounding(to, mv.to, step);
   b.plan.geometry = LineGeometry{opt_.preload};  // no piece unless the move is a step or longer
-  b.plan.from = b.plan.to = at_;
+  b.plan.from = b.plan.to = from;
   try {
     if (mv.kind == MoveKind::Rapid || mv.kind == MoveKind::Line) {
-      if (b.from != b.to) b.plan = plan_line(b.from, b.to, opt_.preload);
-    } else if (const Point from{b.from.x, b.from.y}, to{b.to.x, b.to.y};  // in the plane
-               from != to || mv.full || half_turn_or_more(mv) || mv.turns > 1) {
+      if (from != to) b.plan = plan_line(from, to, opt_.preload);
+    } else if (const Point from2{from.x, from.y}, to2{to.x, to.y};  // in the plane
+               from2 != to2 || mv.full || half_turn_or_more(mv) || mv.turns > 1) {
       // (A block whose rounded ends coincide in the plane and that sweeps less than half
       // a turn is shorter than a step there: at most a move of the normal axis, below.
       // One that sweeps more runs as a full turn.)
-      b.plan = plan_curve(mv, from, to);
+      b.plan = plan_curve(mv, from2, to2);
       // An arc of several turns (P): its full turns first, from its start.
-      if (mv.turns > 1) prepend_turns(b.plan, plan_curve(full_turn(mv), from, from), mv.turns - 1, file_, mv, step);
-      lift(b.plan, b.from.z, b.to.z, opt_.preload);  // a helix, or the arc at its height
-    } else if (b.from != b.to) {
-      b.plan = plan_line(b.from, b.to, opt_.preload);
+      if (mv.turns > 1) prepend_turns(b.plan, plan_curve(full_turn(mv), from2, from2), mv.turns - 1, file_, mv, step);
+      lift(b.plan, from.z, to.z, opt_.preload);  // a helix, or the arc at its height
+    } else if (from != to) {
+      b.plan = plan_line(from, to, opt_.preload);
     }
   } catch (const ProgramError&) {
     throw;
   } catch (const InputError& e) {
     fail(file_, mv, e.what());
   }
+  turn_axes(b.plan, rot);
   b.first_piece = pieces_;
   pieces_ += b.plan.pieces.size();
   ++blocks_;

@@ -57,7 +57,11 @@ struct BlockPlan {
   double rounding = 0;          // steps between the programmed end and `to`
   Plan plan;                    // the block's commands (none for a move that rounds to nothing)
   std::size_t first_piece = 0;  // index of its first piece in ProgramPlan::plan
+  int rot = 0;                  // its plane's axes turned onto the run's (Piece::rot)
 };
+// A block's programmed end in the run's axes, in nanometres (Move::to and w_to are in
+// the block's own plane's axes).
+inline Point run_end_nm(const BlockPlan& b) { return to_run_axes(Point{b.move.to.u, b.move.to.v, b.move.w_to}, b.rot); }
 
 struct ProgramPlan {
   LatticeOptions lattice;

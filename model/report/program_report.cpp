@@ -149,7 +149,13 @@ void BlockStatsSink::record(const Iteration& it) {
 
 void BlockStatsSink::measure(BlockWindow::Entry& e) {
   double d[kMeasureBatch];
-  e.distance(pending_.data(), pending_n_, d);
+  if (e.block.rot == 0) {
+    e.distance(pending_.data(), pending_n_, d);
+  } else {  // the distance in the block's own plane
+    std::array<Point, kMeasureBatch> q;
+    for (std::size_t i = 0; i < pending_n_; ++i) q[i] = to_plane_axes(pending_[i], e.block.rot);
+    e.distance(q.data(), pending_n_, d);
+  }
   for (std::size_t i = 0; i < pending_n_; ++i) add_point(e.stats, pending_[i], d[i]);
   pending_n_ = 0;
 }
@@ -186,8 +192,8 @@ void BlockStatsSink::finish() {
 // report that has it.
 std::string BlockStatsSink::end_text(const BlockPlan& b, bool in_mm) const {
   if (in_mm) {
-    return z_ ? fmt::format("{},{},{}", mm(b.move.to.u), mm(b.move.to.v), mm(b.move.w_to))
-              : fmt::format("{},{}", mm(b.move.to.u), mm(b.move.to.v));
+    const Point e = run_end_nm(b);
+    return z_ ? fmt::format("{},{},{}", mm(e.x), mm(e.y), mm(e.z)) : fmt::format("{},{}", mm(e.x), mm(e.y));
   }
   return z_ ? fmt::format("{},{},{}", b.to.x, b.to.y, b.to.z) : fmt::format("{},{}", b.to.x, b.to.y);
 }
@@ -197,6 +203,7 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
   measure(e);
   const BlockPlan& b = e.block;
   const BlockStats& st = e.stats;
+  const Point end_nm = run_end_nm(b);
   // Each block's target (docs/programs.md, "Accuracy"); none with zero preload.
   const double target = block_target(b, prev_rounding_, lattice_.preload);
   prev_rounding_ = b.rounding;
@@ -220,9 +227,9 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
     r["line"] = b.move.pos.line;
     r["block"] = block_no(b);
     r["kind"] = std::string(kind_name(b.move.kind));
-    r["end_mm"] = {mm(b.move.to.u), mm(b.move.to.v)};
+    r["end_mm"] = {mm(end_nm.x), mm(end_nm.y)};
     r["end"] = {b.to.x, b.to.y};
-    if (z_) r["end_mm"].push_back(mm(b.move.w_to)), r["end"].push_back(b.to.z);
+    if (z_) r["end_mm"].push_back(mm(end_nm.z)), r["end"].push_back(b.to.z);
     r["rounding"] = b.rounding;
     r["commands"] = b.plan.pieces.size();
     r["steps"] = st.steps;
@@ -237,10 +244,10 @@ void BlockStatsSink::row(BlockWindow::Entry& e) {
     os_ << (blocks_ == 1 ? "\n" : ",\n") << json_stream::element(r, 2);
   } else if (fmt_ == BlockStatsFormat::Csv) {
     fmt::print(os_, "{},{},{},{},{},{},{},{:.6f},{},{},{},{:.6f},{:.6f},{},{},{}", b.move.pos.line, block_no(b),
-               kind_name(b.move.kind), mm(b.move.to.u), mm(b.move.to.v), b.to.x, b.to.y, b.rounding,
-               b.plan.pieces.size(), st.steps, st.iterations, st.max_dev, mean(st), on_end ? "yes" : "no",
+               kind_name(b.move.kind), mm(end_nm.x), mm(end_nm.y), b.to.x, b.to.y, b.rounding, b.plan.pieces.size(),
+               st.steps, st.iterations, st.max_dev, mean(st), on_end ? "yes" : "no",
                targeted_ ? fmt::format("{:.6f}", target) : "-", ok == "NO" ? "no" : ok);
-    os_ << (z_ ? fmt::format(",{},{}\n", mm(b.move.w_to), b.to.z) : std::string("\n"));
+    os_ << (z_ ? fmt::format(",{},{}\n", mm(end_nm.z), b.to.z) : std::string("\n"));
   } else {
     fmt::print(
         os_,
@@ -263,7 +270,8 @@ ProgramSvgSink::ProgramSvgSink(std::ostream& os, const LatticeOptions& lattice, 
 
 void ProgramSvgSink::block(const BlockPlan& b) {
   if (first_) {
-    sample_.add(project(start_, view_), block_distance(b, lattice_.step, double(start_.x), double(start_.y)));
+    const Point s = to_plane_axes(start_, b.rot);
+    sample_.add(project(start_, view_), block_distance(b, lattice_.step, double(s.x), double(s.y)));
   }
   first_ = false;
   window_.push(b);
@@ -274,7 +282,8 @@ void ProgramSvgSink::record(const Iteration& it) {
   if (!it.step_x && !it.step_y && (view_ == View::XY || !it.step_z)) return;
   const BlockWindow::Entry& e = window_.of_piece(it.piece, [](const BlockWindow::Entry&) {});
   const bool end = it.pos == e.block.to;
-  sample_.add(project(it.pos, view_), e.distance(double(it.pos.x), double(it.pos.y)), end);
+  const Point q = to_plane_axes(it.pos, e.block.rot);  // the distance in the block's plane
+  sample_.add(project(it.pos, view_), e.distance(double(q.x), double(q.y)), end);
 }
 
 // The block's programmed geometry, joined to the polyline before it where it goes on
@@ -282,13 +291,18 @@ void ProgramSvgSink::record(const Iteration& it) {
 // last vertex so far (provisional: replaced by the next one that joins).
 void ProgramSvgSink::geometry(const BlockPlan& b) {
   auto pts = block_geometry(b, lattice_.step);
-  if (view_ != View::XY) {  // the normal axis along the block, from its start to its end
+  if (view_ != View::XY || b.rot != 0) {  // the normal axis along the block, from its start to its end
     const double w0 = double(b.move.w) / double(lattice_.step), w1 = double(b.move.w_to) / double(lattice_.step);
+    const int first = view_ == View::YZ ? 1 : 0, second = view_ == View::XY ? 1 : 2;
     for (std::size_t k = 0; k < pts.size(); ++k) {
       auto& [u, v] = pts[k];
       const double t = pts.size() > 1 ? double(k) / double(pts.size() - 1) : 1.0;
-      u = view_ == View::XZ ? u : v;
-      v = w0 + (w1 - w0) * t;
+      // The block's axes (u, v, w) in the run's (to_run_axes), then the view's two.
+      std::array<double, 3> p{}, run{};
+      p = {u, v, w0 + (w1 - w0) * t};
+      for (int i = 0; i < 3; ++i) run[std::size_t((i + b.rot) % 3)] = p[std::size_t(i)];
+      u = run[std::size_t(first)];
+      v = run[std::size_t(second)];
     }
   }
   if (ideal_.empty() || ideal_.back().back() != pts.front()) {

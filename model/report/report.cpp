@@ -107,7 +107,7 @@ std::int64_t value_scale(const Plan& plan) { return plan.is_arc() ? plan.arc().s
 bool third_axis(const Plan& plan) {
   if (plan.from.z != 0 || plan.to.z != 0) return true;
   for (const Piece& pc : plan.pieces) {
-    if (pc.cmd.cnt_z != 0) return true;
+    if (pc.cmd.cnt_z != 0 || pc.rot != 0) return true;
   }
   return false;
 }

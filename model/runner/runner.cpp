@@ -106,7 +106,7 @@ bool skip_quiet(const PieceRun& r, Datapath& dp) {
 RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
   const Piece& pc = r.pc;
   const RecordFn* on_iter = mode.on_iter && *mode.on_iter ? mode.on_iter : nullptr;
-  Datapath dp(pc.cmd, pc.from);
+  Datapath dp(pc.cmd, pc.from, pc.rot);
   while (!dp.done()) {
     if (!guards_hold(r, dp)) guard_failed(r, dp);
     if ((!on_iter || !mode.every) && !skip_quiet(r, dp)) guard_failed(r, dp);
@@ -132,7 +132,7 @@ RunSummary run_piece(const PieceRun& r, const RunMode& mode) {
 
 // The planner's run of a piece: the same guards, a failure the input's.
 std::optional<Refusal> reach_piece(const PieceRun& r) {
-  Datapath dp(r.pc.cmd, r.pc.from);
+  Datapath dp(r.pc.cmd, r.pc.from, r.pc.rot);
   while (!dp.done()) {
     if (!guards_hold(r, dp) || !skip_quiet(r, dp)) return Refusal{tripped(r, dp).as_input};
     dp.step();

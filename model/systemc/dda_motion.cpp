@@ -33,12 +33,12 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.cmd_valid_i(cmd_valid);
   u_core.cmd_ready_o(core_ready);
   u_core.cmd_i(entry);
-  u_core.step_x_o(step_x);
-  u_core.step_y_o(step_y);
-  u_core.dir_x_o(dir_x);
-  u_core.dir_y_o(dir_y);
-  u_core.step_z_o(step_z);
-  u_core.dir_z_o(dir_z);
+  u_core.step_x_o(c_step_x);
+  u_core.step_y_o(c_step_y);
+  u_core.dir_x_o(c_dir_x);
+  u_core.dir_y_o(c_dir_y);
+  u_core.step_z_o(c_step_z);
+  u_core.dir_z_o(c_dir_z);
   u_core.busy_o(core_busy);
   u_core.done_o(core_done);
   u_core.err_o(core_err);
@@ -48,7 +48,8 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << fetch_q << level_q
             << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q << sx_step << sx_dir
-            << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir << sz_hold << sz_busy;
+            << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir << sz_hold << sz_busy
+            << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -117,6 +118,15 @@ void dda_motion::comb() {
   step_z_o.write(sz_step.read() != inv("step_z"));
   dir_z_o.write(sz_dir.read() != inv("dir_z"));
   busy_o.write(core_busy.read() || sx_busy.read() || sy_busy.read() || sz_busy.read());
+  // Stage j takes the core's axis (j - route) mod 3 (route 3 as 0).
+  const std::array<bool, 3> cs{c_step_x.read(), c_step_y.read(), c_step_z.read()};
+  const std::array<bool, 3> cd{c_dir_x.read(), c_dir_y.read(), c_dir_z.read()};
+  const std::size_t route = route_q.read() == 3 ? 0 : std::size_t(route_q.read());
+  const std::array<sc_core::sc_signal<bool>*, 3> st{&step_x, &step_y, &step_z}, di{&dir_x, &dir_y, &dir_z};
+  for (std::size_t j = 0; j < 3; ++j) {
+    st[j]->write(cs[(j + 3 - route) % 3]);
+    di[j]->write(cd[(j + 3 - route) % 3]);
+  }
   irq_o.write((irq_status_q.read() & irq_enable_q.read()) != 0);
 }
 
@@ -212,16 +222,18 @@ void dda_motion::seq_ram(const Decode& d) {
   words.insert(words.end(), rd_row_q.begin(), rd_row_q.end());
   entry.write(entry_bits(words));
   entry_feed.write((words[motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
+  entry_axes.write((words[motion::kAxesWord] >> motion::kAxesLsb) & ((1u << motion::kAxesWidth) - 1));
 }
 
 void dda_motion::seq_reset() {
   for (auto* s : {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
     s->write(false);
-  for (auto* s : {&dat_q,        &head_q,        &tail_q,        &level_q,       &mask_q,       &irq_status_q,
-                  &irq_enable_q, &irq_level_q,   &done_count_q,  &err_count_q,   &pos_x_q,      &pos_y_q,
-                  &feed_q,       &acc_q,         &steplen_x_q,   &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,
-                  &steplen_y_q,  &stepspace_y_q, &dirsetup_y_q,  &dirhold_y_q,   &polarity_q,   &pos_z_q,
-                  &fetch_q,      &steplen_z_q,   &stepspace_z_q, &dirsetup_z_q,  &dirhold_z_q})
+  for (auto* s :
+       {&dat_q,       &head_q,        &tail_q,       &level_q,     &mask_q,      &irq_status_q,  &irq_enable_q,
+        &irq_level_q, &done_count_q,  &err_count_q,  &pos_x_q,     &pos_y_q,     &feed_q,        &acc_q,
+        &steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q, &steplen_y_q, &stepspace_y_q, &dirsetup_y_q,
+        &dirhold_y_q, &polarity_q,    &pos_z_q,      &fetch_q,     &steplen_z_q, &stepspace_z_q, &dirsetup_z_q,
+        &dirhold_z_q, &axes_q,        &route_q})
     s->write(0);
 }
 
@@ -283,13 +295,19 @@ void dda_motion::seq_status(const Decode& d) {
   pos_z_q.write((d.wr && d.adr == kPosZ ? d.dat : pos_z_q.read()) + dz);
 }
 
-// feed_q, acc_q: the phase accumulator that paces the core.
+// feed_q, acc_q: the phase accumulator that paces the core; axes_q, route_q: which
+// stage each of the core's axes drives (route_q: axes_q a clock later, as the core's
+// step outputs show the iteration of the edge before).
 void dda_motion::seq_feed(const Decode& d) {
   const std::uint32_t fmask = (1u << motion::kFeedWidth) - 1;
   if (d.abort) {
     feed_q.write(0);
     acc_q.write(0);
+    axes_q.write(0);
+    route_q.write(0);
   } else {
+    route_q.write(axes_q.read());
+    if (d.take) axes_q.write(entry_axes.read());
     if (d.take) feed_q.write(entry_feed.read());
     if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
   }

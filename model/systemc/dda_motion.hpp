@@ -40,8 +40,8 @@ SC_MODULE(dda_motion) {
       mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
       done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"},
       pos_z_q{"pos_z_q"}, fetch_q{"fetch_q"}, steplen_z_q{"steplen_z_q"}, stepspace_z_q{"stepspace_z_q"},
-      dirsetup_z_q{"dirsetup_z_q"}, dirhold_z_q{"dirhold_z_q"}, feed_q{"feed_q"}, acc_q{"acc_q"},
-      steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"}, dirsetup_x_q{"dirsetup_x_q"},
+      dirsetup_z_q{"dirsetup_z_q"}, dirhold_z_q{"dirhold_z_q"}, axes_q{"axes_q"}, route_q{"route_q"}, feed_q{"feed_q"},
+      acc_q{"acc_q"}, steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"}, dirsetup_x_q{"dirsetup_x_q"},
       dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"}, stepspace_y_q{"stepspace_y_q"},
       dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"}, polarity_q{"polarity_q"};
 
@@ -50,12 +50,14 @@ SC_MODULE(dda_motion) {
   std::vector<std::vector<std::uint32_t>> mem_;
   std::vector<std::uint32_t> rd_row_q, row0_q;  // the RAM output and the row 0 kept (words)
   sc_core::sc_signal<cmd_t> entry{"entry"};     // the command of {rd_row_q, row0_q}
-  sc_core::sc_signal<std::uint32_t> entry_feed{"entry_feed"};
+  sc_core::sc_signal<std::uint32_t> entry_feed{"entry_feed"}, entry_axes{"entry_axes"};
   // Wires.
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
-  sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};
+  sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};  // the core's axes routed to the stages (route_q)
+  sc_core::sc_signal<bool> c_step_x{"c_step_x"}, c_step_y{"c_step_y"}, c_step_z{"c_step_z"}, c_dir_x{"c_dir_x"},
+      c_dir_y{"c_dir_y"}, c_dir_z{"c_dir_z"};                   // the core's step outputs
   sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
   sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
       sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};

@@ -9,6 +9,7 @@
 #include "datapath/errors.hpp"
 #include "dda_random.hpp"
 #include "motion/stepdir_monitor.hpp"
+#include "planner/planner.hpp"
 
 namespace dda::motion {
 
@@ -86,7 +87,8 @@ MixStats Mix::run(std::uint64_t arcs) {
 }
 
 // The arcs of a batch: one short arc if large, else one to four, no more than the run
-// still needs; a third of the others move the third axis (3-D lines, plunges, helices).
+// still needs; a third of the others move the third axis (3-D lines, plunges, helices),
+// turned onto another plane of the block's axes two times in three (the entry's axes).
 std::vector<Plan> Mix::draw_batch(bool large, std::uint64_t arcs) {
   std::vector<Plan> batch;
   const std::uint64_t n = large ? 1 : 1 + rng_() % 4;
@@ -94,6 +96,11 @@ std::vector<Plan> Mix::draw_batch(bool large, std::uint64_t arcs) {
     RandomArcs& g = large ? short_arcs_ : rng_() % 3 == 0 ? spatial_ : gen_;
     if (auto p = g.next()) {
       st_.spatial += &g == &spatial_;
+      if (&g == &spatial_) {
+        const int rot = int(rng_() % 3);
+        turn_axes(*p, rot);
+        st_.turned += rot != 0;
+      }
       batch.push_back(std::move(*p));
     }
   }
@@ -138,7 +145,7 @@ Point Mix::queue_batch(const std::vector<Plan>& batch) {
       mon_.expect(at);
       const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng_() % 0xE000);
       st_.fed_pieces += feed != 0;
-      d_.queue(piece.cmd, feed);
+      d_.queue(piece.cmd, feed, piece.rot);
     }
     want = want + Point{p.to.x - p.from.x, p.to.y - p.from.y, p.to.z - p.from.z};
     st_.pieces += p.pieces.size();

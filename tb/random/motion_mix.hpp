@@ -4,7 +4,8 @@
 // turns, lines, rotated ellipses) queued back to back while the block runs, over classic
 // or pipelined Wishbone cycles with random idle cycles and ce_i low a tenth of the time;
 // among them partial commits, writes to a full queue, aborts and resets in the middle of
-// a queue; a third of the arcs move the third axis (3-D lines, plunges, helices). Each batch runs with random step/dir
+// a queue; a third of the arcs move the third axis (3-D lines, plunges, helices), two in
+// three of them turned onto another plane of the axes (the entry's axes). Each batch runs with random step/dir
 // timings (all 0 half of the time, small ones, and large ones, up to the fields' maximum, on a batch of short arcs
 // drawn apart so the cycles stay bounded), random output polarity and a random feed increment per piece (0, the full
 // rate, half of the time). Every edge passes the timing monitor (StepDirMonitor: the four timings, no step lost or
@@ -24,6 +25,7 @@ struct MixStats {
   std::uint64_t position_checks = 0, piece_checks = 0;
   std::uint64_t timed_batches = 0, large_timing_batches = 0, fed_pieces = 0, pulses = 0;
   std::uint64_t spatial = 0, pulses_z = 0;  // arcs that move the third axis, its pulses
+  std::uint64_t turned = 0;                 // of those, turned onto another plane (the entry's axes)
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).
