@@ -44,14 +44,16 @@ module dda_fpga_top #(
   localparam integer LaneBits  = $clog2(Lanes);
   localparam integer RowLanes  = (Lanes + 1) / 2;
 
-  // The RAM reads row 0 of word addr_d after addr moves (and after reset), then row 1
-  // while row0_q keeps row 0: the word is whole when fetch_q is 2.
+  // The RAM reads row 0 of word addr_d after addr moves, after reset and while no word
+  // is offered (the host may be writing it), then row 1 while row0_q keeps row 0: the
+  // word is whole when fetch_q is 2.
   reg  [AddrWidth-1:0]  addr_q;
   reg  [1:0]            fetch_q;  // rows of word addr_q read
   wire                  cmd_valid = (fetch_q == 2'd2) & (addr_q != end_i);
   wire                  accept = cmd_valid & cmd_ready_o;
   wire [AddrWidth-1:0]  addr_d = !rst_ni ? '0 : accept ? addr_q + 1'b1 : addr_q;
-  wire [1:0]            fetch_d = (!rst_ni | accept | fetch_q == 2'd0) ? 2'd1 : 2'd2;
+  wire [1:0]            fetch_d = (!rst_ni | accept | fetch_q == 2'd0 | addr_q == end_i)
+                                  ? 2'd1 : 2'd2;
   wire [16*RowLanes-1:0] rd_row;
   reg  [16*RowLanes-1:0] row0_q;
   wire [32*RowLanes-1:0] cmd_q = {rd_row, row0_q};
