@@ -88,9 +88,9 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
                    "default 0)")
       ->check(CLI::Range(0, 63));
   vectors
-      ->add_option("--feed", c.feed,
-                   "with --bus: every piece's feed increment, iterations per clock x 65536 (default 0: full rate)")
-      ->check(CLI::Range(0, (1 << motion::kFeedWidth) - 1));
+      ->add_option("--feed-increment", c.feed,
+                   "with --bus: every piece's feed increment, iterations per clock x 2^32 (default 0: full rate)")
+      ->check(CLI::Range(std::uint64_t{0}, (std::uint64_t{1} << motion::kFeedWidth) - 1));
   vectors->add_option("--feed-rate", c.feed_rate,
                       "with --bus: feed in steps per second along the path (needs --clock)");
   vectors->add_option("--clock", c.clock_hz, "with --bus --feed-rate: the block's clock in Hz");
@@ -136,7 +136,7 @@ BusOptions bus_options(const BusCli& c) {
   if (!c.timing_y.empty()) b.timing_y = parse_timing("--timing-y", c.timing_y);
   if (!c.timing_z.empty()) b.timing_z = parse_timing("--timing-z", c.timing_z);
   b.polarity = c.polarity;
-  if (c.feed && c.feed_rate != 0) throw InputError("--feed and --feed-rate are alternatives: give one");
+  if (c.feed && c.feed_rate != 0) throw InputError("--feed-increment and --feed-rate are alternatives: give one");
   if ((c.feed_rate != 0) != (c.clock_hz != 0)) throw InputError("--feed-rate and --clock go together");
   // (nan and inf fail these comparisons too.)
   if (c.feed_rate != 0 && !(c.feed_rate > 0 && c.feed_rate <= 1e9)) {

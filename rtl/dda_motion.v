@@ -5,8 +5,11 @@
 // model/motion/motion_map.hpp (the one definition; docs/design.md and the firmware
 // header fw/dda_motion_regs.h come from it too).
 //
-// Bus: 32-bit data, byte addresses (wb_adr_i[1:0] ignored), wb_sel_i ignored (every
-// write writes the whole word). A request (wb_cyc_i & wb_stb_i while wb_stall_o is low)
+// Bus: 32-bit data, byte addresses (wb_adr_i[1:0] ignored). Byte lanes (wb_sel_i): a
+// register write changes only the bytes of the lanes selected (the others keep their
+// value; a CTRL bit acts and an IRQ_STATUS bit clears only in a selected lane); an entry
+// word is written whole or not at all: a write to ENTRY with other lanes than all four
+// is refused with a sticky error (err_lanes). A request (wb_cyc_i & wb_stb_i while wb_stall_o is low)
 // is answered by wb_ack_o on the next cycle, read data with it; wb_stall_o is high in
 // that cycle, so a classic master that holds wb_stb_i until the ack is not taken twice,
 // and a pipelined master issues one request every other cycle. The bus never waits on
@@ -20,7 +23,8 @@
 // takes at most one entry every two clocks. The host writes the words of an entry
 // (ENTRY + 4k) into the free slot at the tail and commits it (CTRL.commit).
 // Refused, with a sticky error: an entry word or a commit while the queue is full
-// (err_overflow), a commit before every word was written (err_partial). The core's
+// (err_overflow), a commit before every word was written (err_partial), an entry word
+// written with byte lanes (err_lanes). The core's
 // err_o (a stalled command) sets err_stall.
 // Abort (CTRL.abort): the core is reset on the edge that takes the write, the queue and
 // the entry being written are flushed, the steps waiting in the step/dir stages are
@@ -78,12 +82,18 @@ module dda_motion #(
   assign wb_ack_o   = ack_q;
   assign wb_stall_o = ack_q;
   assign wb_dat_o   = dat_q;
-  wire unused_bus = &{1'b0, wb_sel_i, wb_adr_i[1:0]};
+  wire unused_bus = &{1'b0, wb_adr_i[1:0]};
+  // The write data in the lanes selected (wsel), and merged with the register's value
+  // in the others (wdat; rd is the addressed register's read value).
+  reg  [31:0] rd;
+  wire [31:0] lanes = {{8{wb_sel_i[3]}}, {8{wb_sel_i[2]}}, {8{wb_sel_i[1]}}, {8{wb_sel_i[0]}}};
+  wire [31:0] wsel  = wb_dat_i & lanes;
+  wire [31:0] wdat  = (rd & ~lanes) | wsel;
 
   wire wr_ctrl   = wr & (adr == `DDA_MOTION_CTRL_ADDR);
-  wire commit    = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_COMMIT_LSB];
-  wire abort     = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_ABORT_LSB];
-  wire clear     = wr_ctrl & wb_dat_i[`DDA_MOTION_CTRL_CLEAR_LSB];
+  wire commit    = wr_ctrl & wsel[`DDA_MOTION_CTRL_COMMIT_LSB];
+  wire abort     = wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB];
+  wire clear     = wr_ctrl & wsel[`DDA_MOTION_CTRL_CLEAR_LSB];
   localparam [`DDA_MOTION_ADDR_WIDTH:0] EntryEnd = (`DDA_MOTION_ADDR_WIDTH+1)'(`DDA_MOTION_ENTRY_ADDR) + (`DDA_MOTION_ADDR_WIDTH+1)'(4 * Words);
   wire in_entry  = adr >= `DDA_MOTION_ENTRY_ADDR && {1'b0, adr} < EntryEnd;
   wire [`DDA_MOTION_ADDR_WIDTH-1:0] entry_off = adr - `DDA_MOTION_ENTRY_ADDR;
@@ -99,7 +109,8 @@ module dda_motion #(
   wire                 full  = level_q == Depth;
   wire                 empty = level_q == {LW{1'b0}};
   wire                 wr_entry  = wr & in_entry & ~abort;
-  wire                 entry_ok  = wr_entry & ~full;
+  wire                 entry_ok  = wr_entry & ~full & (&wb_sel_i);
+  wire                 err_lanes = wr_entry & ~(&wb_sel_i);
   wire                 commit_ok = commit & ~abort & ~full & (&mask_q);
   wire                 err_overflow = (wr_entry | commit) & ~abort & full;
   wire                 err_partial  = commit & ~abort & ~full & ~(&mask_q);
@@ -290,30 +301,30 @@ module dda_motion #(
       polarity_q    <= '0;
     end else begin
       if (wr_step_x) begin
-        steplen_x_q   <= wb_dat_i[`DDA_MOTION_STEP_X_STEPLEN_LSB+:TW];
-        stepspace_x_q <= wb_dat_i[`DDA_MOTION_STEP_X_STEPSPACE_LSB+:TW];
+        steplen_x_q   <= wdat[`DDA_MOTION_STEP_X_STEPLEN_LSB+:TW];
+        stepspace_x_q <= wdat[`DDA_MOTION_STEP_X_STEPSPACE_LSB+:TW];
       end
       if (wr_dir_x) begin
-        dirsetup_x_q <= wb_dat_i[`DDA_MOTION_DIR_X_DIRSETUP_LSB+:TW];
-        dirhold_x_q  <= wb_dat_i[`DDA_MOTION_DIR_X_DIRHOLD_LSB+:TW];
+        dirsetup_x_q <= wdat[`DDA_MOTION_DIR_X_DIRSETUP_LSB+:TW];
+        dirhold_x_q  <= wdat[`DDA_MOTION_DIR_X_DIRHOLD_LSB+:TW];
       end
       if (wr_step_y) begin
-        steplen_y_q   <= wb_dat_i[`DDA_MOTION_STEP_Y_STEPLEN_LSB+:TW];
-        stepspace_y_q <= wb_dat_i[`DDA_MOTION_STEP_Y_STEPSPACE_LSB+:TW];
+        steplen_y_q   <= wdat[`DDA_MOTION_STEP_Y_STEPLEN_LSB+:TW];
+        stepspace_y_q <= wdat[`DDA_MOTION_STEP_Y_STEPSPACE_LSB+:TW];
       end
       if (wr_dir_y) begin
-        dirsetup_y_q <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW];
-        dirhold_y_q  <= wb_dat_i[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW];
+        dirsetup_y_q <= wdat[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW];
+        dirhold_y_q  <= wdat[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW];
       end
       if (wr_step_z) begin
-        steplen_z_q   <= wb_dat_i[`DDA_MOTION_STEP_Z_STEPLEN_LSB+:TW];
-        stepspace_z_q <= wb_dat_i[`DDA_MOTION_STEP_Z_STEPSPACE_LSB+:TW];
+        steplen_z_q   <= wdat[`DDA_MOTION_STEP_Z_STEPLEN_LSB+:TW];
+        stepspace_z_q <= wdat[`DDA_MOTION_STEP_Z_STEPSPACE_LSB+:TW];
       end
       if (wr_dir_z) begin
-        dirsetup_z_q <= wb_dat_i[`DDA_MOTION_DIR_Z_DIRSETUP_LSB+:TW];
-        dirhold_z_q  <= wb_dat_i[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW];
+        dirsetup_z_q <= wdat[`DDA_MOTION_DIR_Z_DIRSETUP_LSB+:TW];
+        dirhold_z_q  <= wdat[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW];
       end
-      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wb_dat_i[5:0];
+      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wdat[5:0];
     end
   end
 
@@ -321,6 +332,7 @@ module dda_motion #(
   reg        err_q          /* verilator public_flat_rd */;
   reg        err_overflow_q /* verilator public_flat_rd */;
   reg        err_partial_q  /* verilator public_flat_rd */;
+  reg        err_lanes_q    /* verilator public_flat_rd */;
   reg        err_stall_q    /* verilator public_flat_rd */;
   reg        aborted_q      /* verilator public_flat_rd */;
   reg [2:0]  irq_status_q   /* verilator public_flat_rd */;  // {low, err, done}
@@ -332,7 +344,7 @@ module dda_motion #(
   reg [31:0] pos_y_q        /* verilator public_flat_rd */;
   reg [31:0] pos_z_q        /* verilator public_flat_rd */;
 
-  wire err_set = err_overflow | err_partial | core_err;
+  wire err_set = err_overflow | err_partial | err_lanes | core_err;
   wire low_set = take & (level_d < irq_level_q);
   // A piece is done when the core has finished it and its last steps have left the
   // stages: DONE_COUNT, IRQ_STATUS.done and the position counters agree. On the core's
@@ -358,6 +370,7 @@ module dda_motion #(
       err_q          <= 1'b0;
       err_overflow_q <= 1'b0;
       err_partial_q  <= 1'b0;
+      err_lanes_q    <= 1'b0;
       err_stall_q    <= 1'b0;
       aborted_q      <= 1'b0;
       irq_status_q   <= '0;
@@ -374,25 +387,26 @@ module dda_motion #(
       err_q          <= (err_q & ~clear) | err_set;
       err_overflow_q <= (err_overflow_q & ~clear) | err_overflow;
       err_partial_q  <= (err_partial_q & ~clear) | err_partial;
+      err_lanes_q    <= (err_lanes_q & ~clear) | err_lanes;
       err_stall_q    <= (err_stall_q & ~clear) | core_err;
       aborted_q      <= (aborted_q & ~clear) | abort;
-      irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wb_dat_i[2:0] : 3'b000))
+      irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wsel[2:0] : 3'b000))
                         | irq_set;
-      if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wb_dat_i[2:0];
-      if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wb_dat_i[LW-1:0];
+      if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wdat[2:0];
+      if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wdat[LW-1:0];
       done_count_q <= done_count_q + {31'd0, old_done} + {31'd0, new_done};
       done_wait_q  <= ~abort & (new_wait | (done_wait_q & tags_left));
       err_count_q  <= err_count_q + {31'd0, core_err};
-      // A preset is the position before the steps of the same edge: none is lost.
-      pos_x_q <= (wr_pos_x ? wb_dat_i : pos_x_q) + dx;
-      pos_y_q <= (wr_pos_y ? wb_dat_i : pos_y_q) + dy;
-      pos_z_q <= (wr_pos_z ? wb_dat_i : pos_z_q) + dz;
+      // A preset is the position before the steps of the same edge: a pulse that starts
+      // on the edge of a preset counts from the preset value, so none is lost.
+      pos_x_q <= (wr_pos_x ? wdat : pos_x_q) + dx;
+      pos_y_q <= (wr_pos_y ? wdat : pos_y_q) + dy;
+      pos_z_q <= (wr_pos_z ? wdat : pos_z_q) + dz;
     end
   end
   assign irq_o = |(irq_status_q & irq_enable_q);
 
   // ---- read data ----
-  reg [31:0] rd;
   always @(*) begin
     rd = 32'd0;
     case (adr)
@@ -414,6 +428,7 @@ module dda_motion #(
         rd[`DDA_MOTION_STATUS_ERR_PARTIAL_LSB]  = err_partial_q;
         rd[`DDA_MOTION_STATUS_ERR_STALL_LSB]    = err_stall_q;
         rd[`DDA_MOTION_STATUS_ABORTED_LSB]      = aborted_q;
+        rd[`DDA_MOTION_STATUS_ERR_LANES_LSB]    = err_lanes_q;
         rd[`DDA_MOTION_STATUS_LEVEL_LSB+:`DDA_MOTION_STATUS_LEVEL_WIDTH] = level_q;
       end
       `DDA_MOTION_IRQ_STATUS_ADDR: rd[2:0] = irq_status_q;

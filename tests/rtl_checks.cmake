@@ -136,7 +136,7 @@ dda_bus_vec_set(paper --a 10 --b 6 --bits 4 --preload zero)
 # for a 48 MHz clock with slow-drive timings, the lathe example at a constant increment.
 dda_bus_vec_set(paper_timed --a 10 --b 6 --bits 4 --preload zero --timing-x 5,3,4,2 --timing-y 2,9,0,3
                 --polarity 5 --feed-rate 400000 --clock 48000000 --seed 5)
-dda_bus_vec_set(lathe_timed ${_dda_lathe} --preload zero --timing 2,2,3,1 --feed 49152 --pipelined --seed 9)
+dda_bus_vec_set(lathe_timed ${_dda_lathe} --preload zero --timing 2,2,3,1 --feed-increment 3221225472 --pipelined --seed 9)
 set_property(TEST vectors.bus.paper_timed vectors.bus.lathe_timed APPEND PROPERTY LABELS stepdir)
 dda_bus_vec_set(lathe ${_dda_lathe} --preload zero --ce-percent 80 --seed 3)
 dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-percent 90 --seed 7
@@ -144,7 +144,7 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
 dda_bus_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper-macro.ngc --machine lathe
-                --start 60,5 --feed 40000 --seed 17)
+                --start 60,5 --feed-increment 2621440000 --seed 17)
 set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_paper_macro vectors.bus.paper_macro
              APPEND PROPERTY LABELS program)
 # The three-axis examples (the third axis through its own step/dir stage): a helix with
@@ -154,7 +154,7 @@ set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_pa
 dda_bus_vec_set(helix --program ${PROJECT_SOURCE_DIR}/examples/helix.ngc --step 0.005 --timing-z 3,2,2,1
                 --polarity 48 --seed 21)
 dda_bus_vec_set(pocket --program ${PROJECT_SOURCE_DIR}/examples/pocket.ngc --step 0.005 --pipelined --seed 23)
-dda_bus_vec_set(drilling --program ${PROJECT_SOURCE_DIR}/examples/drilling.ngc --step 0.005 --feed 40000
+dda_bus_vec_set(drilling --program ${PROJECT_SOURCE_DIR}/examples/drilling.ngc --step 0.005 --feed-increment 2621440000
                 --timing 1,1,1,1 --seed 25)
 dda_bus_vec_set(lines_3d --program ${PROJECT_SOURCE_DIR}/examples/lines-3d.ngc --ce-percent 90 --seed 27)
 dda_bus_vec_set(planes --program ${PROJECT_SOURCE_DIR}/examples/planes.ngc --step 0.005 --timing 2,1,1,1 --seed 29)

@@ -4,12 +4,14 @@
 // every violated rule; on the RTL (in lockstep with the reference model, the monitor on
 // every edge) pulses are exactly steplen long and no shorter apart than the timings
 // allow, an abort lets a pulse finish and counts it, polarity inverts the outputs, and a
-// feed increment paces the core at feed / 2^16 iterations per clock without catching up
+// feed increment paces the core at feed / 2^32 iterations per clock without catching up
 // after the stages held it.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <random>
@@ -18,6 +20,7 @@
 
 #include "accuracy/golden.hpp"
 #include "dda_random.hpp"
+#include "motion/speed_monitor.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "motion_harness.hpp"
 
@@ -197,7 +200,7 @@ TEST_CASE("stepdir: an abort lets the pulse in progress finish its steplen and c
   CHECK(mon.shortest(x_high ? 0 : 1).high == 400);
 }
 
-TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations per clock, without bursts", "[stepdir]") {
+TEST_CASE("stepdir: a feed increment paces the core at feed / 2^32 iterations per clock, without bursts", "[stepdir]") {
   const Plan p = plan_arc(paper_example());
   struct Case {
     std::uint32_t feed;
@@ -205,10 +208,13 @@ TEST_CASE("stepdir: a feed increment paces the core at feed / 2^16 iterations pe
     int min_gap, max_gap;  // cycles between iterations
   };
   // 1/4 and 1/2 of the clock with zero timings: the stages never hold the core, so the
-  // iterations are exactly 4 (2) cycles apart; slow drives (long pulses) hold it, and
+  // iterations are exactly 4 (2) cycles apart; at 3/8 of the clock 2 or 3 apart; slow drives (long pulses) hold it, and
   // then the iterations only spread out: never closer than the feed's own period.
-  const std::vector<Case> cases = {
-      {0x4000, {}, 4, 4}, {0x8000, {}, 2, 2}, {0x2000, {}, 8, 8}, {0x4000, {30, 30, 0, 0}, 4, 1000}};
+  const std::vector<Case> cases = {{0x40000000, {}, 4, 4},
+                                   {0x80000000, {}, 2, 2},
+                                   {0x20000000, {}, 8, 8},
+                                   {0x60000000, {}, 2, 3},
+                                   {0x40000000, {30, 30, 0, 0}, 4, 1000}};
   for (const auto& c : cases) {
     INFO("feed 0x" << std::hex << c.feed << std::dec << ", steplen " << c.t.steplen);
     MotionHarness h;
@@ -305,4 +311,76 @@ TEST_CASE("stepdir: timings rewritten while the axes run: every step out, every 
   CHECK(d.position().y == p.to.y);
   CHECK(mon.pulses(0) == steps(p, 0));
   CHECK(mon.pulses(1) == steps(p, 1));
+}
+
+namespace {
+
+// Pins of a synthetic motion: the path length s(t) of a trapezoid (accel at a from rest
+// to v, cruise, decel at a to rest) along a line at an angle or a circle, each axis'
+// position the nearest whole step, one clock of step high per step. Feeds the speed
+// monitor every clock; returns it.
+struct Profile {
+  double accel, speed, length;  // steps/s^2, steps/s, steps
+  double radius = 0;            // 0: a line at `angle` degrees
+  double angle = 30;
+  double start_speed = 0;  // a jump at the start: the profile leaves rest at this speed
+};
+SpeedMonitor run_profile(const Profile& p, const MotionLimits& lim) {
+  SpeedMonitor mon(lim);
+  const double t_acc = (p.speed - p.start_speed) / p.accel;
+  const double s_acc = (p.speed * p.speed - p.start_speed * p.start_speed) / (2 * p.accel);
+  const double s_dec = p.speed * p.speed / (2 * p.accel);
+  const double t_cruise = (p.length - s_acc - s_dec) / p.speed;
+  const double t_end = t_acc + t_cruise + p.speed / p.accel;
+  const auto path = [&](double t) {
+    if (t < t_acc) return p.start_speed * t + p.accel * t * t / 2;
+    if (t < t_acc + t_cruise) return s_acc + p.speed * (t - t_acc);
+    const double u = std::min(t - t_acc - t_cruise, p.speed / p.accel);
+    return s_acc + p.speed * t_cruise + p.speed * u - p.accel * u * u / 2;
+  };
+  const double th = p.angle * M_PI / 180;
+  std::array<long, 3> at{};
+  const auto cycles = std::uint64_t(t_end * lim.clock_hz) + std::uint64_t(lim.clock_hz / 10);
+  for (std::uint64_t c = 0; c < cycles; ++c) {
+    const double s = path(double(c) / lim.clock_hz);
+    const double x = p.radius > 0 ? p.radius * std::cos(s / p.radius) - p.radius : s * std::cos(th);
+    const double y = p.radius > 0 ? p.radius * std::sin(s / p.radius) : s * std::sin(th);
+    const std::array<long, 3> want{std::lround(x), std::lround(y), 0};
+    std::array<bool, 3> step{}, dir{};
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (want[a] != at[a]) {
+        step[a] = true;
+        dir[a] = want[a] < at[a];
+        at[a] += dir[a] ? -1 : 1;
+      }
+    }
+    mon.edge(step, dir);
+    if (std::any_of(step.begin(), step.end(), [](bool b) { return b; })) mon.edge({}, dir);  // the pulse falls
+  }
+  return mon;
+}
+
+}  // namespace
+
+TEST_CASE("speed monitor: a trapezoid within its limits passes and is measured from the pins", "[stepdir]") {
+  const MotionLimits lim{4e6, 2e4, 2e5};
+  for (const double radius : {0.0, 3000.0}) {
+    INFO("radius " << radius);
+    const SpeedMonitor mon = run_profile({2e5, 2e4, 6000, radius}, lim);
+    INFO(mon.summary());
+    CHECK(mon.peak_speed() > 2e4 * 0.99);
+    CHECK(mon.peak_speed() < 2e4 * 1.01);
+    CHECK(mon.peak_accel() > 2e5 * 0.9);
+    CHECK(mon.peak_accel() < 2e5 * 1.05);
+    CHECK(std::abs(mon.position()[0]) + std::abs(mon.position()[1]) > 100);
+  }
+}
+
+TEST_CASE("speed monitor: too fast, too hard an acceleration and a start at speed fail the run", "[stepdir]") {
+  const MotionLimits lim{4e6, 2e4, 2e5};
+  CHECK_THROWS_WITH(run_profile({2e5 * 1.2, 2e4, 6000}, lim), Catch::Contains("steps/s^2") && Catch::Contains("above"));
+  CHECK_THROWS_WITH(run_profile({2e5, 2.2e4, 6000}, lim), Catch::Contains("steps/s over the window"));
+  Profile jump{2e5, 2e4, 6000};
+  jump.start_speed = 1e4;
+  CHECK_THROWS_WITH(run_profile(jump, lim), Catch::Contains("steps/s^2"));
 }

@@ -64,6 +64,7 @@ std::uint32_t WishboneMaster::run(const Transfer& t) {
     b.we = t.we;
     b.adr = t.adr;
     b.dat = t.dat;
+    b.sel = t.sel;
     const bool stall = t_.outputs().stall;
     t_.tick(b);
     if (b.stb && !stall) taken = true;

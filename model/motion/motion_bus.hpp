@@ -81,6 +81,7 @@ class PieceMonitor : public BusTarget {
 struct Transfer {
   bool we = false;
   std::uint32_t adr = 0, dat = 0;
+  std::uint8_t sel = 0xF;  // byte lanes (wb_sel_i)
 };
 class WishboneMaster {
  public:
@@ -89,7 +90,7 @@ class WishboneMaster {
   // Runs one transfer to its ack; returns the read data (0 for a write).
   std::uint32_t run(const Transfer& t);
   std::uint32_t read(std::uint32_t adr) { return run({false, adr, 0}); }
-  void write(std::uint32_t adr, std::uint32_t dat) { run({true, adr, dat}); }
+  void write(std::uint32_t adr, std::uint32_t dat, std::uint8_t sel = 0xF) { run({true, adr, dat, sel}); }
   void idle(int cycles);
   // Runs before every edge (to change reset or ce_i).
   std::function<void()> each_cycle;

@@ -10,8 +10,8 @@
 // kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
 // (hw::kCmdFields, LSB first) and the entry's spare bits above it (kEntrySpareBits): the
 // kAxesWidth bits right above the command are the entry's axes (which of the block's
-// axes the core's drive), the top kFeedWidth bits of the last word its feed increment,
-// the bits between them reserved (written as 0).
+// axes the core's drive), the last word its feed increment, the bits between them
+// reserved (written as 0).
 #pragma once
 
 #include <array>
@@ -25,7 +25,7 @@
 namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
-inline constexpr int kVersionMajor = 2;
+inline constexpr int kVersionMajor = 3;
 inline constexpr int kVersionMinor = 0;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
@@ -44,8 +44,8 @@ inline constexpr int kRowWords = (kEntryWords + kEntryRows - 1) / kEntryRows;
 // The feed increment of an entry: bits kFeedLsb .. kFeedLsb + kFeedWidth - 1 of entry word
 // kFeedWord. The phase accumulator of the same width adds it every cycle the core may go
 // on and lets the core iterate on its carry: feed / 2^kFeedWidth iterations per clock
-// (0: one per clock, the core's full rate).
-inline constexpr int kFeedWidth = 16;
+// (0: one per clock, the core's full rate), a rate resolved to 2^-32 of the clock.
+inline constexpr int kFeedWidth = 32;
 inline constexpr int kFeedWord = kEntryWords - 1;
 inline constexpr int kFeedLsb = 32 - kFeedWidth;
 // The entry's axes: bits kAxesLsb .. kAxesLsb + kAxesWidth - 1 of entry word kAxesWord,
@@ -112,7 +112,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 52> kFields{{
+inline constexpr std::array<Field, 53> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -134,6 +134,7 @@ inline constexpr std::array<Field, 52> kFields{{
     {"STATUS", "err_partial", 5, 1, "cause: a commit before every word of the entry was written"},
     {"STATUS", "err_stall", 6, 1, "cause: the core stopped a command that could not go on (err_o)"},
     {"STATUS", "aborted", 7, 1, "an abort happened since the last clear"},
+    {"STATUS", "err_lanes", 8, 1, "cause: an entry word written with other byte lanes than all four (not written)"},
     {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
     {"IRQ_STATUS", "done", 0, 1, "a command finished"},
     {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
@@ -169,7 +170,7 @@ inline constexpr std::array<Field, 52> kFields{{
     {"DIR_Z", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
     {"DIR_Z", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
     {"ENTRY", "data", 0, 32,
-     "entry word k: command bits 32k .. 32k+31; above the command the axes, the last word's top bits the feed"},
+     "entry word k: command bits 32k .. 32k+31; above the command the axes, the last word the feed"},
 }};
 // A register's offset and a field by name (a name not in the map does not compile where
 // the result is a constant expression; at run time it throws).

@@ -86,6 +86,7 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                {reg("err_q"),
                 reg("err_overflow_q"),
                 reg("err_partial_q"),
+                reg("err_lanes_q"),
                 reg("err_stall_q"),
                 reg("aborted_q"),
                 reg("irq_status_q"),
@@ -135,7 +136,7 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
 }
 
 std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed, int axes) {
-  if (feed >> kFeedWidth)
+  if (std::uint64_t{feed} >> kFeedWidth)
     throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
   if (axes < 0 || axes > 2) throw GuardError("motion: axes " + std::to_string(axes) + " is not 0, 1 or 2");
   std::vector<std::uint32_t> w = hw::pack_command(c);
@@ -227,6 +228,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
     return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) | bit("err", get("err_q")) |
            bit("err_overflow", get("err_overflow_q")) | bit("err_partial", get("err_partial_q")) |
            bit("err_stall", get("err_stall_q")) | bit("aborted", get("aborted_q")) |
+           bit("err_lanes", get("err_lanes_q")) |
            std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
   }
   if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
@@ -272,7 +274,10 @@ BlockOutputs MotionModel::outputs() const {
 struct MotionModel::Wires {
   // The bus request.
   std::uint32_t adr = 0, word = 0;
-  bool req = false, wr = false, commit = false, abort = false, clear = false;
+  // The write data in the byte lanes selected, and merged with the addressed register's
+  // value in the others.
+  std::uint32_t wsel = 0, wdat = 0;
+  bool req = false, wr = false, commit = false, abort = false, clear = false, err_lanes = false;
   // The queue.
   std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, entry_axes = 0, fetch_d = 0;
   bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
@@ -293,10 +298,15 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
 
   w.req = b.cyc && b.stb && !get("ack_q");
   w.wr = w.req && b.we;
+  std::uint32_t lanes = 0;
+  for (int k = 0; k < 4; ++k)
+    if ((b.sel >> k) & 1u) lanes |= 0xFFu << (8 * k);
+  w.wsel = b.dat & lanes;
+  w.wdat = (read(w.adr) & ~lanes) | w.wsel;
   const bool wr_ctrl = w.wr && w.adr == reg_offset("CTRL");
-  w.commit = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
-  w.abort = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
-  w.clear = wr_ctrl && ((b.dat >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
+  w.commit = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
+  w.abort = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
+  w.clear = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = w.adr >= kEntryBase && w.adr < kEntryBase + 4u * kEntryWords;
   w.word = (w.adr - kEntryBase) >> 2;
 
@@ -305,7 +315,9 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
   w.empty = w.level == 0;
   const bool mask_all = get("mask_q") == all_words;
   const bool wr_entry = w.wr && in_entry && !w.abort;
-  w.entry_ok = wr_entry && !full;
+  const bool all_lanes = (b.sel & 0xFu) == 0xFu;
+  w.entry_ok = wr_entry && !full && all_lanes;
+  w.err_lanes = wr_entry && !all_lanes;
   w.commit_ok = w.commit && !w.abort && !full && mask_all;
   w.err_overflow = (wr_entry || w.commit) && !w.abort && full;
   w.err_partial = w.commit && !w.abort && !full && !mask_all;
@@ -391,8 +403,8 @@ void MotionModel::load_queue(const Wires& w) {
   }
 }
 
-void MotionModel::load_status(const BusIn& b, const Wires& w) {
-  const bool err_set = w.err_overflow || w.err_partial || w.core_err;
+void MotionModel::load_status(const Wires& w) {
+  const bool err_set = w.err_overflow || w.err_partial || w.err_lanes || w.core_err;
   const bool low_set = w.take && w.level_d < get("irq_level_q");
   // A piece is done once its last steps (tagged on the core's done_o) have left.
   const bool tags_left = w.ex.tag_left || w.ey.tag_left || w.ez.tag_left;
@@ -406,22 +418,24 @@ void MotionModel::load_status(const BusIn& b, const Wires& w) {
   reg("err_q") = (get("err_q") && !w.clear) || err_set;
   reg("err_overflow_q") = (get("err_overflow_q") && !w.clear) || w.err_overflow;
   reg("err_partial_q") = (get("err_partial_q") && !w.clear) || w.err_partial;
+  reg("err_lanes_q") = (get("err_lanes_q") && !w.clear) || w.err_lanes;
   reg("err_stall_q") = (get("err_stall_q") && !w.clear) || w.core_err;
   reg("aborted_q") = (get("aborted_q") && !w.clear) || w.abort;
-  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (b.dat & 7u) : 0;
+  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (w.wsel & 7u) : 0;
   reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
-  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = b.dat & 7u;
-  if (w.wr && w.adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = b.dat & mask_of(kLevelWidth);
+  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = w.wdat & 7u;
+  if (w.wr && w.adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = w.wdat & mask_of(kLevelWidth);
   reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
   reg("err_count_q") = (get("err_count_q") + w.core_err) & 0xFFFFFFFFu;
-  load_positions(b, w);
+  load_positions(w);
 }
 
-void MotionModel::load_positions(const BusIn& b, const Wires& w) {
-  // A preset is the position before the steps of the same edge: none is lost.
+void MotionModel::load_positions(const Wires& w) {
+  // A preset is the position before the steps of the same edge: a pulse that starts on
+  // the edge of a preset counts from the preset value, so none is lost.
   const auto load = [&](const char* r, const char* q, const StageEdge& e) {
     const std::uint64_t d = e.rise ? (e.rise_dir ? 0xFFFFFFFFu : 1u) : 0u;
-    const std::uint64_t p = w.wr && w.adr == reg_offset(r) ? b.dat : get(q);
+    const std::uint64_t p = w.wr && w.adr == reg_offset(r) ? w.wdat : get(q);
     reg(q) = (p + d) & 0xFFFFFFFFu;
   };
   load("POS_X", "pos_x_q", w.ex);
@@ -443,16 +457,16 @@ void MotionModel::load_feed(const Wires& w) {
   }
 }
 
-void MotionModel::load_settings(const BusIn& b, const Wires& w) {
+void MotionModel::load_settings(const Wires& w) {
   for (const char axis : kAxes) {
     for (const auto& t : kTimingFields) {
       const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
       if (w.wr && w.adr == reg_offset(r)) {
-        reg(std::string(t.name) + "_" + axis + "_q") = (b.dat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
+        reg(std::string(t.name) + "_" + axis + "_q") = (w.wdat >> field_of(r, t.name).lsb) & mask_of(kTimingWidth);
       }
     }
   }
-  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = b.dat & 0x3Fu;
+  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = w.wdat & 0x3Fu;
 }
 
 void MotionModel::edge(const BlockInputs& in) {
@@ -474,12 +488,12 @@ void MotionModel::edge(const BlockInputs& in) {
   note_edge(w);
   load_bus(in.bus, w);
   load_queue(w);
-  load_status(in.bus, w);
+  load_status(w);
   load_feed(w);
   set_stage('x', w.ex.next);
   set_stage('y', w.ey.next);
   set_stage('z', w.ez.next);
-  load_settings(in.bus, w);
+  load_settings(w);
 }
 
 }  // namespace dda::motion

@@ -59,7 +59,7 @@ struct BlockReg {
 };
 // Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
 // rtl/dda_stepdir.v).
-inline constexpr std::array<BlockReg, 59> kBlockRegs{{
+inline constexpr std::array<BlockReg, 60> kBlockRegs{{
     {"ack_q", Width::One},           {"dat_q", Width::Word},
     {"head_q", Width::Index},        {"tail_q", Width::Index},
     {"level_q", Width::Level},       {"mask_q", Width::Entry},
@@ -89,7 +89,7 @@ inline constexpr std::array<BlockReg, 59> kBlockRegs{{
     {"u_sz.pend_q", Width::One},     {"u_sz.pdir_q", Width::One},
     {"u_sz.tf_q", Width::Timing},    {"u_sz.ts_q", Width::Timing},
     {"u_sz.tag_q", Width::One},      {"axes_q", Width::Two},
-    {"route_q", Width::Two},
+    {"route_q", Width::Two},         {"err_lanes_q", Width::One},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -156,10 +156,10 @@ class MotionModel {
   void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_, rise_z_
   void load_bus(const BusIn& b, const Wires& w);
   void load_queue(const Wires& w);
-  void load_status(const BusIn& b, const Wires& w);  // status, interrupts, counters
-  void load_positions(const BusIn& b, const Wires& w);
+  void load_status(const Wires& w);  // status, interrupts, counters
+  void load_positions(const Wires& w);
   void load_feed(const Wires& w);
-  void load_settings(const BusIn& b, const Wires& w);  // the timings and the polarity
+  void load_settings(const Wires& w);  // the timings and the polarity
 
   int depth_log2_;
   CoreModel core_;

@@ -13,6 +13,14 @@ const std::uint32_t kCtrl = motion::reg_offset("CTRL"), kIrqStatus = motion::reg
                     kPosZ = motion::reg_offset("POS_Z");
 const std::string kAxisSuffix[] = {"_X", "_Y", "_Z"};
 
+// The bytes of the lanes selected.
+std::uint32_t lane_mask(std::uint32_t sel) {
+  std::uint32_t m = 0;
+  for (int k = 0; k < 4; ++k)
+    if ((sel >> k) & 1u) m |= 0xFFu << (8 * k);
+  return m;
+}
+
 cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
   cmd_t c;
   for (int b = 0; b < hw::kCmdWidth; ++b) c[b] = bool((w[std::size_t(b / 32)] >> (b % 32)) & 1u);
@@ -46,10 +54,10 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   bind_stages();
 
   SC_METHOD(comb);
-  sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << ack_q << dat_q << fetch_q << level_q
-            << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q << sx_step << sx_dir
-            << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir << sz_hold << sz_busy
-            << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q;
+  sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << wb_sel_i << ack_q << dat_q
+            << fetch_q << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
+            << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir
+            << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -91,8 +99,9 @@ void dda_motion::bind_stages() {
 void dda_motion::comb() {
   const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
-  const bool abort = req && wb_we_i.read() && adr == kCtrl &&
-                     ((wb_dat_i.read() >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  const std::uint32_t wsel = wb_dat_i.read() & lane_mask(wb_sel_i.read());
+  const bool abort =
+      req && wb_we_i.read() && adr == kCtrl && ((wsel >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
@@ -104,7 +113,7 @@ void dda_motion::comb() {
   const bool held = sx_hold.read() || sy_hold.read() || sz_hold.read() || wr_timing;
   hold.write(held);
   const bool advance = ce_i.read() && !held;
-  const std::uint32_t feed = feed_q.read(), sum = acc_q.read() + feed;
+  const std::uint64_t feed = feed_q.read(), sum = acc_q.read() + feed;
   core_ce.write(advance && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
   wb_ack_o.write(ack_q.read());
   wb_stall_o.write(ack_q.read());
@@ -147,7 +156,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            bit("empty", level == 0) | bit("full", level == depth) | bit("err", err_q.read()) |
            bit("err_overflow", err_overflow_q.read()) | bit("err_partial", err_partial_q.read()) |
            bit("err_stall", err_stall_q.read()) | bit("aborted", aborted_q.read()) |
-           level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
+           bit("err_lanes", err_lanes_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
   if (adr == kIrqEnable) return irq_enable_q.read();
@@ -172,9 +181,11 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
 // The decode of this edge's bus request and queue (the RTL's wires), read from the ports
 // and registers before the edge.
 struct dda_motion::Decode {
-  std::uint32_t adr = 0, dat = 0, word = 0, tail = 0, level_d = 0, head_d = 0, fetch_d = 0;
+  // dat: the write data; wsel: in the byte lanes selected; wdat: merged with the addressed
+  // register's value in the others.
+  std::uint32_t adr = 0, dat = 0, wsel = 0, wdat = 0, word = 0, tail = 0, level_d = 0, head_d = 0, fetch_d = 0;
   bool req = false, wr = false, abort = false, clear = false;
-  bool entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false, take = false;
+  bool entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false, err_lanes = false, take = false;
 };
 
 dda_motion::Decode dda_motion::decode() const {
@@ -185,10 +196,13 @@ dda_motion::Decode dda_motion::decode() const {
   d.wr = d.req && wb_we_i.read();
   d.adr = wb_adr_i.read() & 0xFCu;
   d.dat = wb_dat_i.read();
+  const std::uint32_t lanes = lane_mask(wb_sel_i.read());
+  d.wsel = d.dat & lanes;
+  d.wdat = (read(d.adr) & ~lanes) | d.wsel;
   const bool wr_ctrl = d.wr && d.adr == kCtrl;
-  const bool commit = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
-  d.abort = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
-  d.clear = wr_ctrl && ((d.dat >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
+  const bool commit = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
+  d.abort = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  d.clear = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = d.adr >= motion::kEntryBase && d.adr < motion::kEntryBase + 4u * kEntryWords;
   d.word = (d.adr - motion::kEntryBase) >> 2;
   const std::uint32_t level = level_q.read(), head = head_q.read();
@@ -196,7 +210,9 @@ dda_motion::Decode dda_motion::decode() const {
   const bool full = level == depth;
   const bool mask_all = mask_q.read() == all_words;
   const bool wr_entry = d.wr && in_entry && !d.abort;
-  d.entry_ok = wr_entry && !full;
+  const bool all_lanes = (wb_sel_i.read() & 0xFu) == 0xFu;
+  d.entry_ok = wr_entry && !full && all_lanes;
+  d.err_lanes = wr_entry && !all_lanes;
   d.commit_ok = commit && !d.abort && !full && mask_all;
   d.err_overflow = (wr_entry || commit) && !d.abort && full;
   d.err_partial = commit && !d.abort && !full && !mask_all;
@@ -221,12 +237,14 @@ void dda_motion::seq_ram(const Decode& d) {
   std::vector<std::uint32_t> words(row0_q);
   words.insert(words.end(), rd_row_q.begin(), rd_row_q.end());
   entry.write(entry_bits(words));
-  entry_feed.write((words[motion::kFeedWord] >> motion::kFeedLsb) & ((1u << motion::kFeedWidth) - 1));
+  entry_feed.write(
+      std::uint32_t((words[motion::kFeedWord] >> motion::kFeedLsb) & ((std::uint64_t{1} << motion::kFeedWidth) - 1)));
   entry_axes.write((words[motion::kAxesWord] >> motion::kAxesLsb) & ((1u << motion::kAxesWidth) - 1));
 }
 
 void dda_motion::seq_reset() {
-  for (auto* s : {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q})
+  for (auto* s :
+       {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q, &err_lanes_q})
     s->write(false);
   for (auto* s :
        {&dat_q,       &head_q,        &tail_q,       &level_q,     &mask_q,      &irq_status_q,  &irq_enable_q,
@@ -271,35 +289,37 @@ void dda_motion::seq_status(const Decode& d) {
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
   done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
-  const bool err_set = d.err_overflow || d.err_partial || cerr;
+  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr;
   const bool low_set = d.take && d.level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
   // Sticky bits: a cause on the edge of a clear stays set.
   err_q.write((err_q.read() && !d.clear) || err_set);
   err_overflow_q.write((err_overflow_q.read() && !d.clear) || d.err_overflow);
   err_partial_q.write((err_partial_q.read() && !d.clear) || d.err_partial);
+  err_lanes_q.write((err_lanes_q.read() && !d.clear) || d.err_lanes);
   err_stall_q.write((err_stall_q.read() && !d.clear) || cerr);
   aborted_q.write((aborted_q.read() && !d.clear) || d.abort);
-  const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.dat & 7u) : 0u;
+  const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.wsel & 7u) : 0u;
   irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
-  if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.dat & 7u);
-  if (d.wr && d.adr == kIrqLevel) irq_level_q.write(d.dat & ((1u << motion::kLevelWidth) - 1));
+  if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.wdat & 7u);
+  if (d.wr && d.adr == kIrqLevel) irq_level_q.write(d.wdat & ((1u << motion::kLevelWidth) - 1));
   done_count_q.write(done_count_q.read() + std::uint32_t(old_done) + std::uint32_t(new_done));
   err_count_q.write(err_count_q.read() + cerr);
   const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   const std::uint32_t dz = sz_rise.read() ? (sz_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
-  // A preset is the position before the steps of the same edge: none is lost.
-  pos_x_q.write((d.wr && d.adr == kPosX ? d.dat : pos_x_q.read()) + dx);
-  pos_y_q.write((d.wr && d.adr == kPosY ? d.dat : pos_y_q.read()) + dy);
-  pos_z_q.write((d.wr && d.adr == kPosZ ? d.dat : pos_z_q.read()) + dz);
+  // A preset is the position before the steps of the same edge: a pulse that starts on
+  // the edge of a preset counts from the preset value, so none is lost.
+  pos_x_q.write((d.wr && d.adr == kPosX ? d.wdat : pos_x_q.read()) + dx);
+  pos_y_q.write((d.wr && d.adr == kPosY ? d.wdat : pos_y_q.read()) + dy);
+  pos_z_q.write((d.wr && d.adr == kPosZ ? d.wdat : pos_z_q.read()) + dz);
 }
 
 // feed_q, acc_q: the phase accumulator that paces the core; axes_q, route_q: which
 // stage each of the core's axes drives (route_q: axes_q a clock later, as the core's
 // step outputs show the iteration of the edge before).
 void dda_motion::seq_feed(const Decode& d) {
-  const std::uint32_t fmask = (1u << motion::kFeedWidth) - 1;
+  const std::uint64_t fmask = (std::uint64_t{1} << motion::kFeedWidth) - 1;
   if (d.abort) {
     feed_q.write(0);
     acc_q.write(0);
@@ -309,7 +329,7 @@ void dda_motion::seq_feed(const Decode& d) {
     route_q.write(axes_q.read());
     if (d.take) axes_q.write(entry_axes.read());
     if (d.take) feed_q.write(entry_feed.read());
-    if (ce_i.read() && !hold.read()) acc_q.write((acc_q.read() + feed_q.read()) & fmask);
+    if (ce_i.read() && !hold.read()) acc_q.write(std::uint32_t((std::uint64_t{acc_q.read()} + feed_q.read()) & fmask));
   }
 }
 
@@ -320,9 +340,9 @@ void dda_motion::seq_settings(const Decode& d) {
   for (std::size_t i = 0; i < regs.size(); ++i) {
     const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
     const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
-    if (d.wr && d.adr == motion::reg_offset(r)) regs[i]->write((d.dat >> motion::field_of(r, t.name).lsb) & tmask);
+    if (d.wr && d.adr == motion::reg_offset(r)) regs[i]->write((d.wdat >> motion::field_of(r, t.name).lsb) & tmask);
   }
-  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.dat & 0x3Fu);
+  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.wdat & 0x3Fu);
 }
 
 void dda_motion::seq() {

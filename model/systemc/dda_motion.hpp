@@ -35,7 +35,7 @@ SC_MODULE(dda_motion) {
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
   sc_core::sc_signal<bool> ack_q{"ack_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
-      err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"};
+      err_partial_q{"err_partial_q"}, err_stall_q{"err_stall_q"}, aborted_q{"aborted_q"}, err_lanes_q{"err_lanes_q"};
   sc_core::sc_signal<std::uint32_t> dat_q{"dat_q"}, head_q{"head_q"}, tail_q{"tail_q"}, level_q{"level_q"},
       mask_q{"mask_q"}, irq_status_q{"irq_status_q"}, irq_enable_q{"irq_enable_q"}, irq_level_q{"irq_level_q"},
       done_count_q{"done_count_q"}, err_count_q{"err_count_q"}, pos_x_q{"pos_x_q"}, pos_y_q{"pos_y_q"},

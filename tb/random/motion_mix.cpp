@@ -143,7 +143,7 @@ Point Mix::queue_batch(const std::vector<Plan>& batch) {
     for (const auto& piece : p.pieces) {
       at = at + Point{piece.to.x - piece.from.x, piece.to.y - piece.from.y, piece.to.z - piece.from.z};
       mon_.expect(at);
-      const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x2000 + std::uint32_t(rng_() % 0xE000);
+      const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x20000000u + std::uint32_t(rng_() % 0xE0000000u);
       st_.fed_pieces += feed != 0;
       d_.queue(piece.cmd, feed, piece.rot);
     }

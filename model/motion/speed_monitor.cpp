@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "motion/speed_monitor.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "datapath/errors.hpp"
+
+namespace dda::motion {
+
+std::uint64_t SpeedMonitor::window_for(const MotionLimits& l, double share) {
+  if (!(l.clock_hz > 0)) throw GuardError("speed monitor: the clock must be positive");
+  if (!(l.max_accel > 0) || !(share > 0)) return 1;
+  // 2 * kQuantSteps / T^2 <= share * max_accel, T = kSubs * sub / clock.
+  const double t = std::sqrt(2 * kQuantSteps / (share * l.max_accel));
+  return std::max<std::uint64_t>(1, std::uint64_t(std::ceil(t * l.clock_hz / kSubs)));
+}
+
+SpeedMonitor::SpeedMonitor(const MotionLimits& limits, std::uint64_t sub_clocks)
+    : lim_(limits), sub_(sub_clocks ? sub_clocks : window_for(limits)) {
+  if (!(lim_.clock_hz > 0)) throw GuardError("speed monitor: the clock must be positive");
+  // The machine is at rest when the monitor starts: the windows before it are still.
+  at_.assign(std::size_t(kSubs) + 1, pos_);
+  speeds_.assign(std::size_t(kSubs) + 1, 0.0);
+}
+
+void SpeedMonitor::edge(const std::array<bool, 3>& step, const std::array<bool, 3>& dir) {
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (step[a] && !step_[a]) pos_[a] += dir[a] ? -1 : 1;
+    step_[a] = step[a];
+  }
+  if (++cycle_ % sub_ == 0) sample();
+}
+
+void SpeedMonitor::sample() {
+  at_.push_back(pos_);
+  at_.pop_front();
+  double len = 0;
+  for (std::size_t j = 1; j < at_.size(); ++j) {
+    double s = 0;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double d = double(at_[j][a] - at_[j - 1][a]);
+      s += d * d;
+    }
+    len += std::sqrt(s);
+  }
+  const double t_win = double(kSubs * sub_) / lim_.clock_hz;
+  Sample s;
+  s.t = double(cycle_) / lim_.clock_hz;
+  s.speed = len / t_win;
+  speeds_.push_back(s.speed);
+  speeds_.pop_front();
+  s.accel = (s.speed - speeds_.front()) / t_win;
+  samples_.push_back(s);
+  peak_speed_ = std::max(peak_speed_, s.speed);
+  peak_accel_ = std::max(peak_accel_, std::fabs(s.accel));
+  if (lim_.max_speed > 0 && s.speed > lim_.max_speed * (1 + lim_.speed_tolerance)) {
+    throw GuardError(
+        fmt::format("speed monitor: {:.1f} steps/s over the window ending at {:.6f} s, above the limit "
+                    "{:.1f} steps/s (+{:.0f}%)",
+                    s.speed, s.t, lim_.max_speed, 100 * lim_.speed_tolerance));
+  }
+  if (lim_.max_accel > 0 && std::fabs(s.accel) > lim_.max_accel * (1 + lim_.accel_tolerance)) {
+    throw GuardError(
+        fmt::format("speed monitor: {:.4g} steps/s^2 between the windows ending at {:.6f} s and {:.6f} s, "
+                    "above the limit {:.4g} steps/s^2 (+{:.0f}%)",
+                    s.accel, s.t - t_win, s.t, lim_.max_accel, 100 * lim_.accel_tolerance));
+  }
+}
+
+std::string SpeedMonitor::summary() const {
+  return fmt::format(
+      "speed monitor: {} windows of {} clocks, peak speed {:.1f} steps/s (limit {}), peak acceleration "
+      "{:.4g} steps/s^2 (limit {})",
+      samples_.size(), kSubs * sub_, peak_speed_, lim_.max_speed > 0 ? fmt::format("{:.1f}", lim_.max_speed) : "none",
+      peak_accel_, lim_.max_accel > 0 ? fmt::format("{:.4g}", lim_.max_accel) : "none");
+}
+
+}  // namespace dda::motion
