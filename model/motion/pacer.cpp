@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "motion/pacer.hpp"
+
+#include <algorithm>
+
+namespace dda::motion {
+
+namespace {
+
+using u128 = unsigned __int128;
+
+// floor(sqrt(n)), exactly.
+std::uint64_t isqrt(u128 n) {
+  u128 r = 0;
+  for (int b = 63; b >= 0; --b) {
+    const u128 t = r | (u128(1) << b);
+    if (t * t <= n) r = t;
+  }
+  return std::uint64_t(r);
+}
+
+// A ramp speed of an entry speed.
+std::uint64_t ramp(std::uint32_t v) { return std::uint64_t(v) << (kRampFrac - kSpeedFrac); }
+
+// Distances inside: the speed per clock (kRampFrac) and d (kNormFrac) at kDistFrac bits.
+std::uint64_t dist_of_speed(std::uint64_t v) { return v >> (kRampFrac - kDistFrac); }
+std::uint64_t dist_of_norm(std::uint64_t d) { return d << (kDistFrac - kNormFrac); }
+std::uint64_t dist_of_len(std::uint32_t l) { return std::uint64_t(l) << (kDistFrac - kLenFrac); }
+
+}  // namespace
+
+std::uint64_t iteration_distance(const Command& c, const RegState& r) {
+  const auto q = [](std::int64_t v, std::int64_t cap) {
+    return v > 0 && cap > 0 ? (u128(std::uint64_t(v)) << kNormFrac) / u128(std::uint64_t(cap)) : u128(0);
+  };
+  const u128 qx = q(r.cnt_x != 0 ? r.jv_x : 0, c.cap);
+  const u128 qy = q(r.cnt_y != 0 ? r.jv_y : 0, c.cap);
+  const u128 qz = q(r.cnt_z != 0 ? c.jv_z : 0, c.cap_z);
+  return isqrt(qx * qx + qy * qy + qz * qz);
+}
+
+std::uint32_t brake_distance(std::uint32_t v, std::uint64_t accel) {
+  if (accel == 0) return 0;
+  // Speeds v - a, v - 2a, ... while positive, one per clock: n v - a n (n + 1) / 2.
+  const u128 V = ramp(v);
+  const u128 n = V / accel;
+  const u128 b = n * V - u128(accel) * n * (n + 1) / 2;  // x 2^kRampFrac steps
+  const u128 unit = u128(1) << (kRampFrac - kLenFrac);
+  const u128 l = (b + unit - 1) / unit;
+  if (l > 0xFFFFFFFFu) throw GuardError("pacer: a braking distance longer than an entry holds");
+  return std::uint32_t(l);
+}
+
+std::uint32_t pace_length(const Command& c) {
+  Datapath d(c, Point{});
+  u128 sum = 0;
+  const std::uint64_t bound = std::uint64_t{1} << 40;
+  while (!d.done()) {
+    if (d.stalled() || d.iterations() > bound) throw GuardError("pacer: a piece that does not end");
+    sum += iteration_distance(c, d.regs());
+    d.iterate();
+  }
+  const u128 unit = u128(1) << (kNormFrac - kLenFrac);
+  const u128 l = (sum + unit - 1) / unit;
+  if (l > 0xFFFFFFFFu) throw GuardError("pacer: a piece longer than an entry's length field holds");
+  return std::uint32_t(l);
+}
+
+bool Pacer::decelerate(const In& in) const {
+  const std::uint64_t exit_brake = in.next_queued ? dist_of_len(e_.brake_exit) : 0;
+  const std::uint64_t margin = std::uint64_t{1} << (kDistFrac - kMarginShift);
+  return s_ + dist_of_speed(ph_) + margin >= rem_ + exit_brake;
+}
+
+std::uint64_t Pacer::target(const In& in) const {
+  if (in.set.hold) return 0;
+  std::uint64_t t = std::min(ramp(e_.cruise) / kOverrideOne * in.set.override_ +
+                                 ramp(e_.cruise) % kOverrideOne * in.set.override_ / kOverrideOne,
+                             ramp(e_.limit));
+  if (decelerate(in)) t = std::min(t, in.next_queued ? ramp(e_.exit) : 0);
+  return std::max(t, ramp(in.set.vmin));
+}
+
+bool Pacer::iterate(const In& in) const {
+  if (!in.advance || !in.running || !distance_valid()) return false;
+  return ph_ + v_ >= d_ << (kRampFrac - kNormFrac);
+}
+
+void Pacer::edge(const In& in, bool stepped) {
+  const bool it = iterate(in);
+  // The norm unit: a fresh d kNormLatency clocks after a take or a stepping iteration,
+  // from the core's registers then (the core does not iterate meanwhile).
+  if (pending_ && stepped) busy_ = kNormLatency;
+  pending_ = false;
+  if (busy_ > 0 && --busy_ == 0 && in.running && in.cmd) d_ = iteration_distance(*in.cmd, in.regs);
+  if (it) {
+    pending_ = true;
+    rem_ -= std::min(rem_, dist_of_norm(d_));
+  }
+  // The phase: v per clock while a piece runs, d off on an iteration.
+  const std::uint64_t D = d_ << (kRampFrac - kNormFrac);
+  if (!in.running) {
+    ph_ = 0;
+  } else if (in.advance) {
+    ph_ = ph_ + v_ - (it ? D : 0);
+  }
+  // The ramp, with the braking distance.
+  if (in.advance && in.running) {
+    const std::uint64_t t = target(in), a = in.set.accel;
+    std::uint64_t v = v_;
+    if (a == 0) {
+      v = t;
+      s_ = 0;
+    } else if (v_ < t) {
+      v = t - v_ > a ? v_ + a : t;
+      s_ += dist_of_speed(v_);
+    } else if (v_ > t) {
+      v = v_ - t > a ? v_ - a : t;
+      s_ -= std::min(s_, dist_of_speed(v));
+    }
+    v_ = v;
+    if (v_ == 0) s_ = 0;
+  }
+  if (!in.running && !in.take) v_ = s_ = 0;  // no piece: at rest
+  if (in.take) {
+    e_ = in.entry;
+    rem_ = dist_of_len(e_.length);
+    busy_ = kNormLatency;
+    pending_ = false;
+  }
+  down_ = decelerate(in);
+}
+
+}  // namespace dda::motion

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pacer: the reference model of the motion block's speed generator, clock by clock
+// and in exact integers (docs/design.md, "Pacer"). It decides on every clock whether the
+// core iterates, so that the path speed follows a commanded speed v that ramps at the
+// acceleration a: up to the piece's cruise speed (times the override, clamped to its
+// limit), down early enough to reach its exit speed at its end (or rest, when no piece
+// follows in the queue), down to rest on a hold.
+//
+// Constant tangential feed. An iteration moves the tool by d = |(jv_x, jv_y) / cap,
+// jv_z / cap_z| steps along the path (the integrands are the DDA's velocity; an axis
+// whose counter is done, or whose integrand is not positive, adds 0). A phase adds v on
+// every clock and the core iterates when it reaches d, taking d off: the path speed is v
+// whatever d does along an ellipse. d comes from the norm unit, which recomputes it
+// after every iteration that stepped (only a step changes an integrand or ends an
+// axis): kNormLatency clocks during which the phase keeps adding but the core waits.
+// d is exact to kNormFrac bits: q = floor(v_i * 2^kNormFrac / cap_i) per axis,
+// d = floor(sqrt(q_x^2 + q_y^2 + q_z^2)).
+//
+// Acceleration. v changes by at most a per clock. The braking distance s, the distance
+// a ramp down at a from v to rest travels, is kept by additions alone: a ramp step up
+// from v adds v, one down to v' takes v' off (a clamp onto a target, less than a, counts
+// as a whole step: it moves s by less than v). The pacer ramps down once s, less the
+// braking distance of the exit speed (the entry's brake_exit, which the planner
+// computes with brake_distance()), reaches the distance still to go (the entry's length,
+// less d per iteration, less the phase: the way gone toward the next iteration) less
+// 2^-kMarginShift step: the piece then ends at its exit speed, the
+// last one at the minimum speed vmin (never below while a piece runs and no hold is on:
+// a drive can start and stop at vmin, and the last step then comes in bounded time).
+#pragma once
+
+#include <cstdint>
+
+#include "datapath/datapath.hpp"
+
+namespace dda::motion {
+
+// Units. Entry speeds: path steps per clock x 2^kSpeedFrac (32 bits: at most 1 step per
+// clock, a resolution of 0.0093 steps/s at 40 MHz). The commanded speed, the phase and
+// the acceleration (steps per clock per clock): x 2^kRampFrac. Distances kept inside:
+// x 2^kDistFrac steps; entry lengths: x 2^kLenFrac steps. The override: x 1/kOverrideOne.
+inline constexpr int kSpeedFrac = 32;
+inline constexpr int kRampFrac = 48;
+inline constexpr int kDistFrac = 32;
+inline constexpr int kLenFrac = 8;
+inline constexpr int kNormFrac = 20;
+inline constexpr std::uint32_t kOverrideOne = 256;  // 100%; OVERRIDE runs 0 .. 2 * kOverrideOne (200%)
+inline constexpr int kNormLatency = 64;             // clocks from a step to the fresh d
+inline constexpr int kMarginShift = 3;              // ramp down 2^-kMarginShift step before the end
+
+// The pacing fields of a queue entry.
+struct PaceEntry {
+  std::uint32_t cruise = 0;      // the speed to hold (x 2^kSpeedFrac steps/clock)
+  std::uint32_t limit = 0;       // the override never takes the speed above this
+  std::uint32_t exit = 0;        // the speed to end at when another piece follows
+  std::uint32_t length = 0;      // the piece's path length, the sum of d (x 2^kLenFrac steps)
+  std::uint32_t brake_exit = 0;  // brake_distance(exit, accel) (x 2^kLenFrac steps)
+};
+// The block's settings the pacer reads.
+struct PaceSettings {
+  std::uint64_t accel = 0;  // x 2^kRampFrac steps/clock^2; 0: no ramp (the speed jumps)
+  std::uint32_t vmin = 0;   // x 2^kSpeedFrac steps/clock
+  std::uint32_t override_ = kOverrideOne;
+  bool hold = false;
+};
+
+// The DDA's path length per iteration from the core's registers, x 2^kNormFrac steps.
+std::uint64_t iteration_distance(const Command& c, const RegState& r);
+// The distance a ramp down from speed v (x 2^kSpeedFrac) to rest at accel travels, as
+// the pacer counts it, x 2^kLenFrac steps, rounded up; 0 for accel 0.
+std::uint32_t brake_distance(std::uint32_t v, std::uint64_t accel);
+// A piece's length as the pacer counts it: the sum of iteration_distance over its
+// iterations, x 2^kLenFrac steps, rounded up. Throws GuardError for a piece that does
+// not end or is longer than the field holds.
+std::uint32_t pace_length(const Command& c);
+
+class Pacer {
+ public:
+  // The inputs of one clock: advance (ce_i, no stage holds the core), whether a piece
+  // runs and its registers (the core's state before the edge), whether the core takes
+  // an entry on this edge and that entry, whether another entry waits in the queue.
+  struct In {
+    bool advance = false;
+    bool running = false;
+    const Command* cmd = nullptr;  // the running piece's command (with running)
+    RegState regs;
+    bool take = false;
+    PaceEntry entry;
+    bool next_queued = false;
+    PaceSettings set;
+  };
+  // Whether the core iterates on this edge (a wire: from the state before the edge).
+  bool iterate(const In& in) const;
+  // The edge: stepped says whether the core's last iteration (on the edge before) made
+  // a step; it is read on the edge after every iteration.
+  void edge(const In& in, bool stepped);
+
+  std::uint64_t speed() const { return v_; }  // x 2^kRampFrac steps/clock
+  std::uint64_t distance() const { return d_; }
+  bool distance_valid() const { return busy_ == 0 && !pending_; }
+  bool ramping_down() const { return down_; }
+  std::uint64_t brake() const { return s_; }    // x 2^kDistFrac steps
+  std::uint64_t to_go() const { return rem_; }  // x 2^kDistFrac steps
+  std::uint64_t target(const In& in) const;     // the speed the ramp heads for
+
+ private:
+  bool decelerate(const In& in) const;
+
+  std::uint64_t v_ = 0, ph_ = 0, d_ = 0, s_ = 0, rem_ = 0;
+  PaceEntry e_;
+  int busy_ = 0;          // clocks until the norm unit's d is fresh
+  bool pending_ = false;  // an iteration happened on the last edge: d waits for its step
+  bool down_ = false;
+};
+
+}  // namespace dda::motion
