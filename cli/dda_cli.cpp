@@ -6,6 +6,7 @@
 // to stdout, or with --out to a file written atomically (temporary file, then rename).
 #include "dda_cli.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cctype>
@@ -40,6 +41,7 @@
 #include "program/program.hpp"
 #include "program_cmd.hpp"
 #include "report/feed_report.hpp"
+#include "report/pace_report.hpp"
 #include "report/program_report.hpp"
 #include "report/report.hpp"
 #include "temp_files.hpp"
@@ -126,6 +128,8 @@ struct FeedCli {
   ArcOptions arc;
   bool summary = false;
   std::string label = "arc";
+  // The pacer's run (with --feed-rate): steps/s, steps/s^2, Hz, steps/s.
+  double feed_rate = 0, accel = 0, clock_hz = 0, vmin = -1;  // vmin < 0: sqrt(2 accel 1 step)
 };
 
 // The options of `dda gen-params`.
@@ -164,9 +168,16 @@ void set_up_vectors(CLI::App* sub, Cli& c) {
 void set_up_feed(CLI::App* sub, Cli& c) {
   ArcUses uses;
   uses.engine = uses.vcd = uses.program = false;  // the planner's table of one arc
-  add_arc_options(sub, c.feed.arc, "markdown", "markdown", uses);
+  add_arc_options(sub, c.feed.arc, "markdown, or csv (one row per iteration) with --feed-rate", "markdown", uses);
   sub->add_flag("--summary", c.feed.summary, "one row for the arc (the table of docs/results.md)");
   sub->add_option("--label", c.feed.label, "the arc's name in the --summary row (default: empty)");
+  sub->add_option("--feed-rate", c.feed.feed_rate,
+                  "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
+  sub->add_option("--accel", c.feed.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
+  sub->add_option("--clock", c.feed.clock_hz, "with --feed-rate: the block's clock in Hz");
+  sub->add_option("--vmin", c.feed.vmin,
+                  "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
+                  "from it takes one step)");
 }
 
 void set_up_plot(CLI::App* sub, Cli& c) {
@@ -267,12 +278,43 @@ void run_vectors(const Cli& c, int argc, char** argv) {
   }
 }
 
+// The pacer's options of `dda feed --feed-rate ...`, checked.
+PaceOptions pace_options(const FeedCli& f) {
+  const double vmin = f.vmin < 0 ? std::min(f.feed_rate, std::sqrt(2 * f.accel)) : f.vmin;
+  // (nan fails these comparisons too.)
+  if (!(f.feed_rate > 0 && f.feed_rate <= 1e9))
+    throw InputError(fmt::format("--feed-rate = {} is out of range: steps/s, above 0 and at most 1e9", f.feed_rate));
+  if (!(f.clock_hz > 0 && f.clock_hz <= 1e10))
+    throw InputError(fmt::format("--clock = {} is out of range: Hz, above 0 and at most 1e10", f.clock_hz));
+  if (!(f.accel >= 0 && f.accel <= 1e12))
+    throw InputError(fmt::format("--accel = {} is out of range: steps/s^2, 0 to 1e12 (0: no ramps)", f.accel));
+  if (f.accel > 0 && vmin == 0)
+    throw InputError("--vmin 0 with an acceleration never ends the last piece: the ramp reaches rest before its end");
+  if (!(vmin >= 0 && vmin <= f.feed_rate))
+    throw InputError(fmt::format("--vmin = {} is out of range: steps/s, 0 to the feed", vmin));
+  return PaceOptions{f.feed_rate, f.accel, vmin, f.clock_hz};
+}
+
 void run_feed(const Cli& c, int, char**) {
-  const ArcOptions& fd = c.feed.arc;
-  parse_enum<int>("format", fd.format, {{"markdown", 0}});
+  const FeedCli& f = c.feed;
+  const ArcOptions& fd = f.arc;
+  const bool paced = f.feed_rate != 0;
+  const int format = parse_enum<int>("format", fd.format, {{"markdown", 0}, {"csv", 1}});
+  if (!paced && (f.accel != 0 || f.clock_hz != 0 || f.vmin >= 0))
+    throw InputError("--accel, --clock and --vmin go with --feed-rate");
+  if (!paced && format == 1)
+    throw InputError("--format csv is the pacer's profile: give --feed-rate, --accel, --clock");
+  const PaceOptions po = paced ? pace_options(f) : PaceOptions{};
+  if (paced && format == 1 && f.summary) throw InputError("--summary is a markdown row: not with --format csv");
   const Plan plan = make_plan(fd);
   Output out(fd.out);
-  write_feed_report(out.stream(), plan, c.feed.summary, c.feed.label);
+  if (!paced) {
+    write_feed_report(out.stream(), plan, f.summary, f.label);
+  } else if (format == 1) {
+    write_pace_csv(out.stream(), plan, po);
+  } else {
+    write_pace_report(out.stream(), plan, po, f.summary, f.label);
+  }
   out.commit();
 }
 
@@ -330,7 +372,10 @@ const Subcommand kSubcommands[] = {
     {"path", "lattice points of the path", set_up_path, run_path},
     {"stats", "counts and deviation from the ideal ellipse", set_up_stats, run_stats},
     {"vectors", "test vectors from the golden model (--out-dir DIR; docs/vectors.md)", set_up_vectors, run_vectors},
-    {"feed", "the DDA's speed along the path at a constant feed increment, per piece", set_up_feed, run_feed},
+    {"feed",
+     "the DDA's speed along the path at a constant feed increment, per piece; with --feed-rate the pacer's run: "
+     "speed profile and figures",
+     set_up_feed, run_feed},
     {"plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)", set_up_plot, run_plot},
     {"gen-params", "print the hardware widths and command fields", set_up_gen_params, run_gen_params},
     {"blocks", "the motion blocks a part program reads as, in machine coordinates (--program FILE)", set_up_blocks,

@@ -215,6 +215,30 @@ TEST_CASE("cli input: an option that does not apply is refused, not ignored", "[
   CHECK(slurp(out).rfind("| piece |", 0) == 0);
 }
 
+TEST_CASE("cli input: the pacer's run takes its options together and refuses a stop that never ends", "[cli][errors]") {
+  Scratch s;
+  const std::string pace = "feed " + kPaper + " --feed-rate 2000 --accel 2e5 --clock 40e6";
+  const std::pair<std::string, std::string> cases[] = {
+      {"feed " + kPaper + " --accel 2e5", "--accel, --clock and --vmin go with --feed-rate"},
+      {"feed " + kPaper + " --format csv", "--format csv is the pacer's profile"},
+      {pace + " --vmin 0", "--vmin 0 with an acceleration never ends the last piece"},
+      {pace + " --vmin 3000", "--vmin = 3000 is out of range: steps/s, 0 to the feed"},
+      {"feed " + kPaper + " --feed-rate nan --accel 2e5 --clock 40e6", "--feed-rate = nan is out of range"},
+      {"feed " + kPaper + " --feed-rate 2000 --accel 2e5", "--clock = 0 is out of range"},
+      {"feed " + kPaper + " --feed-rate 5e7 --accel 2e5 --clock 40e6",
+       "pace: 50000000 steps/s is not below one step per clock"},
+      {pace + " --format csv --summary", "--summary is a markdown row: not with --format csv"},
+  };
+  for (const auto& [args, want] : cases) expect_refused(s, args, want);
+  // The profile: a header and one row per iteration, ending on the arc's end point.
+  const Result r = run_dda(s, pace + " --format csv");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.rfind("iteration,clock,time_s,commanded_steps_per_s,path_steps_per_s,path_steps,x,y,z\n", 0) == 0);
+  CHECK(r.out.find("\n27,") != std::string::npos);
+  REQUIRE(r.out.size() > 7);
+  CHECK(r.out.compare(r.out.size() - 7, 7, ",0,6,0\n") == 0);
+}
+
 TEST_CASE("cli input: characters named as characters, and a refused program prints nothing", "[cli][program][errors]") {
   Scratch s;
   const std::pair<std::string, std::string> cases[] = {

@@ -39,11 +39,11 @@ std::uint64_t iteration_distance(const Command& c, const RegState& r) {
   return isqrt(qx * qx + qy * qy + qz * qz);
 }
 
-std::uint32_t brake_distance(std::uint32_t v, std::uint64_t accel) {
-  if (accel == 0) return 0;
-  // Speeds v - a, v - 2a, ... while positive, one per clock: n v - a n (n + 1) / 2.
+std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel) {
+  if (accel == 0 || v <= vmin) return 0;
+  // Speeds v - a, v - 2a, ... while above vmin, one per clock: n v - a n (n + 1) / 2.
   const u128 V = ramp(v);
-  const u128 n = V / accel;
+  const u128 n = (V - ramp(vmin) - 1) / accel;
   const u128 b = n * V - u128(accel) * n * (n + 1) / 2;  // x 2^kRampFrac steps
   const u128 unit = u128(1) << (kRampFrac - kLenFrac);
   const u128 l = (b + unit - 1) / unit;
@@ -86,8 +86,32 @@ bool Pacer::iterate(const In& in) const {
   return ph_ + v_ >= d_ << (kRampFrac - kNormFrac);
 }
 
+std::uint64_t Pacer::idle_clocks(const In& in) const {
+  if (!in.advance || !in.running || in.take || !distance_valid() || v_ == 0 || v_ != target(in)) return 0;
+  // Clock j (from 0) adds v to ph + j v: no iteration while ph + (j + 1) v < D.
+  const std::uint64_t D = d_ << (kRampFrac - kNormFrac);
+  if (ph_ + v_ >= D) return 0;
+  std::uint64_t n = (D - ph_ - 1) / v_;
+  if (!decelerate(in)) {  // once true it stays true while the phase grows
+    // The decision reads (ph + j v) >> (kRampFrac - kDistFrac) against rem + brake - s - margin.
+    const std::uint64_t exit_brake = in.next_queued ? dist_of_len(e_.brake_exit) : 0;
+    const std::uint64_t margin = std::uint64_t{1} << (kDistFrac - kMarginShift);
+    const u128 thr = (u128(rem_ + exit_brake - s_ - margin)) << (kRampFrac - kDistFrac);
+    const u128 k = thr > ph_ ? (thr - 1 - ph_) / v_ + 1 : 0;
+    n = std::min<u128>(n, k);
+  }
+  return n;
+}
+
+void Pacer::skip(const In& in, std::uint64_t clocks) {
+  ph_ += clocks * v_;
+  down_ = decelerate(in);
+}
+
 void Pacer::edge(const In& in, bool stepped) {
+  // Every decision from the state before the edge (as the hardware's wires).
   const bool it = iterate(in);
+  const std::uint64_t t = target(in);
   // The norm unit: a fresh d kNormLatency clocks after a take or a stepping iteration,
   // from the core's registers then (the core does not iterate meanwhile).
   if (pending_ && stepped) busy_ = kNormLatency;
@@ -106,17 +130,17 @@ void Pacer::edge(const In& in, bool stepped) {
   }
   // The ramp, with the braking distance.
   if (in.advance && in.running) {
-    const std::uint64_t t = target(in), a = in.set.accel;
+    const std::uint64_t a = in.set.accel, vmin = ramp(in.set.vmin);
     std::uint64_t v = v_;
     if (a == 0) {
       v = t;
       s_ = 0;
     } else if (v_ < t) {
       v = t - v_ > a ? v_ + a : t;
-      s_ += dist_of_speed(v_);
+      if (v_ > vmin) s_ += dist_of_speed(v_);
     } else if (v_ > t) {
       v = v_ - t > a ? v_ - a : t;
-      s_ -= std::min(s_, dist_of_speed(v));
+      if (v > vmin) s_ -= std::min(s_, dist_of_speed(v));
     }
     v_ = v;
     if (v_ == 0) s_ = 0;

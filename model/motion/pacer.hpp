@@ -3,7 +3,7 @@
 // and in exact integers (docs/design.md, "Pacer"). It decides on every clock whether the
 // core iterates, so that the path speed follows a commanded speed v that ramps at the
 // acceleration a: up to the piece's cruise speed (times the override, clamped to its
-// limit), down early enough to reach its exit speed at its end (or rest, when no piece
+// limit), down early enough to reach its exit speed at its end (vmin, when no piece
 // follows in the queue), down to rest on a hold.
 //
 // Constant tangential feed. An iteration moves the tool by d = |(jv_x, jv_y) / cap,
@@ -17,9 +17,10 @@
 // d = floor(sqrt(q_x^2 + q_y^2 + q_z^2)).
 //
 // Acceleration. v changes by at most a per clock. The braking distance s, the distance
-// a ramp down at a from v to rest travels, is kept by additions alone: a ramp step up
-// from v adds v, one down to v' takes v' off (a clamp onto a target, less than a, counts
-// as a whole step: it moves s by less than v). The pacer ramps down once s, less the
+// a ramp down at a from v to the minimum speed vmin travels, is kept by additions alone:
+// a ramp step up from v adds v if v is above vmin, one down to v' takes v' off if v' is
+// above vmin (a clamp onto a target, less than a, counts as a whole step: it moves s by
+// less than v). The pacer ramps down once s, less the
 // braking distance of the exit speed (the entry's brake_exit, which the planner
 // computes with brake_distance()), reaches the distance still to go (the entry's length,
 // less d per iteration, less the phase: the way gone toward the next iteration) less
@@ -53,7 +54,7 @@ struct PaceEntry {
   std::uint32_t limit = 0;       // the override never takes the speed above this
   std::uint32_t exit = 0;        // the speed to end at when another piece follows
   std::uint32_t length = 0;      // the piece's path length, the sum of d (x 2^kLenFrac steps)
-  std::uint32_t brake_exit = 0;  // brake_distance(exit, accel) (x 2^kLenFrac steps)
+  std::uint32_t brake_exit = 0;  // brake_distance(exit, vmin, accel) (x 2^kLenFrac steps)
 };
 // The block's settings the pacer reads.
 struct PaceSettings {
@@ -65,9 +66,9 @@ struct PaceSettings {
 
 // The DDA's path length per iteration from the core's registers, x 2^kNormFrac steps.
 std::uint64_t iteration_distance(const Command& c, const RegState& r);
-// The distance a ramp down from speed v (x 2^kSpeedFrac) to rest at accel travels, as
+// The distance a ramp down from speed v to vmin (x 2^kSpeedFrac) at accel travels, as
 // the pacer counts it, x 2^kLenFrac steps, rounded up; 0 for accel 0.
-std::uint32_t brake_distance(std::uint32_t v, std::uint64_t accel);
+std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel);
 // A piece's length as the pacer counts it: the sum of iteration_distance over its
 // iterations, x 2^kLenFrac steps, rounded up. Throws GuardError for a piece that does
 // not end or is longer than the field holds.
@@ -90,6 +91,12 @@ class Pacer {
   };
   // Whether the core iterates on this edge (a wire: from the state before the edge).
   bool iterate(const In& in) const;
+  // Clocks from now on which, the inputs held, the edge only adds v to the phase: the
+  // core does not iterate, the speed sits at its target, the norm unit is idle and the
+  // decision to ramp down does not change (0 when this clock is not one). skip() runs
+  // that many such edges at once, exactly as edge() would one by one.
+  std::uint64_t idle_clocks(const In& in) const;
+  void skip(const In& in, std::uint64_t clocks);
   // The edge: stepped says whether the core's last iteration (on the edge before) made
   // a step; it is read on the edge after every iteration.
   void edge(const In& in, bool stepped);

@@ -12,9 +12,12 @@ namespace dda::motion {
 
 std::uint64_t SpeedMonitor::window_for(const MotionLimits& l, double share) {
   if (!(l.clock_hz > 0)) throw GuardError("speed monitor: the clock must be positive");
-  if (!(l.max_accel > 0) || !(share > 0)) return 1;
-  // 2 * kQuantSteps / T^2 <= share * max_accel, T = kSubs * sub / clock.
-  const double t = std::sqrt(2 * kQuantSteps / (share * l.max_accel));
+  if (!(share > 0)) return 1;
+  // 2 * kQuantSteps / T^2 <= share * max_accel and kQuantSteps / T <= share / 2 *
+  // max_speed, T = kSubs * sub / clock.
+  double t = 0;
+  if (l.max_accel > 0) t = std::sqrt(2 * kQuantSteps / (share * l.max_accel));
+  if (l.max_speed > 0) t = std::max(t, kQuantSteps / (share / 2 * l.max_speed));
   return std::max<std::uint64_t>(1, std::uint64_t(std::ceil(t * l.clock_hz / kSubs)));
 }
 
@@ -32,6 +35,16 @@ void SpeedMonitor::edge(const std::array<bool, 3>& step, const std::array<bool, 
     step_[a] = step[a];
   }
   if (++cycle_ % sub_ == 0) sample();
+}
+
+void SpeedMonitor::idle(std::uint64_t clocks) {
+  step_ = {};
+  while (clocks > 0) {
+    const std::uint64_t k = std::min(clocks, sub_ - cycle_ % sub_);
+    cycle_ += k;
+    clocks -= k;
+    if (cycle_ % sub_ == 0) sample();
+  }
 }
 
 void SpeedMonitor::sample() {

@@ -13,8 +13,8 @@
 // Counting whole steps puts each sampled position within one step of the motion per
 // axis, so a window's length is off by at most kQuantSteps steps (its two ends: inner
 // samples move their two segments the opposite way) and the acceleration by at most
-// 2 * kQuantSteps / T^2: window_for() picks the shortest window that keeps that within a
-// share of the acceleration limit. Windows slide by one sample. The machine is at rest
+// 2 * kQuantSteps / T^2: window_for() picks the shortest window that keeps both within a
+// share of their limits. Windows slide by one sample. The machine is at rest
 // when the monitor starts (a run that leaves rest at speed fails). The polyline follows a
 // curve whose radius is large against a window's length; on a curve as short as the
 // window the chord shortens the path and the figures are not meaningful.
@@ -41,7 +41,8 @@ class SpeedMonitor {
   static constexpr int kSubs = 4;             // samples per window
   static constexpr double kQuantSteps = 2.0;  // a window length's error from whole steps, at most
   // The sampling period (clocks) whose window keeps the quantization's share of the
-  // acceleration at most `share` of max_accel (at least 1 clock).
+  // acceleration at most `share` of max_accel and of the speed at most half that of
+  // max_speed (at least 1 clock): the slower the limits, the longer the window.
   static std::uint64_t window_for(const MotionLimits& l, double share = 0.02);
 
   // sub_clocks: the sampling period; 0 takes window_for(limits).
@@ -52,6 +53,8 @@ class SpeedMonitor {
   // the dir pin shows on that edge. Throws GuardError at the first window over a limit,
   // naming the figure, the time and the limit.
   void edge(const std::array<bool, 3>& step, const std::array<bool, 3>& dir);
+  // `clocks` edges with every step output low.
+  void idle(std::uint64_t clocks);
 
   struct Sample {
     double t = 0;  // seconds, the window's end

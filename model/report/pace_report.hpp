@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: Apache-2.0
+// A plan run through the pacer's reference model (motion/pacer.hpp) on the golden
+// datapath, clock by clock, as the driver plans it: every piece at the feed, exit speeds
+// from a backward pass over the arc's pieces (rest at the end), the lengths and braking
+// distances the pacer needs. What it measures: the path speed at every iteration (the
+// pace times the DDA's exact velocity) against the feed, the commanded speed's change
+// between iterations, the speed and acceleration the speed monitor reads from the step
+// pins, the time against the ideal trapezoid, the speed of the last step. `dda feed
+// --feed-rate F --accel A --clock HZ` prints it (docs/results.md, "Motion a machine can
+// follow").
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "motion/pacer.hpp"
+#include "motion/speed_monitor.hpp"
+#include "planner/plan.hpp"
+
+namespace dda {
+
+struct PaceOptions {
+  double feed = 0;   // steps/s along the path
+  double accel = 0;  // steps/s^2 along the path
+  double vmin = 0;   // steps/s: the minimum speed
+  double clock_hz = 0;
+};
+// The pacer's fields for a speed, an acceleration (rounded to their units; InputError
+// for one out of range) and back.
+std::uint32_t speed_field(double steps_per_s, double clock_hz);
+std::uint64_t accel_field(double steps_per_s2, double clock_hz);
+double ramp_steps_per_s(std::uint64_t ramp_speed, double clock_hz);
+
+// One iteration of the run.
+struct PaceRow {
+  std::uint64_t iteration = 0, clock = 0;
+  double commanded = 0;   // steps/s: the pacer's speed
+  double path_speed = 0;  // steps/s: the pace times the DDA's exact velocity over the pacer's d
+  double path = 0;        // steps gone along the path (the DDA's exact velocity summed)
+  Point at;               // the position after the iteration
+};
+
+struct PaceResult {
+  std::uint64_t clocks = 0, iterations = 0, cruise_iterations = 0;
+  double path = 0;                // steps
+  double worst_cruise_error = 0;  // |path speed - feed| / feed over the cruise iterations
+  double worst_speed_change = 0;  // steps/s^2: the commanded speed's change between iterations
+  double last_speed = 0;          // steps/s: the commanded speed of the last iteration
+  double seconds() const { return double(clocks) / clock_hz; }
+  double ideal_seconds = 0;  // trapezoid_seconds over the path
+  double clock_hz = 0;
+  Point end;
+  motion::SpeedMonitor monitor;
+};
+
+struct PaceHooks {
+  // Before every clock: may change the settings (a hold, an override). With it the run
+  // goes clock by clock; without it, it skips the clocks on which only the phase moves.
+  std::function<void(std::uint64_t clock, motion::PaceSettings&)> each;
+  // After every clock (or skipped stretch): the pacer and the path gone so far.
+  std::function<void(std::uint64_t clock, const motion::Pacer&, double path)> watch;
+  // Every iteration.
+  std::function<void(const PaceRow&)> row;
+  bool clock_by_clock = false;  // never skip (the skipping is checked against this)
+};
+
+// The run; the speed monitor checks the feed and the acceleration as limits (GuardError).
+PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& hooks = {});
+
+// The ideal trapezoid's time over a length: from rest up to the feed at accel, down to
+// the minimum speed at the end (a triangle when the length is too short for the feed).
+double trapezoid_seconds(double length, double feed, double accel, double vmin);
+
+// `dda feed --feed-rate ...`: one CSV row per iteration, or the run's summary (markdown,
+// one row when summary, labelled).
+void write_pace_csv(std::ostream& os, const Plan& plan, const PaceOptions& o);
+void write_pace_report(std::ostream& os, const Plan& plan, const PaceOptions& o, bool summary,
+                       const std::string& label);
+
+}  // namespace dda
