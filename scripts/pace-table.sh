@@ -35,8 +35,8 @@ run_one() {
 export -f run_one
 export DDA=$dda
 table=$(
-  echo "| arc | feed (steps/s) | acceleration (steps/s^2) | clock (Hz) | path (steps) | time (s) | ideal trapezoid (s) | time over ideal | worst feed error at cruise | commanded speed's change (of A) | pin monitor: acceleration (of A) | pin monitor: speed (of F) | last step (steps/s) |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| arc | feed (steps/s) | acceleration (steps/s^2) | clock (Hz) | path (steps) | time (s) | ideal trapezoid (s) | time over ideal | worst feed error at cruise | commanded speed's change (of A) | pin monitor: acceleration (of A) | pin monitor: speed (of F) | last step (steps/s) | peak iteration rate (per s) |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${jobs[@]}" | parallel --keep-order -j "$(nproc)" run_one {}
 )
 if [ "${1:-}" = "--write" ]; then

@@ -117,6 +117,10 @@ struct Run {
     const double path_speed = pacer.distance() ? v / (double(pacer.distance()) / std::ldexp(1.0, kNormFrac)) * d : 0;
     res.path += d;
     res.last_speed = v;
+    if (pacer.distance() > 0) {
+      res.peak_iteration_rate =
+          std::max(res.peak_iteration_rate, v / (double(pacer.distance()) / std::ldexp(1.0, kNormFrac)));
+    }
     if (res.iterations > 0 && clock > last_clock) {
       const double dv = std::fabs(double(pacer.speed()) - double(last_v));
       const double rate = ramp_steps_per_s(std::uint64_t(dv), o.clock_hz) * o.clock_hz / double(clock - last_clock);
@@ -194,7 +198,7 @@ PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& ho
   Run r{plan,
         o,
         hooks,
-        PaceResult{0, 0, 0, 0, 0, 0, 0, 0, o.clock_hz, plan.from,
+        PaceResult{0, 0, 0, 0, 0, 0, 0, 0, 0, o.clock_hz, plan.from,
                    motion::SpeedMonitor(motion::MotionLimits{o.clock_hz, o.feed, o.accel})},
         {},
         {},
@@ -240,16 +244,16 @@ void write_pace_report(std::ostream& os, const Plan& plan, const PaceOptions& o,
   if (!summary) {
     os << "| arc | feed (steps/s) | acceleration (steps/s^2) | clock (Hz) | path (steps) | time (s) | ideal trapezoid "
           "(s) | time over ideal | worst feed error at cruise | commanded speed's change (of A) | pin monitor: "
-          "acceleration (of A) | pin monitor: speed (of F) | last step (steps/s) |\n";
-    os << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "acceleration (of A) | pin monitor: speed (of F) | last step (steps/s) | peak iteration rate (per s) |\n";
+    os << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   }
   os << fmt::format(
       "| {} | {:.0f} | {:.3g} | {:.3g} | {:.1f} | {:.6f} | {:.6f} | {:+.2f}% | {:.2e} | {:.4f} | {:.3f} | "
-      "{:.4f} | {:.1f} |\n",
+      "{:.4f} | {:.1f} | {:.3g} |\n",
       label, o.feed, o.accel, o.clock_hz, r.path, r.seconds(), r.ideal_seconds,
       100 * (r.seconds() / r.ideal_seconds - 1), r.worst_cruise_error,
       o.accel > 0 ? r.worst_speed_change / o.accel : 0.0, o.accel > 0 ? r.monitor.peak_accel() / o.accel : 0.0,
-      r.monitor.peak_speed() / o.feed, r.last_speed);
+      r.monitor.peak_speed() / o.feed, r.last_speed, r.peak_iteration_rate);
 }
 
 }  // namespace dda

@@ -44,10 +44,11 @@ struct PaceRow {
 
 struct PaceResult {
   std::uint64_t clocks = 0, iterations = 0, cruise_iterations = 0;
-  double path = 0;                // steps
-  double worst_cruise_error = 0;  // |path speed - feed| / feed over the cruise iterations
-  double worst_speed_change = 0;  // steps/s^2: the commanded speed's change between iterations
-  double last_speed = 0;          // steps/s: the commanded speed of the last iteration
+  double path = 0;                 // steps
+  double worst_cruise_error = 0;   // |path speed - feed| / feed over the cruise iterations
+  double worst_speed_change = 0;   // steps/s^2: the commanded speed's change between iterations
+  double last_speed = 0;           // steps/s: the commanded speed of the last iteration
+  double peak_iteration_rate = 0;  // iterations/s the pace asks for: the commanded speed over d, at most
   double seconds() const { return double(clocks) / clock_hz; }
   double ideal_seconds = 0;  // trapezoid_seconds over the path
   double clock_hz = 0;
