@@ -39,13 +39,18 @@ module dda_norm #(
   localparam integer Last   = 3 * QW + 1;  // the last root step: 64 at NF 20
 
   reg [6:0]    cyc_q /* verilator public_flat_rd */;  // 0: idle, else the step of this edge
-  reg [AW:0]   r_x_q, r_y_q, r_z_q;   // dividing: the remainder; squaring: the shifted square
-  reg [AW-1:0] c_x_q, c_z_q;          // the divisors (x's serves y)
-  reg [QW-1:0] q_x_q, q_y_q, q_z_q;   // dividing: the quotient; squaring: its bits, shifted out
-  reg [SW-1:0] a_x_q, a_y_q, a_z_q;   // the squares
-  reg [SW+1:0] s_q;                   // their sum (< 2^SW), shifted out two bits per root step
-  reg [QW:0]   rem_q;                 // the root's remainder, at most twice the root
-  reg [QW-1:0] root_q;                // the root's bits so far
+  // dividing: the remainder; squaring: the multiplicand, shifted up
+  reg [AW:0]   r_x_q /* verilator public_flat_rd */, r_y_q /* verilator public_flat_rd */,
+               r_z_q /* verilator public_flat_rd */;
+  reg [AW-1:0] c_x_q /* verilator public_flat_rd */, c_z_q /* verilator public_flat_rd */;  // the divisors (x's serves y)
+  // dividing: the quotient; squaring: its bits, shifted out
+  reg [QW-1:0] q_x_q /* verilator public_flat_rd */, q_y_q /* verilator public_flat_rd */,
+               q_z_q /* verilator public_flat_rd */;
+  reg [SW-1:0] a_x_q /* verilator public_flat_rd */, a_y_q /* verilator public_flat_rd */,
+               a_z_q /* verilator public_flat_rd */;  // the squares
+  reg [SW+1:0] s_q /* verilator public_flat_rd */;     // their sum (< 2^SW), shifted out two bits per root step
+  reg [QW:0]   rem_q /* verilator public_flat_rd */;   // the root's remainder, at most twice the root
+  reg [QW-1:0] root_q /* verilator public_flat_rd */;  // the root's bits so far
   reg [NF+1:0] d_q /* verilator public_flat_rd */;
 
   wire first = cyc_q == 7'd1;
