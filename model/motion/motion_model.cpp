@@ -302,7 +302,9 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
   for (int k = 0; k < 4; ++k)
     if ((b.sel >> k) & 1u) lanes |= 0xFFu << (8 * k);
   w.wsel = b.dat & lanes;
-  w.wdat = (read(w.adr) & ~lanes) | w.wsel;
+  // The addressed register (read data; a write keeps it in the other lanes): on requests.
+  if (w.req) w.rd = read(w.adr);
+  w.wdat = (w.rd & ~lanes) | w.wsel;
   const bool wr_ctrl = w.wr && w.adr == reg_offset("CTRL");
   w.commit = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
   w.abort = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
@@ -356,7 +358,6 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.take = w.cmd_valid && core_.cmd_ready(w.core_ce) && !w.abort;
   w.fetch_d = w.empty || w.take || w.abort || get("fetch_q") == 0 ? 1 : 2;
   w.level_d = w.level + w.commit_ok - w.take;
-  w.rd = read(w.adr);
   w.head = get("head_q");
   w.tail = get("tail_q");
   w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);

@@ -198,7 +198,7 @@ dda_motion::Decode dda_motion::decode() const {
   d.dat = wb_dat_i.read();
   const std::uint32_t lanes = lane_mask(wb_sel_i.read());
   d.wsel = d.dat & lanes;
-  d.wdat = (read(d.adr) & ~lanes) | d.wsel;
+  if (d.wr) d.wdat = (read(d.adr) & ~lanes) | d.wsel;  // (it reads the whole map: only for a write)
   const bool wr_ctrl = d.wr && d.adr == kCtrl;
   const bool commit = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
   d.abort = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
