@@ -13,20 +13,20 @@
 // whatever d does along an ellipse. d comes from the norm unit, which recomputes it
 // after every iteration that stepped (only a step changes an integrand or ends an
 // axis): kNormLatency clocks during which the phase keeps adding but the core waits.
-// d is exact to kNormFrac bits: q = floor(v_i * 2^kNormFrac / cap_i) per axis,
+// d is exact to kNormFrac bits: q = floor(jv_i * 2^kNormFrac / cap_i) per axis,
 // d = floor(sqrt(q_x^2 + q_y^2 + q_z^2)).
 //
 // Acceleration. v changes by at most a per clock. The braking distance s, the distance
 // a ramp down at a from v to the minimum speed vmin travels, is kept by additions alone:
 // a ramp step up from v adds v if v is above vmin, one down to v' takes v' off if v' is
 // above vmin (a clamp onto a target, less than a, counts as a whole step: it moves s by
-// less than v). The pacer ramps down once s, less the
-// braking distance of the exit speed (the entry's brake_exit, which the planner
-// computes with brake_distance()), reaches the distance still to go (the entry's length,
-// less d per iteration, less the phase: the way gone toward the next iteration) less
-// 2^-kMarginShift step: the piece then ends at its exit speed, the
-// last one at the minimum speed vmin (never below while a piece runs and no hold is on:
-// a drive can start and stop at vmin, and the last step then comes in bounded time).
+// less than v). The pacer ramps down once s, less the braking distance of the exit speed
+// (the entry's brake_exit, which the planner computes with brake_distance()), reaches
+// the distance still to go (the entry's length, less d per iteration, less the phase:
+// the way gone toward the next iteration) less 2^-kMarginShift step: the piece then
+// ends at its exit speed, the last one at vmin (never below while a piece runs and no
+// hold is on: a drive can start and stop at vmin, and the last step comes in bounded
+// time).
 #pragma once
 
 #include <cstdint>
