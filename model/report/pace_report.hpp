@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // A plan run through the pacer's reference model (motion/pacer.hpp) on the golden
 // datapath, clock by clock, as the driver plans it: every piece at the feed, exit speeds
-// from a backward pass over the arc's pieces (rest at the end), the lengths and braking
+// from a backward pass over the arc's pieces (the minimum speed at the end), the lengths and braking
 // distances the pacer needs. What it measures: the path speed at every iteration (the
 // pace times the DDA's exact velocity) against the feed, the commanded speed's change
 // between iterations, the speed and acceleration the speed monitor reads from the step
