@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // A plan run through the pacer's reference model (motion/pacer.hpp) on the golden
 // datapath, clock by clock, as the driver plans it: every piece at the feed, exit speeds
-// from a backward pass over the arc's pieces (the minimum speed at the end), the lengths and braking
-// distances the pacer needs. What it measures: the path speed at every iteration (the
-// pace times the DDA's exact velocity) against the feed, the commanded speed's change
-// between iterations, the speed and acceleration the speed monitor reads from the step
-// pins, the time against the ideal trapezoid, the speed of the last step. `dda feed
-// --feed-rate F --accel A --clock HZ` prints it (docs/results.md, "Motion a machine can
-// follow").
+// from a backward pass over the arc's pieces (the minimum speed at the end), the
+// lengths and braking distances the pacer needs. What it measures: the path speed at
+// every iteration (the pace times the DDA's exact velocity) against the feed, the
+// commanded speed's change between iterations, the speed and acceleration the speed
+// monitor reads from the step pins, the time against the ideal trapezoid, the speed of
+// the last step. `dda feed --feed-rate F --accel A --clock HZ` prints it
+// (docs/results.md, "Motion a machine can follow").
 #pragma once
 
 #include <cstdint>
