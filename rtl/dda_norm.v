@@ -15,6 +15,9 @@
 // A start while busy starts again.
 `include "dda_params.vh"
 
+// Not yet instantiated in the block: a top of its own beside dda_motion when rtl/*.v is
+// linted together.
+/* verilator lint_off MULTITOP */
 module dda_norm #(
   parameter integer AW = `DDA_ACC_WIDTH,  // the integrands' and capacities' width
   parameter integer NF = 20   // fraction bits of q and d
@@ -135,3 +138,4 @@ module dda_norm #(
   assign d_o    = d_q;
 
 endmodule
+/* verilator lint_on MULTITOP */

@@ -11,6 +11,13 @@
 
 namespace dda::feed {
 
+double dda_speed(const Command& c, const RegState& r) {
+  const double vx = r.cnt_x != 0 && r.jv_x > 0 ? double(r.jv_x) : 0.0;
+  const double vy = r.cnt_y != 0 && r.jv_y > 0 ? double(r.jv_y) : 0.0;
+  const double vz = r.cnt_z != 0 ? double(c.jv_z) / double(c.cap_z) : 0.0;
+  return std::hypot(std::hypot(vx, vy) / double(c.cap), vz);
+}
+
 PieceMotion piece_motion(const Command& c) {
   Datapath d(c, Point{});
   PieceMotion m;
@@ -19,11 +26,7 @@ PieceMotion piece_motion(const Command& c) {
   const std::uint64_t bound = std::uint64_t{1} << 40;  // far beyond any planned piece
   while (!d.done()) {
     if (d.stalled() || d.iterations() > bound) throw GuardError("feed: a piece that does not end");
-    const RegState& r = d.regs();
-    const double vx = r.cnt_x != 0 && r.jv_x > 0 ? double(r.jv_x) : 0.0;
-    const double vy = r.cnt_y != 0 && r.jv_y > 0 ? double(r.jv_y) : 0.0;
-    const double vz = r.cnt_z != 0 ? double(c.jv_z) / double(c.cap_z) : 0.0;
-    const double v = std::hypot(std::hypot(vx, vy) / double(c.cap), vz);
+    const double v = dda_speed(c, d.regs());
     m.speed_min = std::min(m.speed_min, v);
     m.speed_max = std::max(m.speed_max, v);
     sum += v;

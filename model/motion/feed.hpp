@@ -15,6 +15,12 @@
 
 namespace dda::feed {
 
+// The DDA's smooth speed along the path before an iteration, steps per iteration, from
+// its registers: |(jv_x, jv_y) / cap, jv_z / cap_z| (an axis whose counter is done or
+// whose integrand is not positive adds 0). The pacer's norm unit computes the same in
+// fixed point (motion::iteration_distance).
+double dda_speed(const Command& c, const RegState& r);
+
 // What one piece does, from the golden datapath.
 struct PieceMotion {
   std::uint64_t iterations = 0;

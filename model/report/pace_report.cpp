@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "datapath/errors.hpp"
+#include "motion/feed.hpp"
 
 namespace dda {
 
@@ -49,18 +50,11 @@ double trapezoid_seconds(double length, double feed, double accel, double vmin) 
 
 namespace {
 
-// The DDA's exact path length per iteration (steps), from its registers.
-double exact_distance(const Command& c, const RegState& r) {
-  const double vx = r.cnt_x != 0 && r.jv_x > 0 ? double(r.jv_x) : 0.0;
-  const double vy = r.cnt_y != 0 && r.jv_y > 0 ? double(r.jv_y) : 0.0;
-  const double vz = r.cnt_z != 0 ? double(c.jv_z) / double(c.cap_z) : 0.0;
-  return std::hypot(std::hypot(vx, vy) / double(c.cap), vz);
-}
-
 // The entries the driver writes: the feed as cruise speed and limit, lengths for the
-// pacer, and exit speeds from a backward pass over the arc's pieces (the last one's
-// rest; before it, the fastest speed from which the pieces after it can still brake to
-// their exits: sqrt(exit'^2 + 2 A L'), at most the feed) with their braking distances.
+// pacer, and exit speeds from a backward pass over the arc's pieces (the last one's 0:
+// it ends at the minimum speed; before it, the fastest speed from which the pieces after
+// it can still brake to their exits: sqrt(exit'^2 + 2 A L'), at most the feed) with
+// their braking distances.
 std::vector<PaceEntry> entries_of(const Plan& plan, const PaceOptions& o, std::uint32_t cruise, std::uint32_t vmin,
                                   std::uint64_t accel) {
   std::vector<PaceEntry> entries(plan.pieces.size());
@@ -112,7 +106,7 @@ struct Run {
 
   // The measurements of an iteration on this clock, before its edge.
   void measure(const Pacer::In& in, std::uint64_t clock) {
-    const double d = exact_distance(*in.cmd, in.regs);
+    const double d = feed::dda_speed(*in.cmd, in.regs);
     const double v = ramp_steps_per_s(pacer.speed(), o.clock_hz);
     const double path_speed = pacer.distance() ? v / (double(pacer.distance()) / std::ldexp(1.0, kNormFrac)) * d : 0;
     res.path += d;
