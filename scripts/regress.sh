@@ -11,7 +11,10 @@
 #   motion   the motion block: SystemC model and RTL co-simulated on the bus, random
 #            arcs queued with aborts, resets, partial commits and overflows
 #            (default 1,000 arcs; one process, no shards)
-# usage: scripts/regress.sh [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|all] [cases] [seed] [shards]
+#   long     the ctest entries labelled long, which scripts/test.sh leaves out: the fast
+#            implementation's proofs, mutants and lathe vector set, the default-width
+#            equivalence proof, the lathe bus set at 80% ce_i (about 14 min of test time)
+# usage: scripts/regress.sh [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|long|all] [cases] [seed] [shards]
 # With shards > 1 the cases are cut into that many shards (--shard I/N), run with GNU
 # parallel (one job per core; add e.g. --sshlogin to PARALLEL_OPTS to spread them over
 # hosts that have the same build), and their JSON totals merged: every case draws from
@@ -47,6 +50,7 @@ case "$which" in
   motion)
     [ "$shards" -le 1 ] || { echo "regress: motion runs in one process (no shards)" >&2; exit 2; }
     "$build/bin/motion_regress" --arcs "${2:-1000}" --seed "$seed" ;;
+  long) cd "$build" && ctest --output-on-failure -j "$(nproc)" -L '^long$' ;;
   all) run sc_regress "${2:-2000}"; run rtl_regress "${2:-100000}"; run cosim_regress "${2:-2000}" ;;
-  *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|all] [cases] [seed] [shards]" >&2; exit 2 ;;
+  *) echo "usage: $0 [systemc|rtl|cosim|rtl-fast|cosim-fast|motion|long|all] [cases] [seed] [shards]" >&2; exit 2 ;;
 esac
