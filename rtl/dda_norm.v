@@ -15,8 +15,8 @@
 // A start while busy starts again.
 `include "dda_params.vh"
 
-// Not yet instantiated in the block: a top of its own beside dda_motion when rtl/*.v is
-// linted together.
+// Instantiated by the pacer (rtl/dda_pace.v), which is not yet in the block: a top of its
+// own beside dda_motion when rtl/*.v is linted together.
 /* verilator lint_off MULTITOP */
 module dda_norm #(
   parameter integer AW = `DDA_ACC_WIDTH,  // the integrands' and capacities' width

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Verilator lint of the RTL (the core, the motion block around it, the norm unit) with every
+# Verilator lint of the RTL (the core, the motion block around it, the pacer and its norm unit) with every
 # warning on; fails on any %Warning or %Error.
 #   usage: scripts/rtl-lint.sh        (ctest: rtl.lint)
 # Waivers, each with its reason, live in rtl/lint.vlt.
@@ -14,8 +14,8 @@ rc=$?
 # The motion block (the core on a Wishbone bus) on top of it.
 out2=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/dda_motion.f --top-module dda_motion 2>&1)
 rc2=$?
-# The pacer's norm unit (not yet in the block).
-out3=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt rtl/dda_norm.v --top-module dda_norm 2>&1)
+# The pacer with its norm unit (not yet in the block).
+out3=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt rtl/dda_pace.v rtl/dda_norm.v --top-module dda_pace 2>&1)
 rc3=$?
 out=$out$out2$out3
 [ $rc2 -eq 0 ] || rc=$rc2

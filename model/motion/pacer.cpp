@@ -77,7 +77,8 @@ std::uint64_t Pacer::target(const In& in) const {
   std::uint64_t t = std::min(ramp(e_.cruise) / kOverrideOne * in.set.override_ +
                                  ramp(e_.cruise) % kOverrideOne * in.set.override_ / kOverrideOne,
                              ramp(e_.limit));
-  if (decelerate(in)) t = std::min(t, in.next_queued ? ramp(e_.exit) : 0);
+  // (Without a ramp the speed jumps: no piece slows down before its end.)
+  if (in.set.accel != 0 && decelerate(in)) t = std::min(t, in.next_queued ? ramp(e_.exit) : 0);
   return std::max(t, ramp(in.set.vmin));
 }
 
@@ -126,7 +127,7 @@ void Pacer::edge(const In& in, bool stepped) {
   if (!in.running) {
     ph_ = 0;
   } else if (in.advance) {
-    ph_ = ph_ + v_ - (it ? D : 0);
+    ph_ = std::min(ph_ + v_ - (it ? D : 0), (std::uint64_t{1} << kPhaseBits) - 1);
   }
   // The ramp, with the braking distance.
   if (in.advance && in.running) {

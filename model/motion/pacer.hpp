@@ -47,6 +47,11 @@ inline constexpr int kNormFrac = 20;
 inline constexpr std::uint32_t kOverrideOne = 256;  // 100%; OVERRIDE runs 0 .. 2 * kOverrideOne (200%)
 inline constexpr int kNormLatency = 64;             // clocks from a step to the fresh d
 inline constexpr int kMarginShift = 3;              // ramp down 2^-kMarginShift step before the end
+// The phase saturates below 2^kPhaseBits (256 steps of path): a speed above the core's
+// one iteration per clock (d < v) leaves a backlog the phase cannot grow without bound.
+inline constexpr int kPhaseBits = kRampFrac + 8;
+// The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
+inline constexpr int kAccelWidth = 32;
 
 // The pacing fields of a queue entry.
 struct PaceEntry {
@@ -102,6 +107,10 @@ class Pacer {
   void edge(const In& in, bool stepped);
 
   std::uint64_t speed() const { return v_; }  // x 2^kRampFrac steps/clock
+  std::uint64_t phase() const { return ph_; }
+  int norm_busy() const { return busy_; }  // clocks until d is fresh after a take or a step
+  bool pending() const { return pending_; }
+  const PaceEntry& entry() const { return e_; }
   std::uint64_t distance() const { return d_; }
   bool distance_valid() const { return busy_ == 0 && !pending_; }
   bool ramping_down() const { return down_; }

@@ -148,7 +148,7 @@ struct Run {
   bool clock(std::uint64_t& clock) {
     const Pacer::In in = inputs(clock);
     if (!in.running && !in.take) return false;
-    if (!hooks.each && !hooks.clock_by_clock) {
+    if (!hooks.each && !hooks.clock_by_clock && !hooks.edge) {
       if (const std::uint64_t n = pacer.idle_clocks(in)) {
         pacer.skip(in, n);
         res.monitor.idle(n);
@@ -160,6 +160,7 @@ struct Run {
     const bool it = pacer.iterate(in);
     if (it) measure(in, clock);
     const bool was_stepped = stepped;
+    if (hooks.edge) hooks.edge(pacer, in, was_stepped);
     pacer.edge(in, was_stepped);
     stepped = false;
     std::array<bool, 3> step{}, dir{};

@@ -62,6 +62,9 @@ struct PaceHooks {
   std::function<void(std::uint64_t clock, motion::PaceSettings&)> each;
   // After every clock (or skipped stretch): the pacer and the path gone so far.
   std::function<void(std::uint64_t clock, const motion::Pacer&, double path)> watch;
+  // Just before every clock's edge (clock by clock only): the pacer's inputs and
+  // whether the last iteration stepped, what an RTL pacer run beside it is given.
+  std::function<void(const motion::Pacer&, const motion::Pacer::In&, bool stepped)> edge;
   // Every iteration.
   std::function<void(const PaceRow&)> row;
   bool clock_by_clock = false;  // never skip (the skipping is checked against this)

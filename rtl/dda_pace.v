@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pacer (docs/design.md, "Pacer"; reference: motion::Pacer in
+// model/motion/pacer.hpp, the one definition of its behaviour, which this module
+// mirrors register for register): decides on every clock whether the core iterates, so
+// that the path speed follows a commanded speed v ramping at the acceleration a, with
+// the norm unit (rtl/dda_norm.v) giving the DDA's path length per iteration d.
+//
+// Every clock a piece runs and the block lets the core go on (advance_i), the phase
+// adds v; the core iterates when the phase reaches d (in d's units: D = d << (RF - NF)),
+// taking D off. The phase saturates below 2^PW. d is fresh Latency clocks after a take
+// or a stepping iteration: the norm unit starts on every take and every iteration
+// (operands: the core's registers on the edge after, which a non-stepping iteration
+// leaves as they were), and while it runs after a take or a step (busy_q) the core
+// waits. v ramps by at most a per clock towards its target: the entry's cruise speed
+// times the override, clamped to its limit; the exit speed (0 with no next piece) once
+// the braking distance s, less the exit speed's, reaches the distance still to go less
+// 2^-MarginShift step; never below vmin; 0 on a hold. s adds v on a ramp step
+// up from above vmin and takes the new v off on one down to above vmin.
+`include "dda_params.vh"
+
+// Not yet instantiated in the block: a top of its own beside dda_motion when rtl/*.v is
+// linted together.
+/* verilator lint_off MULTITOP */
+module dda_pace #(
+  parameter integer AW = `DDA_ACC_WIDTH,  // the integrands' and capacities' width
+  parameter integer NF = 20,    // kNormFrac: fraction bits of d
+  parameter integer SF = 32,    // kSpeedFrac: entry speeds
+  parameter integer RF = 48,    // kRampFrac: v, the phase, a
+  parameter integer DF = 32,    // kDistFrac: s and the distance to go
+  parameter integer LF = 8,     // kLenFrac: entry lengths
+  parameter integer PW = 56,    // kPhaseBits
+  parameter integer OW = 10,    // the override: 0 .. 2 x (1 << OF)
+  parameter integer OF = 8,     // kOverrideOne = 1 << OF
+  parameter integer MarginShift = 3,
+  parameter integer Latency = 64  // kNormLatency: the norm unit's
+) (
+  input  wire          clk_i,
+  input  wire          rst_ni,         // synchronous, active low
+  input  wire          advance_i,      // the block lets the core go on this clock
+  input  wire          running_i,      // the core runs a piece
+  input  wire          take_i,         // the core loads an entry on this edge ...
+  input  wire [31:0]   cruise_i,       // ... with these pacing fields
+  input  wire [31:0]   limit_i,
+  input  wire [31:0]   exit_i,
+  input  wire [31:0]   length_i,
+  input  wire [31:0]   brake_exit_i,
+  input  wire          next_queued_i,  // another entry waits in the queue
+  input  wire [31:0]   accel_i,        // x 2^RF steps/clock^2; 0: the speed jumps
+  input  wire [31:0]   vmin_i,         // x 2^SF steps/clock
+  input  wire [OW-1:0] override_i,
+  input  wire          hold_i,
+  input  wire          stepped_i,      // the core's last iteration made a step
+  input  wire [AW-1:0] v_x_i,          // the norm unit's operands (0: inactive axis)
+  input  wire [AW-1:0] v_y_i,
+  input  wire [AW-1:0] v_z_i,
+  input  wire [AW-1:0] cap_i,
+  input  wire [AW-1:0] cap_z_i,
+  output wire          iterate_o,      // the core iterates on this edge
+  output wire [RF-1:0] speed_o         // v
+);
+
+  localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
+
+  reg  [RF-1:0] v_q      /* verilator public_flat_rd */;
+  reg  [PW-1:0] ph_q     /* verilator public_flat_rd */;
+  reg  [SW-1:0] s_q      /* verilator public_flat_rd */;
+  reg  [SW-1:0] rem_q    /* verilator public_flat_rd */;
+  reg  [31:0]   cruise_q /* verilator public_flat_rd */;
+  reg  [31:0]   limit_q  /* verilator public_flat_rd */;
+  reg  [31:0]   exit_q   /* verilator public_flat_rd */;
+  reg  [31:0]   brake_q  /* verilator public_flat_rd */;  // the entry's brake_exit
+  reg  [6:0]    busy_q   /* verilator public_flat_rd */;  // clocks until d is fresh
+  reg           pend_q   /* verilator public_flat_rd */;  // an iteration on the last edge
+  wire [NF+1:0] d;
+  wire          norm_busy;  // (the pacer counts the norm unit's clocks itself: busy_q)
+
+  dda_norm #(.AW(AW), .NF(NF)) u_norm (
+    .clk_i(clk_i), .rst_ni(rst_ni), .start_i(take_i | iterate_o),
+    .v_x_i(v_x_i), .v_y_i(v_y_i), .v_z_i(v_z_i), .cap_i(cap_i), .cap_z_i(cap_z_i),
+    .busy_o(norm_busy), .d_o(d)
+  );
+
+  // Distances at DF fraction bits.
+  wire [PW-1:0] dd     = PW'(d) << (RF - NF);                       // D, at the phase's scale
+  wire [SW-1:0] d_dist = SW'(d) << (DF - NF);
+  wire [SW-1:0] ph_dist = SW'(ph_q[PW-1:RF-DF]);
+  wire [SW-1:0] v_dist = SW'(v_q[RF-1:RF-DF]);
+  wire [SW-1:0] margin = SW'(1) << (DF - MarginShift);
+  wire [SW-1:0] eb     = next_queued_i ? SW'(brake_q) << (DF - LF) : '0;
+  wire          decel  = {1'b0, s_q} + {1'b0, ph_dist} + {1'b0, margin} >= {1'b0, rem_q} + {1'b0, eb};
+
+  // The target: cruise x override, clamped to the limit; the exit speed on the way down.
+  wire [RF:0]   cruise_ovr = (RF+1)'(cruise_q) << (RF - SF - OF);
+  wire [RF+OW:0] prod  = {{OW{1'b0}}, cruise_ovr} * (RF+OW+1)'(override_i);
+  wire [RF+OW:0] lim   = (RF+OW+1)'(limit_q) << (RF - SF);
+  wire [RF+OW:0] t_cr  = prod < lim ? prod : lim;
+  wire [RF+OW:0] t_ex  = next_queued_i ? (RF+OW+1)'(exit_q) << (RF - SF) : '0;
+  wire [RF+OW:0] t_dn  = decel && accel_i != 32'd0 && t_ex < t_cr ? t_ex : t_cr;  // (no ramp: no slowing down)
+  wire [RF+OW:0] t_min = (RF+OW+1)'(vmin_i) << (RF - SF);
+  wire [RF+OW:0] t_all = hold_i ? '0 : t_dn > t_min ? t_dn : t_min;
+  wire [RF-1:0] target = RF'(t_all);  // (at most the limit or vmin: below 2^RF)
+  wire unused_t = &{1'b0, t_all[RF+OW:RF], cruise_ovr[RF], norm_busy};
+
+  wire d_valid = busy_q == 7'd0 && !pend_q;
+  wire [PW:0] ph_sum = {1'b0, ph_q} + (PW+1)'(v_q);
+  assign iterate_o = advance_i & running_i & d_valid & (ph_sum >= (PW+1)'(dd));
+  assign speed_o   = v_q;
+
+  // The ramp.
+  wire [RF-1:0] a     = RF'(accel_i);
+  wire [RF-1:0] vmin  = RF'(vmin_i) << (RF - SF);
+  wire [RF-1:0] v_up  = target - v_q > a ? v_q + a : target;
+  wire [RF-1:0] v_dn  = v_q - target > a ? v_q - a : target;
+  wire [SW-1:0] vdn_dist = SW'(v_dn[RF-1:RF-DF]);
+  wire [PW:0]   ph_next = ph_sum - (iterate_o ? (PW+1)'(dd) : '0);
+
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v_q      <= '0;
+      ph_q     <= '0;
+      s_q      <= '0;
+      rem_q    <= '0;
+      cruise_q <= '0;
+      limit_q  <= '0;
+      exit_q   <= '0;
+      brake_q  <= '0;
+      busy_q   <= '0;
+      pend_q   <= 1'b0;
+    end else begin
+      // The norm unit: d is fresh Latency clocks after a stepping iteration started it.
+      if (pend_q && stepped_i) busy_q <= 7'(Latency - 1);
+      else if (busy_q != 7'd0) busy_q <= busy_q - 7'd1;
+      pend_q <= iterate_o;
+      if (iterate_o) rem_q <= rem_q > d_dist ? rem_q - d_dist : '0;
+      if (!running_i) ph_q <= '0;
+      else if (advance_i) ph_q <= ph_next[PW] ? {PW{1'b1}} : ph_next[PW-1:0];
+      if (advance_i && running_i) begin
+        if (accel_i == 32'd0) begin
+          v_q <= target;
+          s_q <= '0;
+        end else if (v_q < target) begin
+          v_q <= v_up;
+          if (v_q > vmin) s_q <= s_q + v_dist;
+        end else if (v_q > target) begin
+          v_q <= v_dn;
+          if (v_dn > vmin) s_q <= s_q > vdn_dist ? s_q - vdn_dist : '0;
+          if (v_dn == '0) s_q <= '0;
+        end else if (v_q == '0) begin
+          s_q <= '0;
+        end
+      end
+      if (!running_i && !take_i) begin
+        v_q <= '0;
+        s_q <= '0;
+      end
+      if (take_i) begin
+        cruise_q <= cruise_i;
+        limit_q  <= limit_i;
+        exit_q   <= exit_i;
+        brake_q  <= brake_exit_i;
+        rem_q    <= SW'(length_i) << (DF - LF);
+        busy_q   <= 7'(Latency);
+        pend_q   <= 1'b0;
+      end
+    end
+  end
+
+endmodule
+/* verilator lint_on MULTITOP */

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pacer in RTL (rtl/dda_pace.v, with its norm unit) in lockstep with its reference
+// model (motion::Pacer) while the model paces the golden datapath through planned arcs
+// and lines (report/pace_report.hpp, clock by clock): on every clock the RTL gets the
+// model's inputs and the core's registers, its iterate_o must equal the model's
+// decision, and after every edge each of its registers the model's state: the speed,
+// the phase, the braking distance, the distance to go, the entry's fields, the norm
+// unit's countdown and d. Ramps, cruise, the last piece ending at the minimum speed,
+// holds, overrides (below 100% and clamped above it), a minimum speed of 0 with no
+// acceleration, a speed beyond the core's one iteration per clock (the phase saturates).
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "Vdda_pace.h"
+#include "Vdda_pace___024root.h"
+#include "accuracy/golden.hpp"
+#include "motion/pacer.hpp"
+#include "planner/planner.hpp"
+#include "report/pace_report.hpp"
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+// A 4 MHz clock keeps the runs short while the ramps span thousands of clocks (and the
+// accelerations within the 32-bit ACCEL field). The feeds stay below one stepping
+// iteration per kNormLatency + 1 clocks (61,500 steps/s here), the fastest the norm unit
+// lets the core step, but for the case that goes beyond it.
+constexpr double kClock = 4e6;
+
+std::uint64_t mask(int bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1; }
+
+class Lockstep {
+ public:
+  Lockstep() : top_(std::make_unique<Vdda_pace>()) {
+    top_->rst_ni = 0;
+    clock();
+    top_->rst_ni = 1;
+  }
+  // Gives the RTL the model's inputs, compares the decision, runs the edge.
+  void edge(const Pacer& p, const Pacer::In& in, bool stepped) {
+    Vdda_pace& t = *top_;
+    t.advance_i = in.advance;
+    t.running_i = in.running;
+    t.take_i = in.take;
+    t.cruise_i = in.entry.cruise;
+    t.limit_i = in.entry.limit;
+    t.exit_i = in.entry.exit;
+    t.length_i = in.entry.length;
+    t.brake_exit_i = in.entry.brake_exit;
+    t.next_queued_i = in.next_queued;
+    REQUIRE(in.set.accel <= mask(kAccelWidth));
+    t.accel_i = std::uint32_t(in.set.accel);
+    t.vmin_i = in.set.vmin;
+    t.override_i = in.set.override_;
+    t.hold_i = in.set.hold;
+    t.stepped_i = stepped;
+    if (in.running && in.cmd) {
+      const Command& c = *in.cmd;
+      const RegState& r = in.regs;
+      t.v_x_i = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
+      t.v_y_i = r.cnt_y != 0 && r.jv_y > 0 ? std::uint64_t(r.jv_y) : 0;
+      t.v_z_i = r.cnt_z != 0 && c.jv_z > 0 ? std::uint64_t(c.jv_z) : 0;
+      t.cap_i = std::uint64_t(c.cap);
+      t.cap_z_i = std::uint64_t(c.cap_z);
+    }
+    t.eval();
+    const bool it = p.iterate(in);
+    if (bool(t.iterate_o) != it) FAIL("clock " << clocks_ << ": iterate_o " << int(t.iterate_o) << ", model " << it);
+    iterations_ += it;
+    clock();
+  }
+  // Every register against the model's state after the edge.
+  void compare(const Pacer& p) {
+    const auto& r = *top_->rootp;
+    std::string diff;
+    const auto one = [&](const char* name, std::uint64_t rtl, std::uint64_t model) {
+      if (rtl != model)
+        diff += std::string(diff.empty() ? "" : ", ") + name + " " + std::to_string(rtl) + "/" + std::to_string(model);
+    };
+    one("v_q", r.dda_pace__DOT__v_q, p.speed());
+    one("ph_q", r.dda_pace__DOT__ph_q, p.phase());
+    one("s_q", r.dda_pace__DOT__s_q, p.brake());
+    one("rem_q", r.dda_pace__DOT__rem_q, p.to_go());
+    one("cruise_q", r.dda_pace__DOT__cruise_q, p.entry().cruise);
+    one("limit_q", r.dda_pace__DOT__limit_q, p.entry().limit);
+    one("exit_q", r.dda_pace__DOT__exit_q, p.entry().exit);
+    one("brake_q", r.dda_pace__DOT__brake_q, p.entry().brake_exit);
+    one("busy_q", r.dda_pace__DOT__busy_q, std::uint64_t(p.norm_busy()));
+    one("pend_q", r.dda_pace__DOT__pend_q, p.pending());
+    one("d", r.dda_pace__DOT__u_norm__DOT__d_q, p.distance());
+    if (!diff.empty()) FAIL("after clock " << clocks_ - 1 << " (rtl/model): " << diff);
+    max_phase_ = std::max(max_phase_, p.phase());
+    held_ = held_ || (p.speed() == 0 && p.norm_busy() == 0 && !p.pending() && p.to_go() > 0);
+  }
+  std::uint64_t iterations() const { return iterations_; }
+  std::uint64_t max_phase() const { return max_phase_; }
+  bool held() const { return held_; }  // the speed was 0 in the middle of a piece
+
+ private:
+  void clock() {
+    top_->clk_i = 0;
+    top_->eval();
+    top_->clk_i = 1;
+    top_->eval();
+    ++clocks_;
+  }
+  std::unique_ptr<Vdda_pace> top_;
+  std::uint64_t clocks_ = 0, iterations_ = 0, max_phase_ = 0;
+  bool held_ = false;
+};
+
+using Each = std::function<void(std::uint64_t, PaceSettings&)>;
+struct Seen {
+  std::uint64_t max_phase = 0;
+  bool held = false;
+};
+// Runs the plan clock by clock with the RTL beside the model; returns the model's result.
+PaceResult lockstep(const Plan& plan, const PaceOptions& o, const Each& each = nullptr, Seen* seen = nullptr) {
+  Lockstep rtl;
+  PaceHooks h;
+  h.clock_by_clock = true;
+  h.each = each;
+  h.edge = [&](const Pacer& p, const Pacer::In& in, bool stepped) { rtl.edge(p, in, stepped); };
+  h.watch = [&](std::uint64_t, const Pacer& p, double) { rtl.compare(p); };
+  const PaceResult r = pace_plan(plan, o, h);
+  CHECK(rtl.iterations() == r.iterations);
+  if (seen) *seen = Seen{rtl.max_phase(), rtl.held()};
+  return r;
+}
+
+// The paper's example: the 10 x 6 ellipse at 4 bits, zero preload, a quarter.
+Plan paper() {
+  ArcSpec s;
+  s.a = 10;
+  s.b = 6;
+  s.bits = 4;
+  s.preload = Preload::Zero;
+  return plan_arc(s);
+}
+Plan quarter(std::int64_t a, std::int64_t b, std::int64_t angle = 0) {
+  ArcSpec s;
+  s.a = a;
+  s.b = b;
+  s.angle = angle;
+  s.preload = Preload::Half;
+  return plan_arc(s);
+}
+
+}  // namespace
+
+TEST_CASE("pace unit: the RTL decides and holds what the reference model does, arc by arc", "[pacer][rtl]") {
+  struct Case {
+    const char* name;
+    Plan plan;
+    PaceOptions o;
+  };
+  ArcSpec circle;
+  circle.a = circle.b = 300;
+  circle.preload = Preload::Half;
+  const std::vector<Case> cases = {
+      {"the paper's example", paper(), {2e4, 1e7, 500, kClock}},
+      {"line 900 x 250", plan_line(Point{}, Point{900, 250, 0}, Preload::Half), {4e4, 2e7, 500, kClock}},
+      {"circle of radius 300", plan_arc(circle), {4e4, 2e7, 1000, kClock}},
+      {"rotated quarter 400 x 100", quarter(400, 100, 30000000), {1.5e4, 1e7, 300, kClock}},
+      {"3-D line, no ramp", plan_line(Point{}, Point{300, -200, 150}, Preload::Half), {4e4, 0, 0, kClock}},
+      {"a speed beyond one iteration per clock",
+       plan_line(Point{}, Point{6000, 100, 0}, Preload::Half),
+       {3.9e6, 0, 0, kClock}},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    Seen seen;
+    const PaceResult r = lockstep(c.plan, c.o, nullptr, &seen);
+    CHECK(r.end == c.plan.to);
+    CHECK(r.iterations > 20);
+    CHECK_FALSE(seen.held);
+    // The phase saturates only when the speed is beyond the core's.
+    CHECK((seen.max_phase == mask(kPhaseBits)) == (c.o.feed > 1e6));
+  }
+}
+
+TEST_CASE("pace unit: holds and overrides in lockstep with the reference model", "[pacer][rtl]") {
+  const Plan plan = quarter(600, 400);
+  const PaceOptions o{4e4, 2e7, 500, kClock};
+  Seen seen;
+  const PaceResult held = lockstep(
+      plan, o,
+      [](std::uint64_t clock, PaceSettings& s) {
+        s.hold = (clock >= 20000 && clock < 40000) || (clock >= 50000 && clock < 50400);
+      },
+      &seen);
+  CHECK(held.end == plan.to);
+  CHECK(seen.held);
+  const PaceResult over = lockstep(plan, o, [](std::uint64_t clock, PaceSettings& s) {
+    s.override_ = clock < 10000   ? kOverrideOne
+                  : clock < 30000 ? kOverrideOne / 3
+                  : clock < 45000 ? 2 * kOverrideOne
+                                  : 0;
+    if (clock >= 55000) s.override_ = kOverrideOne + 7;
+  });
+  CHECK(over.end == plan.to);
+}
