@@ -32,26 +32,9 @@
 #include <cstdint>
 
 #include "datapath/datapath.hpp"
+#include "motion/pace_params.hpp"
 
 namespace dda::motion {
-
-// Units. Entry speeds: path steps per clock x 2^kSpeedFrac (32 bits: at most 1 step per
-// clock, a resolution of 0.0093 steps/s at 40 MHz). The commanded speed, the phase and
-// the acceleration (steps per clock per clock): x 2^kRampFrac. Distances kept inside:
-// x 2^kDistFrac steps; entry lengths: x 2^kLenFrac steps. The override: x 1/kOverrideOne.
-inline constexpr int kSpeedFrac = 32;
-inline constexpr int kRampFrac = 48;
-inline constexpr int kDistFrac = 32;
-inline constexpr int kLenFrac = 8;
-inline constexpr int kNormFrac = 20;
-inline constexpr std::uint32_t kOverrideOne = 256;  // 100%; OVERRIDE runs 0 .. 2 * kOverrideOne (200%)
-inline constexpr int kNormLatency = 64;             // clocks from a step to the fresh d
-inline constexpr int kMarginShift = 3;              // ramp down 2^-kMarginShift step before the end
-// The phase saturates below 2^kPhaseBits (256 steps of path): a speed above the core's
-// one iteration per clock (d < v) leaves a backlog the phase cannot grow without bound.
-inline constexpr int kPhaseBits = kRampFrac + 8;
-// The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
-inline constexpr int kAccelWidth = 32;
 
 // The pacing fields of a queue entry.
 struct PaceEntry {

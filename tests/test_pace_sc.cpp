@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pacer's SystemC model (model/systemc/dda_pace.hpp) and its RTL (rtl/dda_pace.v,
+// Verilator) on the same inputs, the reference model's while it paces the golden
+// datapath (report/pace_report.hpp, clock by clock, with a hold and overrides of 100%,
+// 0 (the speed sits on the minimum), 50% and 200%): the
+// decision on every clock and every register after every edge, the pacer's and its norm
+// unit's, a difference named with its register and clock.
+#define CATCH_CONFIG_RUNNER
+// The verilated model first: verilated.h takes SystemC's time if <systemc> came before it.
+#include "Vdda_pace.h"
+#include "Vdda_pace___024root.h"
+// (then SystemC)
+#include <systemc>
+
+#include <catch2/catch.hpp>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dda_pace.hpp"
+#include "planner/planner.hpp"
+#include "report/pace_report.hpp"
+
+int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
+int sc_main(int argc, char* argv[]) { return main(argc, argv); }
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+struct Bench {
+  sc_core::sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, advance{"advance"}, running{"running"}, take{"take"},
+      next_queued{"next_queued"}, hold{"hold"}, stepped{"stepped"}, iterate{"iterate"};
+  sc_core::sc_signal<std::uint32_t> cruise{"cruise"}, limit{"limit"}, exit{"exit"}, length{"length"},
+      brake_exit{"brake_exit"}, accel{"accel"}, vmin{"vmin"}, override_{"override"};
+  sc_core::sc_signal<std::uint64_t> vx{"vx"}, vy{"vy"}, vz{"vz"}, cap{"cap"}, cap_z{"cap_z"}, speed{"speed"};
+  sc::dda_pace m{"pace", hw::kAccWidth};
+  std::unique_ptr<Vdda_pace> rtl = std::make_unique<Vdda_pace>();
+  std::uint64_t clock = 0;
+
+  Bench() {
+    m.clk_i(clk);
+    m.rst_ni(rst_n);
+    m.advance_i(advance);
+    m.running_i(running);
+    m.take_i(take);
+    m.next_queued_i(next_queued);
+    m.hold_i(hold);
+    m.stepped_i(stepped);
+    m.cruise_i(cruise);
+    m.limit_i(limit);
+    m.exit_i(exit);
+    m.length_i(length);
+    m.brake_exit_i(brake_exit);
+    m.accel_i(accel);
+    m.vmin_i(vmin);
+    m.override_i(override_);
+    m.v_x_i(vx);
+    m.v_y_i(vy);
+    m.v_z_i(vz);
+    m.cap_i(cap);
+    m.cap_z_i(cap_z);
+    m.iterate_o(iterate);
+    m.speed_o(speed);
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);
+    rst_n.write(false);
+    rtl->rst_ni = 0;
+    edge();
+    rst_n.write(true);
+    rtl->rst_ni = 1;
+  }
+  void inputs(const Pacer::In& in, bool st) {
+    Vdda_pace& t = *rtl;
+    t.advance_i = in.advance, advance.write(in.advance);
+    t.running_i = in.running, running.write(in.running);
+    t.take_i = in.take, take.write(in.take);
+    t.cruise_i = in.entry.cruise, cruise.write(in.entry.cruise);
+    t.limit_i = in.entry.limit, limit.write(in.entry.limit);
+    t.exit_i = in.entry.exit, exit.write(in.entry.exit);
+    t.length_i = in.entry.length, length.write(in.entry.length);
+    t.brake_exit_i = in.entry.brake_exit, brake_exit.write(in.entry.brake_exit);
+    t.next_queued_i = in.next_queued, next_queued.write(in.next_queued);
+    t.accel_i = std::uint32_t(in.set.accel), accel.write(std::uint32_t(in.set.accel));
+    t.vmin_i = in.set.vmin, vmin.write(in.set.vmin);
+    t.override_i = in.set.override_, override_.write(in.set.override_);
+    t.hold_i = in.set.hold, hold.write(in.set.hold);
+    t.stepped_i = st, stepped.write(st);
+    if (in.running && in.cmd) {
+      const Command& c = *in.cmd;
+      const RegState& r = in.regs;
+      const std::uint64_t x = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
+      const std::uint64_t y = r.cnt_y != 0 && r.jv_y > 0 ? std::uint64_t(r.jv_y) : 0;
+      const std::uint64_t z = r.cnt_z != 0 && c.jv_z > 0 ? std::uint64_t(c.jv_z) : 0;
+      t.v_x_i = x, vx.write(x);
+      t.v_y_i = y, vy.write(y);
+      t.v_z_i = z, vz.write(z);
+      t.cap_i = std::uint64_t(c.cap), cap.write(std::uint64_t(c.cap));
+      t.cap_z_i = std::uint64_t(c.cap_z), cap_z.write(std::uint64_t(c.cap_z));
+    }
+  }
+  void edge() {
+    rtl->clk_i = 0;
+    rtl->eval();
+    clk.write(false);
+    sc_core::sc_start(1, sc_core::SC_NS);
+    if (bool(rtl->iterate_o) != iterate.read())
+      FAIL("clock " << clock << ": iterate_o rtl " << int(rtl->iterate_o) << ", SystemC " << iterate.read());
+    rtl->clk_i = 1;
+    rtl->eval();
+    clk.write(true);
+    sc_core::sc_start(1, sc_core::SC_NS);
+    ++clock;
+  }
+  void compare() {
+    const auto& r = *rtl->rootp;
+    const auto& n = m.u_norm;
+    struct Reg {
+      const char* name;
+      std::uint64_t rtl, sc;
+    };
+    const std::vector<Reg> regs = {
+        {"v_q", r.dda_pace__DOT__v_q, m.v_q.read()},
+        {"ph_q", r.dda_pace__DOT__ph_q, m.ph_q.read()},
+        {"s_q", r.dda_pace__DOT__s_q, m.s_q.read()},
+        {"rem_q", r.dda_pace__DOT__rem_q, m.rem_q.read()},
+        {"cruise_q", r.dda_pace__DOT__cruise_q, m.cruise_q.read()},
+        {"limit_q", r.dda_pace__DOT__limit_q, m.limit_q.read()},
+        {"exit_q", r.dda_pace__DOT__exit_q, m.exit_q.read()},
+        {"brake_q", r.dda_pace__DOT__brake_q, m.brake_q.read()},
+        {"busy_q", r.dda_pace__DOT__busy_q, m.busy_q.read()},
+        {"pend_q", r.dda_pace__DOT__pend_q, m.pend_q.read()},
+        {"u_norm.cyc_q", r.dda_pace__DOT__u_norm__DOT__cyc_q, n.cyc_q.read()},
+        {"u_norm.d_q", r.dda_pace__DOT__u_norm__DOT__d_q, n.d_q.read()},
+        {"u_norm.root_q", r.dda_pace__DOT__u_norm__DOT__root_q, n.root_q.read()},
+        {"u_norm.s_q", r.dda_pace__DOT__u_norm__DOT__s_q, n.s_q.read()},
+    };
+    for (const auto& g : regs) {
+      if (g.rtl != g.sc)
+        FAIL("after clock " << clock - 1 << ": " << g.name << " rtl " << g.rtl << ", SystemC " << g.sc);
+    }
+    if (std::uint64_t(rtl->speed_o) != speed.read()) FAIL("after clock " << clock - 1 << ": speed_o");
+  }
+};
+
+}  // namespace
+
+TEST_CASE("pace unit: SystemC model and RTL equal in every register on every edge", "[pacer][rtl][systemc]") {
+  Bench b;
+  ArcSpec s;
+  s.a = 500;
+  s.b = 200;
+  s.angle = 20000000;
+  s.preload = Preload::Half;
+  s.from_theta = 30000000;
+  s.to_theta = 250000000;
+  const Plan plan = plan_arc(s);
+  PaceHooks h;
+  h.clock_by_clock = true;
+  h.each = [](std::uint64_t clock, PaceSettings& set) {
+    set.hold = clock >= 30000 && clock < 45000;
+    set.override_ = clock < 60000    ? kOverrideOne
+                    : clock < 80000  ? 0
+                    : clock < 100000 ? kOverrideOne / 2
+                                     : 2 * kOverrideOne;
+  };
+  h.edge = [&](const Pacer&, const Pacer::In& in, bool st) {
+    b.inputs(in, st);
+    b.edge();
+  };
+  h.watch = [&](std::uint64_t, const Pacer&, double) { b.compare(); };
+  const PaceResult r = pace_plan(plan, PaceOptions{1.5e4, 1e7, 300, 4e6}, h);
+  CHECK(r.end == plan.to);
+  CHECK(b.clock > 100000);
+}
