@@ -123,13 +123,17 @@ struct VectorsCli {
   vec::BusCli bus;
 };
 
+// The pacer's run (`dda feed --feed-rate`, `dda plot --speed`): steps/s, steps/s^2, Hz,
+// steps/s.
+struct PaceCli {
+  double feed_rate = 0, accel = 0, clock_hz = 0, vmin = -1;  // vmin < 0: sqrt(2 accel 1 step)
+};
 // The options of `dda feed` besides the arc's.
 struct FeedCli {
   ArcOptions arc;
   bool summary = false;
   std::string label = "arc";
-  // The pacer's run (with --feed-rate): steps/s, steps/s^2, Hz, steps/s.
-  double feed_rate = 0, accel = 0, clock_hz = 0, vmin = -1;  // vmin < 0: sqrt(2 accel 1 step)
+  PaceCli pace;
 };
 
 // The options of `dda gen-params`.
@@ -137,6 +141,8 @@ struct FeedCli {
 struct Cli {
   ArcOptions trace, path, stats, plot;
   std::string plot_view = "xy";
+  std::string plot_speed;  // --speed FILE.svg
+  PaceCli plot_pace;
   VectorsCli vectors;
   FeedCli feed;
   GenParamsCli gen_params;
@@ -165,25 +171,33 @@ void set_up_vectors(CLI::App* sub, Cli& c) {
   vec::add_bus_options(sub, v.bus);
 }
 
+void add_pace_options(CLI::App* sub, PaceCli& p) {
+  sub->add_option("--feed-rate", p.feed_rate,
+                  "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
+  sub->add_option("--accel", p.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
+  sub->add_option("--clock", p.clock_hz, "with --feed-rate: the block's clock in Hz");
+  sub->add_option("--vmin", p.vmin,
+                  "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
+                  "from it takes one step)");
+}
+
 void set_up_feed(CLI::App* sub, Cli& c) {
   ArcUses uses;
   uses.engine = uses.vcd = uses.program = false;  // the planner's table of one arc
   add_arc_options(sub, c.feed.arc, "markdown, or csv (one row per iteration) with --feed-rate", "markdown", uses);
   sub->add_flag("--summary", c.feed.summary, "one row for the arc (the table of docs/results.md)");
   sub->add_option("--label", c.feed.label, "the arc's name in the --summary row (default: empty)");
-  sub->add_option("--feed-rate", c.feed.feed_rate,
-                  "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
-  sub->add_option("--accel", c.feed.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
-  sub->add_option("--clock", c.feed.clock_hz, "with --feed-rate: the block's clock in Hz");
-  sub->add_option("--vmin", c.feed.vmin,
-                  "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
-                  "from it takes one step)");
+  add_pace_options(sub, c.feed.pace);
 }
 
 void set_up_plot(CLI::App* sub, Cli& c) {
   add_arc_options(sub, c.plot, "svg", "svg");
   sub->add_option("--view", c.plot_view,
                   "xy (default: the plane of the two ellipse axes), xz or yz: the third axis against x or y");
+  sub->add_option("--speed", c.plot_speed,
+                  "FILE.svg: the pacer's reference model run on the arc (--feed-rate, --accel, --clock), its speed "
+                  "against the path length with the feed and the ideal trapezoid (--out: the path too, optional)");
+  add_pace_options(sub, c.plot_pace);
 }
 
 void set_up_gen_params(CLI::App* sub, Cli& c) { add_gen_params_options(sub, c.gen_params); }
@@ -279,7 +293,7 @@ void run_vectors(const Cli& c, int argc, char** argv) {
 }
 
 // The pacer's options of `dda feed --feed-rate ...`, checked.
-PaceOptions pace_options(const FeedCli& f) {
+PaceOptions pace_options(const PaceCli& f) {
   const double vmin = f.vmin < 0 ? std::min(f.feed_rate, std::sqrt(2 * f.accel)) : f.vmin;
   // (nan fails these comparisons too.)
   if (!(f.feed_rate > 0 && f.feed_rate <= 1e9))
@@ -298,13 +312,13 @@ PaceOptions pace_options(const FeedCli& f) {
 void run_feed(const Cli& c, int, char**) {
   const FeedCli& f = c.feed;
   const ArcOptions& fd = f.arc;
-  const bool paced = f.feed_rate != 0;
+  const bool paced = f.pace.feed_rate != 0;
   const int format = parse_enum<int>("format", fd.format, {{"markdown", 0}, {"csv", 1}});
-  if (!paced && (f.accel != 0 || f.clock_hz != 0 || f.vmin >= 0))
+  if (!paced && (f.pace.accel != 0 || f.pace.clock_hz != 0 || f.pace.vmin >= 0))
     throw InputError("--accel, --clock and --vmin go with --feed-rate");
   if (!paced && format == 1)
     throw InputError("--format csv is the pacer's profile: give --feed-rate, --accel, --clock");
-  const PaceOptions po = paced ? pace_options(f) : PaceOptions{};
+  const PaceOptions po = paced ? pace_options(f.pace) : PaceOptions{};
   if (paced && format == 1 && f.summary) throw InputError("--summary is a markdown row: not with --format csv");
   const Plan plan = make_plan(fd);
   Output out(fd.out);
@@ -322,7 +336,7 @@ void run_feed(const Cli& c, int, char**) {
 std::string plot_title(int argc, char** argv) {
   std::string title = "dda";
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--out") == 0) {
+    if (std::strcmp(argv[i], "--out") == 0 || std::strcmp(argv[i], "--speed") == 0) {
       ++i;  // not part of the arc
       continue;
     }
@@ -333,17 +347,48 @@ std::string plot_title(int argc, char** argv) {
   return esc;
 }
 
+// A picture's file name: given, not standard output, ending in .svg (or without an
+// extension).
+void check_svg_name(const std::string& option, const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  if (path == "-" || (!ext.empty() && ext != ".svg")) {
+    throw InputError(option + " = '" + path + "' is invalid: plot writes SVG (a file name ending in .svg)");
+  }
+}
+
+// `dda plot --speed FILE.svg --feed-rate ...`: the pacer's run on one arc or line.
+void run_speed_plot(const Cli& c, const std::string& title) {
+  const ArcOptions& pl = c.plot;
+  check_svg_name("speed", c.plot_speed);
+  if (c.plot_pace.feed_rate == 0) throw InputError("--speed runs the pacer: give --feed-rate, --accel, --clock");
+  if (pl.prog.given())
+    throw InputError("--speed draws one arc's or line's run: a program's feeds are not planned yet (use an arc)");
+  if (pl.out.empty() && (pl.engine != "golden" || !pl.vcd.empty()))
+    throw InputError("--engine and --vcd go with --out (the path's picture): --speed runs the reference model");
+  const PaceOptions po = pace_options(c.plot_pace);
+  const Plan plan = make_plan(pl);
+  Output out(c.plot_speed);
+  write_speed_svg(out.stream(), plan, po, title);
+  out.commit();
+}
+
 void run_plot(const Cli& c, int argc, char** argv) {
   const ArcOptions& pl = c.plot;
   parse_enum<int>("format", pl.format, {{"svg", 0}});
-  if (pl.out.empty() || pl.out == "-") throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
-  std::string ext = std::filesystem::path(pl.out).extension().string();
-  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  if (!ext.empty() && ext != ".svg") {
-    throw InputError("out = '" + pl.out + "' is invalid: plot writes SVG (a file name ending in .svg)");
-  }
+  const bool speed = !c.plot_speed.empty();
+  if (!speed &&
+      (c.plot_pace.feed_rate != 0 || c.plot_pace.accel != 0 || c.plot_pace.clock_hz != 0 || c.plot_pace.vmin >= 0))
+    throw InputError("--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg");
+  if (!speed && (pl.out.empty() || pl.out == "-"))
+    throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
+  if (!pl.out.empty()) check_svg_name("out", pl.out);
   const View view = parse_enum<View>("view", c.plot_view, {{"xy", View::XY}, {"xz", View::XZ}, {"yz", View::YZ}});
   const std::string esc = plot_title(argc, argv);
+  if (speed) {
+    run_speed_plot(c, esc);
+    if (pl.out.empty()) return;
+  }
   run_arc_command(pl, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
     if (t.program) {
       return std::make_unique<program::ProgramSvgSink>(os, t.program->lattice,

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -293,4 +296,53 @@ TEST_CASE("cli input: a vector set larger than --max-size is refused before it i
     INFO(f);
     CHECK(slurp(fs::path(set) / f) == slurp(fs::path(other) / f));
   }
+}
+
+TEST_CASE("cli input: plot --speed draws the pacer's run, under the feed, and refuses what it cannot draw",
+          "[cli][plot][errors]") {
+  Scratch s;
+  const std::string arc = "plot --a 600 --b 200 --preload half";
+  const std::string pace = " --feed-rate 2e5 --accel 2e7 --clock 40e6";
+  const std::string svg = (s.dir / "speed.svg").string(), png = (s.dir / "speed.png").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {arc + " --speed " + svg, "--speed runs the pacer: give --feed-rate, --accel, --clock"},
+      {arc + pace + " --out " + svg, "--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg"},
+      {arc + pace + " --speed " + png, "speed = '" + png + "' is invalid: plot writes SVG"},
+      {arc + pace + " --speed -", "speed = '-' is invalid: plot writes SVG"},
+      {arc + pace + " --speed " + svg + " --engine rtl", "--engine and --vcd go with --out"},
+      {"plot --program " + std::string(DDA_SOURCE_DIR) + "/examples/circles.ngc" + pace + " --speed " + svg,
+       "--speed draws one arc's or line's run"},
+      {arc + " --feed-rate 2e5 --accel 2e7 --clock 40e6 --vmin 0 --speed " + svg, "--vmin 0 with an acceleration"},
+  };
+  for (const auto& [args, want] : cases) expect_refused(s, args, want);
+  // The picture: the commanded and the path speed, the feed, the ideal trapezoid; no
+  // point of either speed above the feed's line (SVG's y grows downwards).
+  const Result r = run_dda(s, arc + pace + " --speed " + svg);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.empty());
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto attr = [&](const std::string& cls, const std::string& name) {
+    const auto at = text.find("class=\"" + cls + "\"");
+    REQUIRE(at != std::string::npos);
+    const auto from = text.find(name + "=\"", at) + name.size() + 2;
+    return text.substr(from, text.find('"', from) - from);
+  };
+  const double feed_y = std::stod(attr("feed", "y1"));
+  for (const char* cls : {"commanded", "path-speed"}) {
+    std::istringstream pts(attr(cls, "points"));
+    std::string xy;
+    int n = 0;
+    while (pts >> xy) {
+      CHECK(std::stod(xy.substr(xy.find(',') + 1)) >= feed_y - 0.05);
+      ++n;
+    }
+    CHECK(n > 100);
+  }
+  CHECK(text.find("class=\"ideal\"") != std::string::npos);
+  CHECK(text.find("feed 200000 steps/s") != std::string::npos);
+  // With --out, the path's picture too.
+  const std::string path_svg = (s.dir / "path.svg").string();
+  REQUIRE(run_dda(s, arc + pace + " --speed " + svg + " --out " + path_svg).status == 0);
+  CHECK(fs::exists(path_svg));
 }

@@ -77,6 +77,12 @@ PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& ho
 // the minimum speed at the end (a triangle when the length is too short for the feed).
 double trapezoid_seconds(double length, double feed, double accel, double vmin);
 
+// `dda plot --speed FILE.svg --feed-rate ...`: an SVG picture of the run's commanded
+// speed and path speed against the path length (each thinned to its lowest and highest
+// over at most 1,200 stretches of the path: memory bounded), with the feed, the minimum
+// speed and the ideal trapezoid; title: XML text, already escaped.
+void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, const std::string& title);
+
 // `dda feed --feed-rate ...`: one CSV row per iteration, or the run's summary (markdown,
 // one row when summary, labelled).
 void write_pace_csv(std::ostream& os, const Plan& plan, const PaceOptions& o);
