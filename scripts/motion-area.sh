@@ -44,8 +44,8 @@ row() {  # row LABEL "LUT4s FFs carries"
 }
 # Each figure in an assignment of its own, so that a failed edit or synthesis stops the script.
 depth3=$(luts rtl/dda_motion.v 3)
-f=$(variant nopreset '(wr_pos_x ? wb_dat_i : pos_x_q) + dx' 'pos_x_q + dx' \
-  '(wr_pos_y ? wb_dat_i : pos_y_q) + dy' 'pos_y_q + dy' '(wr_pos_z ? wb_dat_i : pos_z_q) + dz' 'pos_z_q + dz')
+f=$(variant nopreset '(wr_pos_x ? wdat : pos_x_q) + dx' 'pos_x_q + dx' \
+  '(wr_pos_y ? wdat : pos_y_q) + dy' 'pos_y_q + dy' '(wr_pos_z ? wdat : pos_z_q) + dz' 'pos_z_q + dz')
 nopreset=$(luts "$f")
 f=$(variant count16 'reg [31:0] done_count_q' 'reg [15:0] done_count_q' 'reg [31:0] err_count_q' \
   'reg [15:0] err_count_q' "{31'd0, old_done} + {31'd0, new_done}" "{15'd0, old_done} + {15'd0, new_done}" \
