@@ -14,7 +14,8 @@
 // waits. v ramps by at most a per clock towards its target: the entry's cruise speed
 // times the override, clamped to its limit; the exit speed (0 with no next piece) once
 // the braking distance s, less the exit speed's, reaches the distance still to go less
-// 2^-MarginShift step; never below vmin; 0 on a hold. s adds v on a ramp step
+// 2^-MarginShift step; never below vmin; 0 on a hold. The product of the cruise speed and
+// the override is formed a bit per clock, OW clocks after a take or an override change. s adds v on a ramp step
 // up from above vmin and takes the new v off on one down to above vmin.
 `include "dda_params.vh"
 
@@ -60,6 +61,7 @@ module dda_pace #(
 );
 
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
+  localparam integer MW = RF - OF + OW;  // the cruise speed times the override (below 2^MW)
 
   reg  [RF-1:0] v_q      /* verilator public_flat_rd */;
   reg  [PW-1:0] ph_q     /* verilator public_flat_rd */;
@@ -89,17 +91,28 @@ module dda_pace #(
   wire [SW-1:0] eb     = next_queued_i ? SW'(brake_q) << (DF - LF) : '0;
   wire          decel  = {1'b0, s_q} + {1'b0, ph_dist} + {1'b0, margin} >= {1'b0, rem_q} + {1'b0, eb};
 
-  // The target: cruise x override, clamped to the limit; the exit speed on the way down.
-  wire [RF:0]   cruise_ovr = (RF+1)'(cruise_q) << (RF - SF - OF);
-  wire [RF+OW:0] prod  = {{OW{1'b0}}, cruise_ovr} * (RF+OW+1)'(override_i);
-  wire [RF+OW:0] lim   = (RF+OW+1)'(limit_q) << (RF - SF);
-  wire [RF+OW:0] t_cr  = prod < lim ? prod : lim;
-  wire [RF+OW:0] t_ex  = next_queued_i ? (RF+OW+1)'(exit_q) << (RF - SF) : '0;
-  wire [RF+OW:0] t_dn  = decel && accel_i != 32'd0 && t_ex < t_cr ? t_ex : t_cr;  // (no ramp: no slowing down)
-  wire [RF+OW:0] t_min = (RF+OW+1)'(vmin_i) << (RF - SF);
-  wire [RF+OW:0] t_all = hold_i ? '0 : t_dn > t_min ? t_dn : t_min;
-  wire [RF-1:0] target = RF'(t_all);  // (at most the limit or vmin: below 2^RF)
-  wire unused_t = &{1'b0, t_all[RF+OW:RF], cruise_ovr[RF], norm_busy};
+  // The cruise speed times the override, clamped to the limit (eff_q), by shift and add:
+  // a bit of the override per clock (mplier_q, shifting down) adds the cruise speed
+  // (mcand_q, shifting up) for OW clocks after a take or an override change (ovr_q: the
+  // override of the product), which start it again.
+  reg  [OW-1:0]  ovr_q    /* verilator public_flat_rd */;
+  reg  [OW-1:0]  mplier_q /* verilator public_flat_rd */;
+  reg  [MW-1:0]  mcand_q  /* verilator public_flat_rd */;
+  reg  [MW-1:0]  macc_q   /* verilator public_flat_rd */;
+  reg  [3:0]     mcnt_q   /* verilator public_flat_rd */;  // clocks until the product is ready
+  reg  [RF-1:0]  eff_q    /* verilator public_flat_rd */;
+  wire           mstart = take_i | (override_i != ovr_q);
+  wire [31:0]    mcruise = take_i ? cruise_i : cruise_q;
+  wire [MW-1:0]  msum   = macc_q + (mplier_q[0] ? mcand_q : '0);
+  wire [MW-1:0]  lim    = MW'(limit_q) << (RF - SF);
+  wire [MW-1:0]  eff_d  = msum < lim ? msum : lim;
+
+  // The target: the cruise speed; the exit speed on the way down; 0 on a hold.
+  wire [RF-1:0] t_ex  = next_queued_i ? RF'(exit_q) << (RF - SF) : '0;
+  wire [RF-1:0] t_dn  = decel && accel_i != 32'd0 && t_ex < eff_q ? t_ex : eff_q;  // (no ramp: no slowing down)
+  wire [RF-1:0] t_min = RF'(vmin_i) << (RF - SF);
+  wire [RF-1:0] target = hold_i ? '0 : t_dn > t_min ? t_dn : t_min;
+  wire unused_t = &{1'b0, eff_d[MW-1:RF], norm_busy};
 
   wire d_valid = busy_q == 7'd0 && !pend_q;
   wire [PW:0] ph_sum = {1'b0, ph_q} + (PW+1)'(v_q);
@@ -126,7 +139,27 @@ module dda_pace #(
       brake_q  <= '0;
       busy_q   <= '0;
       pend_q   <= 1'b0;
+      ovr_q    <= '0;
+      mplier_q <= '0;
+      mcand_q  <= '0;
+      macc_q   <= '0;
+      mcnt_q   <= 4'd0;
+      eff_q    <= '0;
     end else begin
+      if (mcnt_q != 4'd0) begin
+        macc_q   <= msum;
+        mcand_q  <= mcand_q << 1;
+        mplier_q <= mplier_q >> 1;
+        mcnt_q   <= mcnt_q - 4'd1;
+        if (mcnt_q == 4'd1) eff_q <= eff_d[RF-1:0];
+      end
+      if (mstart) begin
+        ovr_q    <= override_i;
+        mplier_q <= override_i;
+        mcand_q  <= MW'(mcruise) << (RF - SF - OF);
+        macc_q   <= '0;
+        mcnt_q   <= 4'(OW);
+      end
       // The norm unit: d is fresh Latency clocks after a stepping iteration started it.
       if (pend_q && stepped_i) busy_q <= 7'(Latency - 1);
       else if (busy_q != 7'd0) busy_q <= busy_q - 7'd1;

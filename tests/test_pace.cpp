@@ -5,9 +5,9 @@
 // model's inputs and the core's registers, its iterate_o must equal the model's
 // decision, and after every edge each of its registers the model's state: the speed,
 // the phase, the braking distance, the distance to go, the entry's fields, the norm
-// unit's countdown and d. Ramps, cruise, the last piece ending at the minimum speed,
-// holds, overrides (below 100% and clamped above it), a minimum speed of 0 with no
-// acceleration, a speed beyond the core's one iteration per clock (the phase saturates).
+// unit's countdown and d, the cruise speed times the override and its countdown. Ramps, cruise, the last piece ending
+// at the minimum speed, holds, overrides (below 100% and clamped above it), a minimum speed of 0 with no acceleration,
+// a speed beyond the core's one iteration per clock (the phase saturates).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
@@ -94,6 +94,9 @@ class Lockstep {
     one("busy_q", r.dda_pace__DOT__busy_q, std::uint64_t(p.norm_busy()));
     one("pend_q", r.dda_pace__DOT__pend_q, p.pending());
     one("d", r.dda_pace__DOT__u_norm__DOT__d_q, p.distance());
+    one("eff_q", r.dda_pace__DOT__eff_q, p.cruise_speed());
+    one("ovr_q", r.dda_pace__DOT__ovr_q, p.override_of());
+    one("mcnt_q", r.dda_pace__DOT__mcnt_q, std::uint64_t(p.override_busy()));
     if (!diff.empty()) FAIL("after clock " << clocks_ - 1 << " (rtl/model): " << diff);
     max_phase_ = std::max(max_phase_, p.phase());
     held_ = held_ || (p.speed() == 0 && p.norm_busy() == 0 && !p.pending() && p.to_go() > 0);

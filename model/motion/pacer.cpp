@@ -74,9 +74,7 @@ bool Pacer::decelerate(const In& in) const {
 
 std::uint64_t Pacer::target(const In& in) const {
   if (in.set.hold) return 0;
-  std::uint64_t t = std::min(ramp(e_.cruise) / kOverrideOne * in.set.override_ +
-                                 ramp(e_.cruise) % kOverrideOne * in.set.override_ / kOverrideOne,
-                             ramp(e_.limit));
+  std::uint64_t t = eff_;
   // (Without a ramp the speed jumps: no piece slows down before its end.)
   if (in.set.accel != 0 && decelerate(in)) t = std::min(t, in.next_queued ? ramp(e_.exit) : 0);
   return std::max(t, ramp(in.set.vmin));
@@ -88,7 +86,9 @@ bool Pacer::iterate(const In& in) const {
 }
 
 std::uint64_t Pacer::idle_clocks(const In& in) const {
-  if (!in.advance || !in.running || in.take || !distance_valid() || v_ == 0 || v_ != target(in)) return 0;
+  if (!in.advance || !in.running || in.take || !distance_valid() || v_ == 0 || v_ != target(in) || mul_ != 0 ||
+      in.set.override_ != ovr_)
+    return 0;
   // Clock j (from 0) adds v to ph + j v: no iteration while ph + (j + 1) v < D.
   const std::uint64_t D = d_ << (kRampFrac - kNormFrac);
   if (ph_ + v_ >= D) return 0;
@@ -147,6 +147,15 @@ void Pacer::edge(const In& in, bool stepped) {
     if (v_ == 0) s_ = 0;
   }
   if (!in.running && !in.take) v_ = s_ = 0;  // no piece: at rest
+  // The cruise speed times the override: kOverrideClocks after a take or a change of
+  // the override (either starts it again), from the entry then in force.
+  if (mul_ > 0 && --mul_ == 0) {
+    eff_ = std::min(ramp(e_.cruise) / kOverrideOne * ovr_, ramp(e_.limit));  // (ramp(c) is a multiple of kOverrideOne)
+  }
+  if (in.take || in.set.override_ != ovr_) {
+    ovr_ = in.set.override_;
+    mul_ = kOverrideClocks;
+  }
   if (in.take) {
     e_ = in.entry;
     rem_ = dist_of_len(e_.length);

@@ -16,6 +16,10 @@
 // d is exact to kNormFrac bits: q = floor(jv_i * 2^kNormFrac / cap_i) per axis,
 // d = floor(sqrt(q_x^2 + q_y^2 + q_z^2)).
 //
+// The cruise speed the ramp heads for, the entry's times the override clamped to the
+// entry's limit, is formed by shift and add over kOverrideClocks clocks after a take or
+// an override change; until then the one before holds.
+//
 // Acceleration. v changes by at most a per clock. The braking distance s, the distance
 // a ramp down at a from v to the minimum speed vmin travels, is kept by additions alone:
 // a ramp step up from v adds v if v is above vmin, one down to v' takes v' off if v' is
@@ -94,6 +98,11 @@ class Pacer {
   int norm_busy() const { return busy_; }  // clocks until d is fresh after a take or a step
   bool pending() const { return pending_; }
   const PaceEntry& entry() const { return e_; }
+  // The cruise speed times the override, clamped to the limit (x 2^kRampFrac), the
+  // override it is of, and the clocks until a new one is ready (0: ready).
+  std::uint64_t cruise_speed() const { return eff_; }
+  std::uint32_t override_of() const { return ovr_; }
+  int override_busy() const { return mul_; }
   std::uint64_t distance() const { return d_; }
   bool distance_valid() const { return busy_ == 0 && !pending_; }
   bool ramping_down() const { return down_; }
@@ -104,7 +113,9 @@ class Pacer {
  private:
   bool decelerate(const In& in) const;
 
-  std::uint64_t v_ = 0, ph_ = 0, d_ = 0, s_ = 0, rem_ = 0;
+  std::uint64_t v_ = 0, ph_ = 0, d_ = 0, s_ = 0, rem_ = 0, eff_ = 0;
+  std::uint32_t ovr_ = 0;
+  int mul_ = 0;
   PaceEntry e_;
   int busy_ = 0;          // clocks until the norm unit's d is fresh
   bool pending_ = false;  // an iteration happened on the last edge: d waits for its step

@@ -41,9 +41,7 @@ bool dda_pace::decel() const {
 
 std::uint64_t dda_pace::target() const {
   if (hold_i.read()) return 0;
-  // (cruise << (kRampFrac - kSpeedFrac) is a multiple of kOverrideOne: exact)
-  const std::uint64_t prod = ramp(cruise_q.read()) / kOverrideOne * override_i.read();
-  const std::uint64_t t_cr = std::min(prod, ramp(limit_q.read()));
+  const std::uint64_t t_cr = eff_q.read();
   const std::uint64_t t_ex = next_queued_i.read() ? ramp(exit_q.read()) : 0;
   const std::uint64_t t_dn = decel() && accel_i.read() != 0 && t_ex < t_cr ? t_ex : t_cr;
   return std::max(t_dn, ramp(vmin_i.read()));
@@ -58,6 +56,28 @@ void dda_pace::comb() {
   speed_o.write(v_q.read());
 }
 
+// A bit of the override per clock adds the cruise speed, shifting up; a take or an
+// override change starts it again (the RTL's mcand_q: cruise << (kRampFrac - kSpeedFrac
+// - 8), 8 = log2 kOverrideOne).
+void dda_pace::multiply() {
+  const std::uint64_t msum = macc_q.read() + ((mplier_q.read() & 1u) ? mcand_q.read() : 0);
+  if (mcnt_q.read() != 0) {
+    macc_q.write(msum);
+    mcand_q.write(mcand_q.read() << 1);
+    mplier_q.write(mplier_q.read() >> 1);
+    mcnt_q.write(mcnt_q.read() - 1);
+    if (mcnt_q.read() == 1) eff_q.write(std::min(msum, ramp(limit_q.read())));
+  }
+  if (take_i.read() || override_i.read() != ovr_q.read()) {
+    const std::uint64_t cruise = take_i.read() ? cruise_i.read() : cruise_q.read();
+    ovr_q.write(override_i.read());
+    mplier_q.write(override_i.read());
+    mcand_q.write(ramp(cruise) / kOverrideOne);
+    macc_q.write(0);
+    mcnt_q.write(std::uint32_t(kOverrideClocks));
+  }
+}
+
 void dda_pace::seq() {
   if (!rst_ni.read()) {
     v_q.write(0);
@@ -70,8 +90,15 @@ void dda_pace::seq() {
     brake_q.write(0);
     busy_q.write(0);
     pend_q.write(false);
+    ovr_q.write(0);
+    mplier_q.write(0);
+    mcand_q.write(0);
+    macc_q.write(0);
+    mcnt_q.write(0);
+    eff_q.write(0);
     return;
   }
+  multiply();
   const bool it = iterate_o.read();
   const std::uint64_t v = v_q.read(), s = s_q.read(), t = target(), a = accel_i.read();
   const std::uint64_t vmin = ramp(vmin_i.read());

@@ -27,11 +27,15 @@ SC_MODULE(dda_pace) {
   sc_core::sc_signal<std::uint32_t> cruise_q{"cruise_q"}, limit_q{"limit_q"}, exit_q{"exit_q"}, brake_q{"brake_q"},
       busy_q{"busy_q"};
   sc_core::sc_signal<bool> pend_q{"pend_q"};
+  // The cruise speed times the override, by shift and add.
+  sc_core::sc_signal<std::uint32_t> ovr_q{"ovr_q"}, mplier_q{"mplier_q"}, mcnt_q{"mcnt_q"};
+  sc_core::sc_signal<std::uint64_t> mcand_q{"mcand_q"}, macc_q{"macc_q"}, eff_q{"eff_q"};
   dda_norm u_norm;
 
  private:
   void comb();
   void seq();
+  void multiply();               // the shift-and-add product's step and start
   std::uint64_t target() const;  // the speed the ramp heads for
   bool decel() const;
 
