@@ -32,8 +32,7 @@ module dda_pace #(
   parameter integer PW = 56,    // kPhaseBits
   parameter integer OW = 10,    // the override: 0 .. 2 x (1 << OF)
   parameter integer OF = 8,     // kOverrideOne = 1 << OF
-  parameter integer MarginShift = 3,
-  parameter integer Latency = 64  // kNormLatency: the norm unit's
+  parameter integer MarginShift = 3
 ) (
   input  wire          clk_i,
   input  wire          rst_ni,         // synchronous, active low
@@ -60,6 +59,7 @@ module dda_pace #(
   output wire [RF-1:0] speed_o         // v
 );
 
+  localparam integer Latency = 5 * (NF + 1) + 1;  // kNormLatency: the norm unit's (rtl/dda_norm.v)
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
   localparam integer MW = RF - OF + OW;  // the cruise speed times the override (below 2^MW)
 

@@ -136,6 +136,6 @@ TEST_CASE("norm unit: a start while busy starts again", "[pacer][rtl]") {
   n.edge();
   n.top().start_i = 0;
   for (int i = 0; i < 30; ++i) n.edge();
-  CHECK(n.run(c, r) == iteration_distance(c, r));       // 64 edges from the second start
+  CHECK(n.run(c, r) == iteration_distance(c, r));       // kNormLatency edges from the second start
   CHECK(n.top().d_o == std::uint64_t{1} << kNormFrac);  // one step per iteration
 }

@@ -176,7 +176,7 @@ TEST_CASE("pace unit: SystemC model and RTL equal in every register on every edg
     b.edge();
   };
   h.watch = [&](std::uint64_t, const Pacer&, double) { b.compare(); };
-  const PaceResult r = pace_plan(plan, PaceOptions{1.5e4, 1e7, 300, 4e6}, h);
+  const PaceResult r = pace_plan(plan, PaceOptions{1.5e4, 1e7, 300, 16e6}, h);
   CHECK(r.end == plan.to);
   CHECK(b.clock > 100000);
 }

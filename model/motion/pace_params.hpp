@@ -23,8 +23,10 @@ inline constexpr int kOverrideBits = 10;            // the override's width
 // The cruise speed times the override is formed by shift and add, a bit of the override
 // per clock: ready kOverrideBits clocks after a take or an override change.
 inline constexpr int kOverrideClocks = kOverrideBits;
-inline constexpr int kNormLatency = 64;  // clocks from a step to the fresh d
-inline constexpr int kMarginShift = 3;   // ramp down 2^-kMarginShift step before the end
+// Clocks from a step to the fresh d: one divider and one squarer serve the three axes,
+// a bit per clock (rtl/dda_norm.v): three divisions, the last square, the sum, the root.
+inline constexpr int kNormLatency = 5 * (kNormFrac + 1) + 1;
+inline constexpr int kMarginShift = 3;  // ramp down 2^-kMarginShift step before the end
 // The phase saturates below 2^kPhaseBits (256 steps of path): a speed the core cannot
 // follow (above one iteration per clock, or one stepping iteration per kNormLatency + 1
 // clocks) leaves a backlog the phase cannot grow without bound.

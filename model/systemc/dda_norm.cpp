@@ -21,44 +21,31 @@ void dda_norm::comb() {
   d_o.write(d_q.read());
 }
 
-// Each divider: the remainder (the dividend itself on the first step) against the
-// divisor; the quotient bit shifted in, the remainder doubled for the next step.
+// The divider: the remainder (the dividend itself on an axis' first step: x's on step
+// 1, y's on QW + 1, z's on 2 QW + 1) against the divisor; the quotient bit shifted in,
+// the remainder doubled for the next step.
 void dda_norm::divide() {
-  const bool first = cyc_q.read() == 1;
-  const std::uint64_t dx = first ? cap_i.read() : c_x_q.read(), dz = first ? cap_z_i.read() : c_z_q.read();
-  struct Axis {
-    std::uint64_t n, d;
-    sc_core::sc_signal<std::uint64_t>&r, &q;
-  };
-  Axis ax[] = {{first ? v_x_i.read() : r_x_q.read(), dx, r_x_q, q_x_q},
-               {first ? v_y_i.read() : r_y_q.read(), dx, r_y_q, q_y_q},
-               {first ? v_z_i.read() : r_z_q.read(), dz, r_z_q, q_z_q}};
-  for (auto& a : ax) {
-    const bool b = a.n >= a.d;
-    const std::uint64_t k = b ? a.n - a.d : a.n;
-    a.r.write((k & mask(aw_)) << 1);
-    a.q.write(((a.q.read() << 1) | std::uint64_t(b)) & mask(qw_));
-  }
-  if (first) {
-    c_x_q.write(cap_i.read());
-    c_z_q.write(cap_z_i.read());
-  }
+  const std::uint32_t cyc = cyc_q.read(), qw = std::uint32_t(qw_);
+  const bool dx = cyc == 1, dy = cyc == qw + 1, dz = cyc == 2 * qw + 1, first = dx || dy || dz;
+  const std::uint64_t v = dx ? v_x_i.read() : dy ? v_y_i.read() : v_z_i.read();
+  const std::uint64_t n = first ? v : r_q.read();
+  const std::uint64_t d = first ? (dz ? cap_z_i.read() : cap_i.read()) : c_q.read();
+  const bool b = n >= d;
+  const std::uint64_t k = b ? n - d : n;
+  r_q.write((k & mask(aw_)) << 1);
+  q_q.write(((q_q.read() << 1) | std::uint64_t(b)) & mask(qw_));
+  if (first) c_q.write(d);
 }
 
-// Each squarer: a += q[0] ? q << i : 0, the multiplicand shifting up in r, the
-// multiplier down in q (the first step starts from q itself).
+// The squarer: a += multiplier[0] ? multiplicand : 0, the multiplicand shifting up,
+// the multiplier down; on an axis' first step both are the quotient just finished.
 void dda_norm::square() {
-  const bool sq0 = cyc_q.read() == std::uint32_t(qw_ + 1);
-  struct Axis {
-    sc_core::sc_signal<std::uint64_t>&r, &q, &a;
-  };
-  Axis ax[] = {{r_x_q, q_x_q, a_x_q}, {r_y_q, q_y_q, a_y_q}, {r_z_q, q_z_q, a_z_q}};
-  for (auto& a : ax) {
-    const std::uint64_t q = a.q.read(), m = sq0 ? q : a.r.read();
-    a.a.write(((sq0 ? 0 : a.a.read()) + ((q & 1u) ? m & mask(sw_) : 0)) & mask(sw_));
-    a.r.write((m << 1) & mask(aw_ + 1));
-    a.q.write(q >> 1);
-  }
+  const std::uint32_t cyc = cyc_q.read(), qw = std::uint32_t(qw_);
+  const bool sq0 = cyc == qw + 1 || cyc == 2 * qw + 1 || cyc == 3 * qw + 1;
+  const std::uint64_t mul = sq0 ? q_q.read() : sq_q.read(), mcd = sq0 ? q_q.read() : mc_q.read();
+  a_q.write(((cyc == qw + 1 ? 0 : a_q.read()) + ((mul & 1u) ? mcd : 0)) & mask(sw_));
+  mc_q.write((mcd << 1) & mask(sw_));
+  sq_q.write(mul >> 1);
 }
 
 // The root: the sum's next two bits into the remainder, against 4 root + 1.
@@ -69,12 +56,12 @@ void dda_norm::root() {
   rem_q.write((bit ? rn - trial : rn) & mask(qw_ + 1));
   root_q.write(((root_q.read() << 1) | std::uint64_t(bit)) & mask(qw_));
   s_q.write((s_q.read() << 2) & mask(sw_ + 2));
-  if (cyc_q.read() == std::uint32_t(3 * qw_ + 1))
+  if (cyc_q.read() == std::uint32_t(5 * qw_ + 1))
     d_q.write(((root_q.read() << 1) | std::uint64_t(bit)) & mask(nf_ + 2));
 }
 
 void dda_norm::seq() {
-  const std::uint32_t cyc = cyc_q.read(), last = std::uint32_t(3 * qw_ + 1), sum = std::uint32_t(2 * qw_ + 1);
+  const std::uint32_t cyc = cyc_q.read(), last = std::uint32_t(5 * qw_ + 1), sum = std::uint32_t(4 * qw_ + 1);
   if (!rst_ni.read()) {
     cyc_q.write(0);
     d_q.write(0);
@@ -86,10 +73,10 @@ void dda_norm::seq() {
   }
   if (cyc == 0) return;
   cyc_q.write(cyc == last ? 0 : cyc + 1);
-  if (cyc <= std::uint32_t(qw_)) divide();
-  if (cyc > std::uint32_t(qw_) && cyc <= std::uint32_t(2 * qw_)) square();
+  if (cyc <= std::uint32_t(3 * qw_)) divide();
+  if (cyc > std::uint32_t(qw_) && cyc <= std::uint32_t(4 * qw_)) square();
   if (cyc == sum) {
-    s_q.write(((a_x_q.read() + a_y_q.read() + a_z_q.read()) & mask(sw_)) << 2);
+    s_q.write(a_q.read() << 2);
     rem_q.write(0);
     root_q.write(0);
   }

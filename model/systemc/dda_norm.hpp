@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // SystemC model of the pacer's norm unit (rtl/dda_norm.v): same ports, registers and
-// schedule (three dividers, three squarers, a square root, a bit per clock each).
+// schedule (one divider and one squarer serving the three axes in turn, a square root,
+// a bit per clock each).
 #pragma once
 
 #include <systemc>
@@ -21,15 +22,14 @@ SC_MODULE(dda_norm) {
 
   // The registers (names as in the RTL).
   sc_core::sc_signal<std::uint32_t> cyc_q{"cyc_q"};
-  sc_core::sc_signal<std::uint64_t> r_x_q{"r_x_q"}, r_y_q{"r_y_q"}, r_z_q{"r_z_q"}, c_x_q{"c_x_q"}, c_z_q{"c_z_q"},
-      q_x_q{"q_x_q"}, q_y_q{"q_y_q"}, q_z_q{"q_z_q"}, a_x_q{"a_x_q"}, a_y_q{"a_y_q"}, a_z_q{"a_z_q"}, s_q{"s_q"},
-      rem_q{"rem_q"}, root_q{"root_q"}, d_q{"d_q"};
+  sc_core::sc_signal<std::uint64_t> r_q{"r_q"}, c_q{"c_q"}, q_q{"q_q"}, sq_q{"sq_q"}, mc_q{"mc_q"}, a_q{"a_q"},
+      s_q{"s_q"}, rem_q{"rem_q"}, root_q{"root_q"}, d_q{"d_q"};
 
  private:
   void comb();
   void seq();
-  void divide();  // one step of the three dividers
-  void square();  // one step of the three squarers
+  void divide();  // one step of the divider
+  void square();  // one step of the squarer
   void root();    // one step of the square root
 
   int aw_, nf_, qw_, sw_;
