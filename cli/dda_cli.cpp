@@ -37,6 +37,7 @@
 #include "motion/motion_map.hpp"
 #include "motion/motion_model.hpp"
 #include "output.hpp"
+#include "pace_cmd.hpp"
 #include "pipeline/pipeline.hpp"
 #include "program/program.hpp"
 #include "program_cmd.hpp"
@@ -123,11 +124,6 @@ struct VectorsCli {
   vec::BusCli bus;
 };
 
-// The pacer's run (`dda feed --feed-rate`, `dda plot --speed`): steps/s, steps/s^2, Hz,
-// steps/s.
-struct PaceCli {
-  double feed_rate = 0, accel = 0, clock_hz = 0, vmin = -1;  // vmin < 0: sqrt(2 accel 1 step)
-};
 // The options of `dda feed` besides the arc's.
 struct FeedCli {
   ArcOptions arc;
@@ -169,16 +165,6 @@ void set_up_vectors(CLI::App* sub, Cli& c) {
                   "refuse a set larger than SIZE bytes (K, M, G, T: binary multiples; default 1G), before it is "
                   "written");
   vec::add_bus_options(sub, v.bus);
-}
-
-void add_pace_options(CLI::App* sub, PaceCli& p) {
-  sub->add_option("--feed-rate", p.feed_rate,
-                  "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
-  sub->add_option("--accel", p.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
-  sub->add_option("--clock", p.clock_hz, "with --feed-rate: the block's clock in Hz");
-  sub->add_option("--vmin", p.vmin,
-                  "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
-                  "from it takes one step)");
 }
 
 void set_up_feed(CLI::App* sub, Cli& c) {
@@ -292,23 +278,6 @@ void run_vectors(const Cli& c, int argc, char** argv) {
   }
 }
 
-// The pacer's options of `dda feed --feed-rate ...`, checked.
-PaceOptions pace_options(const PaceCli& f) {
-  const double vmin = f.vmin < 0 ? std::min(f.feed_rate, std::sqrt(2 * f.accel)) : f.vmin;
-  // (nan fails these comparisons too.)
-  if (!(f.feed_rate > 0 && f.feed_rate <= 1e9))
-    throw InputError(fmt::format("--feed-rate = {} is out of range: steps/s, above 0 and at most 1e9", f.feed_rate));
-  if (!(f.clock_hz > 0 && f.clock_hz <= 1e10))
-    throw InputError(fmt::format("--clock = {} is out of range: Hz, above 0 and at most 1e10", f.clock_hz));
-  if (!(f.accel >= 0 && f.accel <= 1e12))
-    throw InputError(fmt::format("--accel = {} is out of range: steps/s^2, 0 to 1e12 (0: no ramps)", f.accel));
-  if (f.accel > 0 && vmin == 0)
-    throw InputError("--vmin 0 with an acceleration never ends the last piece: the ramp reaches rest before its end");
-  if (!(vmin >= 0 && vmin <= f.feed_rate))
-    throw InputError(fmt::format("--vmin = {} is out of range: steps/s, 0 to the feed", vmin));
-  return PaceOptions{f.feed_rate, f.accel, vmin, f.clock_hz};
-}
-
 void run_feed(const Cli& c, int, char**) {
   const FeedCli& f = c.feed;
   const ArcOptions& fd = f.arc;
@@ -345,16 +314,6 @@ std::string plot_title(int argc, char** argv) {
   std::string esc;
   for (const char ch : title) esc += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
   return esc;
-}
-
-// A picture's file name: given, not standard output, ending in .svg (or without an
-// extension).
-void check_svg_name(const std::string& option, const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  if (path == "-" || (!ext.empty() && ext != ".svg")) {
-    throw InputError(option + " = '" + path + "' is invalid: plot writes SVG (a file name ending in .svg)");
-  }
 }
 
 // `dda plot --speed FILE.svg --feed-rate ...`: the pacer's run on one arc or line.

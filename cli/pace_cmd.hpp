@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pacer's options (`dda feed --feed-rate`, `dda plot --speed`), checked into the
+// reference model's run (report/pace_report.hpp), and the picture files' names.
+#pragma once
+
+#include <string>
+
+#include "report/pace_report.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace dda::cli {
+
+// The pacer's run (`dda feed --feed-rate`, `dda plot --speed`): steps/s, steps/s^2, Hz,
+// steps/s.
+struct PaceCli {
+  double feed_rate = 0, accel = 0, clock_hz = 0, vmin = -1;  // vmin < 0: sqrt(2 accel 1 step)
+};
+
+void add_pace_options(CLI::App* sub, PaceCli& p);
+// The options checked (InputError naming the one out of range): the feed, the clock,
+// the acceleration, the minimum speed (default sqrt(2 A x 1 step), at most the feed).
+PaceOptions pace_options(const PaceCli& f);
+// A picture's file name (option: its name in the message): not standard output, ending
+// in .svg or without an extension (InputError).
+void check_svg_name(const std::string& option, const std::string& path);
+
+}  // namespace dda::cli
