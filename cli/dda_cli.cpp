@@ -138,6 +138,7 @@ struct Cli {
   ArcOptions trace, path, stats, plot;
   std::string plot_view = "xy";
   std::string plot_speed;  // --speed FILE.svg
+  CLI::Option* plot_speed_opt = nullptr;
   PaceCli plot_pace;
   VectorsCli vectors;
   FeedCli feed;
@@ -180,9 +181,10 @@ void set_up_plot(CLI::App* sub, Cli& c) {
   add_arc_options(sub, c.plot, "svg", "svg");
   sub->add_option("--view", c.plot_view,
                   "xy (default: the plane of the two ellipse axes), xz or yz: the third axis against x or y");
-  sub->add_option("--speed", c.plot_speed,
-                  "FILE.svg: the pacer's reference model run on the arc (--feed-rate, --accel, --clock), its speed "
-                  "against the path length with the feed and the ideal trapezoid (--out: the path too, optional)");
+  c.plot_speed_opt =
+      sub->add_option("--speed", c.plot_speed,
+                      "FILE.svg: the pacer's reference model run on the arc (--feed-rate, --accel, --clock), its speed "
+                      "against the path length with the feed and the ideal trapezoid (--out: the path too, optional)");
   add_pace_options(sub, c.plot_pace);
 }
 
@@ -281,10 +283,9 @@ void run_vectors(const Cli& c, int argc, char** argv) {
 void run_feed(const Cli& c, int, char**) {
   const FeedCli& f = c.feed;
   const ArcOptions& fd = f.arc;
-  const bool paced = f.pace.feed_rate != 0;
+  const bool paced = f.pace.paced();
   const int format = parse_enum<int>("format", fd.format, {{"markdown", 0}, {"csv", 1}});
-  if (!paced && (f.pace.accel != 0 || f.pace.clock_hz != 0 || f.pace.vmin >= 0))
-    throw InputError("--accel, --clock and --vmin go with --feed-rate");
+  if (!paced && f.pace.any_given()) throw InputError("--accel, --clock and --vmin go with --feed-rate");
   if (!paced && format == 1)
     throw InputError("--format csv is the pacer's profile: give --feed-rate, --accel, --clock");
   const PaceOptions po = paced ? pace_options(f.pace) : PaceOptions{};
@@ -320,11 +321,13 @@ std::string plot_title(int argc, char** argv) {
 void run_speed_plot(const Cli& c, const std::string& title) {
   const ArcOptions& pl = c.plot;
   check_svg_name("speed", c.plot_speed);
-  if (c.plot_pace.feed_rate == 0) throw InputError("--speed runs the pacer: give --feed-rate, --accel, --clock");
+  if (!c.plot_pace.paced()) throw InputError("--speed runs the pacer: give --feed-rate, --accel, --clock");
   if (pl.prog.given())
     throw InputError("--speed draws one arc's or line's run: a program's feeds are not planned yet (use an arc)");
-  if (pl.out.empty() && (pl.engine != "golden" || !pl.vcd.empty()))
-    throw InputError("--engine and --vcd go with --out (the path's picture): --speed runs the reference model");
+  if (pl.out.empty() && (pl.engine != "golden" || !pl.vcd.empty() || c.plot_view != "xy"))
+    throw InputError("--engine, --vcd and --view go with --out (the path's picture): --speed runs the reference model");
+  if (!pl.out.empty() && std::filesystem::weakly_canonical(pl.out) == std::filesystem::weakly_canonical(c.plot_speed))
+    throw InputError("--speed and --out name the same file '" + pl.out + "': the two pictures need two files");
   const PaceOptions po = pace_options(c.plot_pace);
   const Plan plan = make_plan(pl);
   Output out(c.plot_speed);
@@ -335,9 +338,8 @@ void run_speed_plot(const Cli& c, const std::string& title) {
 void run_plot(const Cli& c, int argc, char** argv) {
   const ArcOptions& pl = c.plot;
   parse_enum<int>("format", pl.format, {{"svg", 0}});
-  const bool speed = !c.plot_speed.empty();
-  if (!speed &&
-      (c.plot_pace.feed_rate != 0 || c.plot_pace.accel != 0 || c.plot_pace.clock_hz != 0 || c.plot_pace.vmin >= 0))
+  const bool speed = c.plot_speed_opt->count() > 0;
+  if (!speed && c.plot_pace.any_given())
     throw InputError("--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg");
   if (!speed && (pl.out.empty() || pl.out == "-"))
     throw InputError("plot needs --out FILE.svg: it writes a picture, not text");

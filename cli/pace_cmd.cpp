@@ -13,18 +13,29 @@
 
 namespace dda::cli {
 
+namespace {
+bool given(const CLI::Option* o) { return o != nullptr && o->count() > 0; }
+}  // namespace
+
+bool PaceCli::paced() const { return given(feed_opt); }
+bool PaceCli::any_given() const { return paced() || given(accel_opt) || given(clock_opt) || given(vmin_opt); }
+bool PaceCli::vmin_given() const { return given(vmin_opt); }
+
 void add_pace_options(CLI::App* sub, PaceCli& p) {
-  sub->add_option("--feed-rate", p.feed_rate,
-                  "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
-  sub->add_option("--accel", p.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
-  sub->add_option("--clock", p.clock_hz, "with --feed-rate: the block's clock in Hz");
-  sub->add_option("--vmin", p.vmin,
-                  "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
-                  "from it takes one step)");
+  p.feed_opt =
+      sub->add_option("--feed-rate", p.feed_rate,
+                      "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
+  p.accel_opt =
+      sub->add_option("--accel", p.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
+  p.clock_opt = sub->add_option("--clock", p.clock_hz, "with --feed-rate: the block's clock in Hz");
+  p.vmin_opt =
+      sub->add_option("--vmin", p.vmin,
+                      "with --feed-rate: the minimum speed, steps/s, above 0 (default sqrt(2 * accel * 1 step): a stop "
+                      "from it takes one step)");
 }
 
 PaceOptions pace_options(const PaceCli& f) {
-  const double vmin = f.vmin < 0 ? std::min(f.feed_rate, std::sqrt(2 * f.accel)) : f.vmin;
+  const double vmin = f.vmin_given() ? f.vmin : std::min(f.feed_rate, std::sqrt(2 * f.accel));
   // (nan fails these comparisons too.)
   if (!(f.feed_rate > 0 && f.feed_rate <= 1e9))
     throw InputError(fmt::format("--feed-rate = {} is out of range: steps/s, above 0 and at most 1e9", f.feed_rate));
@@ -42,7 +53,7 @@ PaceOptions pace_options(const PaceCli& f) {
 void check_svg_name(const std::string& option, const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  if (path == "-" || (!ext.empty() && ext != ".svg")) {
+  if (path.empty() || path == "-" || (!ext.empty() && ext != ".svg")) {
     throw InputError(option + " = '" + path + "' is invalid: plot writes SVG (a file name ending in .svg)");
   }
 }

@@ -87,7 +87,7 @@ struct Bench {
     t.override_i = in.set.override_, override_.write(in.set.override_);
     t.hold_i = in.set.hold, hold.write(in.set.hold);
     t.stepped_i = st, stepped.write(st);
-    if (in.running && in.cmd) {
+    if (in.cmd) {
       const Command& c = *in.cmd;
       const RegState& r = in.regs;
       const std::uint64_t x = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
@@ -138,9 +138,16 @@ struct Bench {
         {"mcnt_q", r.dda_pace__DOT__mcnt_q, m.mcnt_q.read()},
         {"eff_q", r.dda_pace__DOT__eff_q, m.eff_q.read()},
         {"u_norm.cyc_q", r.dda_pace__DOT__u_norm__DOT__cyc_q, n.cyc_q.read()},
-        {"u_norm.d_q", r.dda_pace__DOT__u_norm__DOT__d_q, n.d_q.read()},
-        {"u_norm.root_q", r.dda_pace__DOT__u_norm__DOT__root_q, n.root_q.read()},
+        {"u_norm.r_q", r.dda_pace__DOT__u_norm__DOT__r_q, n.r_q.read()},
+        {"u_norm.c_q", r.dda_pace__DOT__u_norm__DOT__c_q, n.c_q.read()},
+        {"u_norm.q_q", r.dda_pace__DOT__u_norm__DOT__q_q, n.q_q.read()},
+        {"u_norm.sq_q", r.dda_pace__DOT__u_norm__DOT__sq_q, n.sq_q.read()},
+        {"u_norm.mc_q", r.dda_pace__DOT__u_norm__DOT__mc_q, n.mc_q.read()},
+        {"u_norm.a_q", r.dda_pace__DOT__u_norm__DOT__a_q, n.a_q.read()},
         {"u_norm.s_q", r.dda_pace__DOT__u_norm__DOT__s_q, n.s_q.read()},
+        {"u_norm.rem_q", r.dda_pace__DOT__u_norm__DOT__rem_q, n.rem_q.read()},
+        {"u_norm.root_q", r.dda_pace__DOT__u_norm__DOT__root_q, n.root_q.read()},
+        {"u_norm.d_q", r.dda_pace__DOT__u_norm__DOT__d_q, n.d_q.read()},
     };
     for (const auto& g : regs) {
       if (g.rtl != g.sc)

@@ -28,7 +28,7 @@ inline constexpr int kOverrideClocks = kOverrideBits;
 inline constexpr int kNormLatency = 5 * (kNormFrac + 1) + 1;
 inline constexpr int kMarginShift = 3;  // ramp down 2^-kMarginShift step before the end
 // The phase saturates below 2^kPhaseBits (256 steps of path): a speed the core cannot
-// follow (above one iteration per clock, or one stepping iteration per kNormLatency + 1
+// follow (above one iteration every other clock, or one stepping iteration per kNormLatency + 1
 // clocks) leaves a backlog the phase cannot grow without bound.
 inline constexpr int kPhaseBits = kRampFrac + 8;
 // The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).

@@ -117,7 +117,8 @@ void Pacer::edge(const In& in, bool stepped) {
   // from the core's registers then (the core does not iterate meanwhile).
   if (pending_ && stepped) busy_ = kNormLatency;
   pending_ = false;
-  if (busy_ > 0 && --busy_ == 0 && in.running && in.cmd) d_ = iteration_distance(*in.cmd, in.regs);
+  // (After a piece's last step the core's counters are 0: d of the finished piece is 0.)
+  if (busy_ > 0 && --busy_ == 0 && in.cmd) d_ = iteration_distance(*in.cmd, in.regs);
   if (it) {
     pending_ = true;
     rem_ -= std::min(rem_, dist_of_norm(d_));

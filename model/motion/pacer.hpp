@@ -74,7 +74,7 @@ class Pacer {
   struct In {
     bool advance = false;
     bool running = false;
-    const Command* cmd = nullptr;  // the running piece's command (with running)
+    const Command* cmd = nullptr;  // the running or the last piece's command (none before the first)
     RegState regs;
     bool take = false;
     PaceEntry entry;

@@ -92,7 +92,7 @@ struct Run {
     Pacer::In in;
     in.advance = true;
     in.running = dp && !dp->done();
-    if (in.running) {
+    if (dp) {  // the running piece's, or the finished one's (the core's registers as it left them)
       in.cmd = &plan.pieces[cur].cmd;
       in.regs = dp->regs();
     }
