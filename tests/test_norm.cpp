@@ -34,11 +34,12 @@ class Norm {
   }
   // The operands as the block gives them: an inactive axis' integrand as 0.
   void operands(const Command& c, const RegState& r) {
-    top_->v_x_i = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
-    top_->v_y_i = r.cnt_y != 0 && r.jv_y > 0 ? std::uint64_t(r.jv_y) : 0;
-    top_->v_z_i = r.cnt_z != 0 && c.jv_z > 0 ? std::uint64_t(c.jv_z) : 0;
-    top_->cap_i = std::uint64_t(c.cap);
-    top_->cap_z_i = std::uint64_t(c.cap_z);
+    const NormOperands o = norm_operands(c, r);
+    top_->v_x_i = o.v_x;
+    top_->v_y_i = o.v_y;
+    top_->v_z_i = o.v_z;
+    top_->cap_i = o.cap;
+    top_->cap_z_i = o.cap_z;
   }
   // Starts on one edge with other operands (the command loads on it), then holds these;
   // returns d after kNormLatency edges, checking busy_o and that d_o held until then.

@@ -63,13 +63,12 @@ class Lockstep {
     t.hold_i = in.set.hold;
     t.stepped_i = stepped;
     if (in.cmd) {
-      const Command& c = *in.cmd;
-      const RegState& r = in.regs;
-      t.v_x_i = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
-      t.v_y_i = r.cnt_y != 0 && r.jv_y > 0 ? std::uint64_t(r.jv_y) : 0;
-      t.v_z_i = r.cnt_z != 0 && c.jv_z > 0 ? std::uint64_t(c.jv_z) : 0;
-      t.cap_i = std::uint64_t(c.cap);
-      t.cap_z_i = std::uint64_t(c.cap_z);
+      const NormOperands o = norm_operands(*in.cmd, in.regs);
+      t.v_x_i = o.v_x;
+      t.v_y_i = o.v_y;
+      t.v_z_i = o.v_z;
+      t.cap_i = o.cap;
+      t.cap_z_i = o.cap_z;
     }
     t.eval();
     const bool it = p.iterate(in);

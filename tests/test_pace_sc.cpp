@@ -88,16 +88,12 @@ struct Bench {
     t.hold_i = in.set.hold, hold.write(in.set.hold);
     t.stepped_i = st, stepped.write(st);
     if (in.cmd) {
-      const Command& c = *in.cmd;
-      const RegState& r = in.regs;
-      const std::uint64_t x = r.cnt_x != 0 && r.jv_x > 0 ? std::uint64_t(r.jv_x) : 0;
-      const std::uint64_t y = r.cnt_y != 0 && r.jv_y > 0 ? std::uint64_t(r.jv_y) : 0;
-      const std::uint64_t z = r.cnt_z != 0 && c.jv_z > 0 ? std::uint64_t(c.jv_z) : 0;
-      t.v_x_i = x, vx.write(x);
-      t.v_y_i = y, vy.write(y);
-      t.v_z_i = z, vz.write(z);
-      t.cap_i = std::uint64_t(c.cap), cap.write(std::uint64_t(c.cap));
-      t.cap_z_i = std::uint64_t(c.cap_z), cap_z.write(std::uint64_t(c.cap_z));
+      const NormOperands o = norm_operands(*in.cmd, in.regs);
+      t.v_x_i = o.v_x, vx.write(o.v_x);
+      t.v_y_i = o.v_y, vy.write(o.v_y);
+      t.v_z_i = o.v_z, vz.write(o.v_z);
+      t.cap_i = o.cap, cap.write(o.cap);
+      t.cap_z_i = o.cap_z, cap_z.write(o.cap_z);
     }
   }
   void edge() {

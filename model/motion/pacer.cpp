@@ -29,13 +29,18 @@ std::uint64_t dist_of_len(std::uint32_t l) { return std::uint64_t(l) << (kDistFr
 
 }  // namespace
 
+NormOperands norm_operands(const Command& c, const RegState& r) {
+  const auto v = [](std::int64_t cnt, std::int64_t jv) { return cnt != 0 && jv > 0 ? std::uint64_t(jv) : 0; };
+  return NormOperands{v(r.cnt_x, r.jv_x), v(r.cnt_y, r.jv_y), v(r.cnt_z, c.jv_z), std::uint64_t(c.cap),
+                      std::uint64_t(c.cap_z)};
+}
+
 std::uint64_t iteration_distance(const Command& c, const RegState& r) {
-  const auto q = [](std::int64_t v, std::int64_t cap) {
-    return v > 0 && cap > 0 ? (u128(std::uint64_t(v)) << kNormFrac) / u128(std::uint64_t(cap)) : u128(0);
+  const NormOperands o = norm_operands(c, r);
+  const auto q = [](std::uint64_t v, std::uint64_t cap) {
+    return cap > 0 ? (u128(v) << kNormFrac) / u128(cap) : u128(0);
   };
-  const u128 qx = q(r.cnt_x != 0 ? r.jv_x : 0, c.cap);
-  const u128 qy = q(r.cnt_y != 0 ? r.jv_y : 0, c.cap);
-  const u128 qz = q(r.cnt_z != 0 ? c.jv_z : 0, c.cap_z);
+  const u128 qx = q(o.v_x, o.cap), qy = q(o.v_y, o.cap), qz = q(o.v_z, o.cap_z);
   return isqrt(qx * qx + qy * qy + qz * qz);
 }
 

@@ -58,6 +58,12 @@ struct PaceSettings {
 
 // The DDA's path length per iteration from the core's registers, x 2^kNormFrac steps.
 std::uint64_t iteration_distance(const Command& c, const RegState& r);
+// The norm unit's operands (rtl/dda_norm.v's v_x_i .. cap_z_i) from the core's
+// registers: an axis whose counter is done or whose integrand is not positive gives 0.
+struct NormOperands {
+  std::uint64_t v_x = 0, v_y = 0, v_z = 0, cap = 0, cap_z = 0;
+};
+NormOperands norm_operands(const Command& c, const RegState& r);
 // The distance a ramp down from speed v to vmin (x 2^kSpeedFrac) at accel travels, as
 // the pacer counts it, x 2^kLenFrac steps, rounded up; 0 for accel 0.
 std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel);
