@@ -28,6 +28,11 @@ ScHarness::ScHarness(const std::string& vcd, dda_core::IntegratorFactory factory
   core_->done_o(done_);
   core_->err_o(err_);
   core_->iter_o(iter_);
+  core_->norm_v_x_o(norm_v_x_);
+  core_->norm_v_y_o(norm_v_y_);
+  core_->norm_v_z_o(norm_v_z_);
+  core_->norm_cap_o(norm_cap_);
+  core_->norm_cap_z_o(norm_cap_z_);
   sampler_ = std::make_unique<ScSampler>(core_->name(), hw::signal_table());
   if (!vcd.empty()) {
     // SystemC appends ".vcd" to the name it is given; close_trace() moves the file to

@@ -45,6 +45,9 @@ class ScHarness : public CoreHarness {
   sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
   sc_core::sc_signal<bool> step_z_{"step_z"}, dir_z_{"dir_z"};
   sc_core::sc_signal<bool> busy_{"busy"}, done_{"done"}, err_{"err"}, iter_{"iter"};
+  // The pacer's norm operands (the scoreboard compares the registers they come from).
+  sc_core::sc_signal<std::uint64_t> norm_v_x_{"norm_v_x"}, norm_v_y_{"norm_v_y"}, norm_v_z_{"norm_v_z"},
+      norm_cap_{"norm_cap"}, norm_cap_z_{"norm_cap_z"};
   std::unique_ptr<dda_core> core_;
   std::unique_ptr<ScSampler> sampler_;
   sc_core::sc_trace_file* tf_ = nullptr;

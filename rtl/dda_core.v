@@ -44,7 +44,15 @@ module dda_core #(
   output wire                      busy_o,
   output wire                      done_o,
   output wire                      err_o,
-  output wire                      iter_o
+  output wire                      iter_o,
+  // The norm operands of the pacer (rtl/dda_pace.v), from the registers: an axis'
+  // integrand while its counter runs and the integrand is positive, else 0; the
+  // capacities.
+  output wire [`DDA_ACC_WIDTH-1:0] norm_v_x_o,
+  output wire [`DDA_ACC_WIDTH-1:0] norm_v_y_o,
+  output wire [`DDA_ACC_WIDTH-1:0] norm_v_z_o,
+  output wire [`DDA_ACC_WIDTH-1:0] norm_cap_o,
+  output wire [`DDA_ACC_WIDTH-1:0] norm_cap_z_o
 );
 
   localparam integer AccWidth = `DDA_ACC_WIDTH;
@@ -101,6 +109,7 @@ module dda_core #(
   wire active_x, active_y, active_z;
   wire active_d_x, active_d_y, active_d_z;
   wire last_x, last_y, last_z;
+  wire [AccWidth-1:0] jv_x, jv_y, jv_z, cap_z;
 
   dda_ctrl u_ctrl (
     .clk_i       (clk_i),
@@ -144,7 +153,8 @@ module dda_core #(
     .ovf_d_o    (ovf_d_x),
     .ovf_x_d_i  (ovf_d_x),
     .ovf_y_d_i  (ovf_d_y),
-    .can_o      (can_x)
+    .can_o      (can_x),
+    .jv_o       (jv_x)
   );
 
   dda_integrator #(.AccWidth(AccWidth), .Impl(Impl), .IsY(1)) u_int_y (
@@ -166,7 +176,8 @@ module dda_core #(
     .ovf_d_o    (ovf_d_y),
     .ovf_x_d_i  (ovf_d_x),
     .ovf_y_d_i  (ovf_d_y),
-    .can_o      (can_y)
+    .can_o      (can_y),
+    .jv_o       (jv_y)
   );
 
   dda_counter #(.CntWidth(CntWidth), .Impl(Impl)) u_cnt_x (
@@ -204,7 +215,9 @@ module dda_core #(
     .active_i   (active_z),
     .active_d_i (active_d_z),
     .ovf_o      (ovf_z),
-    .can_o      (can_z)
+    .can_o      (can_z),
+    .jv_o       (jv_z),
+    .cap_o      (cap_z)
   );
 
   dda_counter #(.CntWidth(CntWidth), .Impl(Impl)) u_cnt_z (
@@ -266,6 +279,12 @@ module dda_core #(
       step_z_q <= step_z_d;
     end
   end
+
+  assign norm_v_x_o   = active_x && !jv_x[AccWidth-1] ? jv_x : {AccWidth{1'b0}};
+  assign norm_v_y_o   = active_y && !jv_y[AccWidth-1] ? jv_y : {AccWidth{1'b0}};
+  assign norm_v_z_o   = active_z && !jv_z[AccWidth-1] ? jv_z : {AccWidth{1'b0}};
+  assign norm_cap_o   = cap_q;
+  assign norm_cap_z_o = cap_z;
 
   assign step_x_o = step_x_q;
   assign step_y_o = step_y_q;

@@ -56,10 +56,12 @@ module dda_integrator #(
   output wire                ovf_d_o,      // ... after this edge (fast only)
   input  wire                ovf_x_d_i,    // both carries after this edge (fast only)
   input  wire                ovf_y_d_i,
-  output wire                can_o         // active and non-zero integrand: can still carry
+  output wire                can_o,        // active and non-zero integrand: can still carry
+  output wire [AccWidth-1:0] jv_o          // the integrand (the pacer's norm operand)
 );
 
   reg [AccWidth-1:0] jv_q       /* verilator public_flat_rd */;
+  assign jv_o = jv_q;
   reg [AccWidth-1:0] jr_q       /* verilator public_flat_rd */;
   reg [AccWidth-1:0] inc_on_x_q /* verilator public_flat_rd */;
   reg [AccWidth-1:0] inc_on_y_q /* verilator public_flat_rd */;

@@ -33,12 +33,16 @@ module dda_linear #(
   input  wire                active_i,     // this axis' counter is non-zero
   input  wire                active_d_i,   // ... after this edge (fast only)
   output wire                ovf_o,        // this axis carries
-  output wire                can_o         // active and non-zero integrand: can still carry
+  output wire                can_o,        // active and non-zero integrand: can still carry
+  output wire [AccWidth-1:0] jv_o,         // the integrand and the capacity (the pacer's
+  output wire [AccWidth-1:0] cap_o         // norm operands)
 );
 
   reg [AccWidth-1:0] jv_q  /* verilator public_flat_rd */;
   reg [AccWidth-1:0] jr_q  /* verilator public_flat_rd */;
   reg [AccWidth-1:0] cap_q /* verilator public_flat_rd */;
+  assign jv_o  = jv_q;
+  assign cap_o = cap_q;
 
   // The adder of the architectural registers (the probe `sum` of the register table).
   wire [AccWidth:0] sum /* verilator public_flat_rd */ = {1'b0, jr_q} + {1'b0, jv_q};

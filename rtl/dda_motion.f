@@ -3,4 +3,6 @@
 // command queue; docs/design.md "Motion block"). $(DDA_RTL) as in rtl/dda_core.f.
 -f $(DDA_RTL)/dda_core.f
 $(DDA_RTL)/dda_stepdir.v
+$(DDA_RTL)/dda_norm.v
+$(DDA_RTL)/dda_pace.v
 $(DDA_RTL)/dda_motion.v

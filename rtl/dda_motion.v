@@ -31,9 +31,13 @@
 // dropped (a pulse already out finishes its steplen), STATUS.aborted is set.
 // Axes (docs/design.md, "Step and direction timing"): each core step goes through a
 // step/dir stage (rtl/dda_stepdir.v) with the axis' four timings; the position counters
-// count the pulses the stages start. Feed: a phase accumulator adds the running entry's
-// feed increment every cycle the core may go on; its carry (or an increment of 0) lets
-// the core iterate; while a stage holds the core the accumulator waits.
+// count the pulses the stages start. Pace: an entry with a cruise speed (its pacing
+// fields, docs/design.md "Pacer") is paced by the pacer (rtl/dda_pace.v, u_pace), which
+// lets the core iterate at a path speed ramping at ACCEL between VMIN and the cruise
+// speed times OVERRIDE, down to rest on a feed hold (CTRL.hold .. CTRL.resume). An entry
+// without (cruise 0) is paced by its feed increment: a phase accumulator adds it every
+// cycle the core may go on; its carry (or an increment of 0) lets the core iterate,
+// unless a feed hold is on; while a stage holds the core the accumulator waits.
 `include "dda_params.vh"
 `include "dda_motion_regs.vh"
 
@@ -94,6 +98,8 @@ module dda_motion #(
   wire commit    = wr_ctrl & wsel[`DDA_MOTION_CTRL_COMMIT_LSB];
   wire abort     = wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB];
   wire clear     = wr_ctrl & wsel[`DDA_MOTION_CTRL_CLEAR_LSB];
+  wire hold_set  = wr_ctrl & wsel[`DDA_MOTION_CTRL_HOLD_LSB];
+  wire hold_clr  = wr_ctrl & wsel[`DDA_MOTION_CTRL_RESUME_LSB];
   localparam [`DDA_MOTION_ADDR_WIDTH:0] EntryEnd = (`DDA_MOTION_ADDR_WIDTH+1)'(`DDA_MOTION_ENTRY_ADDR) + (`DDA_MOTION_ADDR_WIDTH+1)'(4 * Words);
   wire in_entry  = adr >= `DDA_MOTION_ENTRY_ADDR && {1'b0, adr} < EntryEnd;
   wire [`DDA_MOTION_ADDR_WIDTH-1:0] entry_off = adr - `DDA_MOTION_ENTRY_ADDR;
@@ -174,15 +180,29 @@ module dda_motion #(
   localparam integer AxesBit = 32 * `DDA_MOTION_AXES_WORD + `DDA_MOTION_AXES_LSB;
   wire [FW-1:0] entry_feed = entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB +: FW];
   wire [1:0]    entry_axes = entry_q[AxesBit +: 2];
-  wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:AxesBit + 2]};
+  wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:AxesBit + 2],
+                       entry_q[32 * `DDA_MOTION_ENTRY_ROWS * RowWords - 1:32 * Words]};
+  wire [31:0] entry_cruise = entry_q[32 * `DDA_MOTION_PACE_CRUISE_WORD +: 32];
+  wire [31:0] entry_limit  = entry_q[32 * `DDA_MOTION_PACE_LIMIT_WORD +: 32];
+  wire [31:0] entry_exit   = entry_q[32 * `DDA_MOTION_PACE_EXIT_WORD +: 32];
+  wire [31:0] entry_length = entry_q[32 * `DDA_MOTION_PACE_LENGTH_WORD +: 32];
+  wire [31:0] entry_brake  = entry_q[32 * `DDA_MOTION_PACE_BRAKE_EXIT_WORD +: 32];
 
-  // ---- feed: the phase accumulator that paces the core ----
+  // ---- pace: the pacer, or the phase accumulator of the feed increment ----
   reg  [FW-1:0] feed_q /* verilator public_flat_rd */;  // the running entry's increment
   reg  [FW-1:0] acc_q  /* verilator public_flat_rd */;
+  reg           paced_q     /* verilator public_flat_rd */;  // the running entry has a cruise speed
+  reg           feed_hold_q /* verilator public_flat_rd */;
+  reg  [31:0]   accel_q     /* verilator public_flat_rd */;
+  reg  [31:0]   vmin_q      /* verilator public_flat_rd */;
+  reg  [`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0] override_q /* verilator public_flat_rd */;
   wire          hold;                                   // a step/dir stage holds the core
   wire          advance = ce_i & ~hold;
   wire [FW:0]   acc_sum = {1'b0, acc_q} + {1'b0, feed_q};
-  wire          core_ce = advance & (feed_q == '0 | acc_sum[FW]);
+  wire          pace_iterate;
+  wire          core_busy_paced = core_busy & paced_q;
+  wire          core_ce = core_busy_paced ? pace_iterate
+                        : advance & ~feed_hold_q & (feed_q == '0 | acc_sum[FW]);
 
   // ---- the core ----
   dda_core u_core (
@@ -201,9 +221,44 @@ module dda_motion #(
     .busy_o      (core_busy),
     .done_o      (core_done),
     .err_o       (core_err),
-    .iter_o      (core_iter)
+    .iter_o      (core_iter),
+    .norm_v_x_o  (norm_v_x),
+    .norm_v_y_o  (norm_v_y),
+    .norm_v_z_o  (norm_v_z),
+    .norm_cap_o  (norm_cap),
+    .norm_cap_z_o(norm_cap_z)
   );
   wire unused_core = &{1'b0, core_iter};
+
+  // ---- the pacer ----
+  wire [`DDA_ACC_WIDTH-1:0] norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z;
+  wire [47:0] pace_speed;
+  dda_pace u_pace (
+    .clk_i        (clk_i),
+    .rst_ni       (rst_ni & ~abort),
+    .advance_i    (advance),
+    .running_i    (core_busy_paced),
+    .take_i       (take),
+    .cruise_i     (entry_cruise),
+    .limit_i      (entry_limit),
+    .exit_i       (entry_exit),
+    .length_i     (entry_length),
+    .brake_exit_i (entry_brake),
+    .next_queued_i(level_q > {{(LW-1){1'b0}}, take}),
+    .accel_i      (accel_q),
+    .vmin_i       (vmin_q),
+    .override_i   (override_q),
+    .hold_i       (feed_hold_q),
+    .stepped_i    (core_step_x | core_step_y | core_step_z),
+    .v_x_i        (norm_v_x),
+    .v_y_i        (norm_v_y),
+    .v_z_i        (norm_v_z),
+    .cap_i        (norm_cap),
+    .cap_z_i      (norm_cap_z),
+    .iterate_o    (pace_iterate),
+    .speed_o      (pace_speed)
+  );
+  wire at_rest = pace_speed == 48'd0;
 
   // ---- axes: which stage each of the core's axes drives ----
   // axes_q is the running entry's; route_q the one of the core's step outputs, which
@@ -216,13 +271,32 @@ module dda_motion #(
     if (!rst_ni || abort) begin
       feed_q  <= '0;
       acc_q   <= '0;
+      paced_q <= 1'b0;
       axes_q  <= '0;
       route_q <= '0;
     end else begin
       if (take) feed_q <= entry_feed;
-      if (advance) acc_q <= acc_sum[FW-1:0];
+      if (advance & ~feed_hold_q) acc_q <= acc_sum[FW-1:0];
+      if (take) paced_q <= entry_cruise != 32'd0;
       if (take) axes_q <= entry_axes;
       route_q <= axes_q;
+    end
+  end
+  // The pacing settings; a feed hold outlasts an abort (a held machine stays held).
+  localparam [31:0] OverrideMax = `DDA_MOTION_OVERRIDE_MAX;
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      feed_hold_q <= 1'b0;
+      accel_q     <= '0;
+      vmin_q      <= '0;
+      override_q  <= `DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH'(`DDA_MOTION_OVERRIDE_ONE);
+    end else begin
+      feed_hold_q <= hold_set | (feed_hold_q & ~hold_clr);
+      if (wr && adr == `DDA_MOTION_ACCEL_ADDR) accel_q <= wdat;
+      if (wr && adr == `DDA_MOTION_VMIN_ADDR) vmin_q <= wdat;
+      if (wr && adr == `DDA_MOTION_OVERRIDE_ADDR)
+        override_q <= wdat > OverrideMax ? OverrideMax[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0]
+                                         : wdat[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0];
     end
   end
   // Stage j takes the core's axis (j - route) mod 3 (route 3 as 0).
@@ -429,6 +503,8 @@ module dda_motion #(
         rd[`DDA_MOTION_STATUS_ERR_STALL_LSB]    = err_stall_q;
         rd[`DDA_MOTION_STATUS_ABORTED_LSB]      = aborted_q;
         rd[`DDA_MOTION_STATUS_ERR_LANES_LSB]    = err_lanes_q;
+        rd[`DDA_MOTION_STATUS_HOLDING_LSB]      = feed_hold_q & ~at_rest;
+        rd[`DDA_MOTION_STATUS_HELD_LSB]         = feed_hold_q & at_rest;
         rd[`DDA_MOTION_STATUS_LEVEL_LSB+:`DDA_MOTION_STATUS_LEVEL_WIDTH] = level_q;
       end
       `DDA_MOTION_IRQ_STATUS_ADDR: rd[2:0] = irq_status_q;
@@ -465,6 +541,9 @@ module dda_motion #(
         rd[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW]  = dirhold_z_q;
       end
       `DDA_MOTION_POLARITY_ADDR: rd[5:0] = polarity_q;
+      `DDA_MOTION_ACCEL_ADDR:    rd = accel_q;
+      `DDA_MOTION_VMIN_ADDR:     rd = vmin_q;
+      `DDA_MOTION_OVERRIDE_ADDR: rd[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0] = override_q;
       default: rd = 32'd0;
     endcase
   end

@@ -17,9 +17,7 @@
 // the next one. A start while busy starts again; the operands must hold until E + 2 QW + 1.
 `include "dda_params.vh"
 
-// Instantiated by the pacer (rtl/dda_pace.v), which is not yet in the block: a top of its
-// own beside dda_motion when rtl/*.v is linted together.
-/* verilator lint_off MULTITOP */
+// Instantiated by the pacer (rtl/dda_pace.v).
 module dda_norm #(
   parameter integer AW = `DDA_ACC_WIDTH,  // the integrands' and capacities' width
   parameter integer NF = 20   // fraction bits of q and d
@@ -124,4 +122,3 @@ module dda_norm #(
   assign d_o    = d_q;
 
 endmodule
-/* verilator lint_on MULTITOP */

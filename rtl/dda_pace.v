@@ -19,9 +19,7 @@
 // up from above vmin and takes the new v off on one down to above vmin.
 `include "dda_params.vh"
 
-// Not yet instantiated in the block: a top of its own beside dda_motion when rtl/*.v is
-// linted together.
-/* verilator lint_off MULTITOP */
+// Instantiated by the motion block (rtl/dda_motion.v, u_pace).
 module dda_pace #(
   parameter integer AW = `DDA_ACC_WIDTH,  // the integrands' and capacities' width
   parameter integer NF = 20,    // kNormFrac: fraction bits of d
@@ -199,4 +197,3 @@ module dda_pace #(
   end
 
 endmodule
-/* verilator lint_on MULTITOP */

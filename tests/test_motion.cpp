@@ -46,7 +46,7 @@ TEST_CASE("motion_map: a changed field drifts from every checked-in file, an ove
           "[motion][default-widths]") {
   Map m = map();
   for (auto& f : m.fields) {
-    if (f.reg == "STATUS" && f.name == "err") f.lsb = 9;  // moved
+    if (f.reg == "STATUS" && f.name == "err") f.lsb = 12;  // moved (to a free bit)
   }
   CHECK_NOTHROW(check(m));
   CHECK(slurp("rtl/dda_motion_regs.vh") != verilog_header(m));
@@ -310,8 +310,10 @@ TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and over
     CHECK(st.arcs == 50);
     CHECK(st.position_checks > 0);
     CHECK(st.piece_checks > 0);
-    CHECK(st.spatial > 0);   // the third axis in the mix,
-    CHECK(st.pulses_z > 0);  // its pulses through its stage,
-    CHECK(st.turned > 0);    // arcs turned onto another plane by the entry's axes
+    CHECK(st.spatial > 0);       // the third axis in the mix,
+    CHECK(st.pulses_z > 0);      // its pulses through its stage,
+    CHECK(st.turned > 0);        // arcs turned onto another plane by the entry's axes
+    CHECK(st.paced_pieces > 0);  // pieces paced by the pacer, with a hold and an override change
+    CHECK(st.holds > 0);
   }
 }

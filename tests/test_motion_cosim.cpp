@@ -28,7 +28,8 @@ TEST_CASE("motion cosim: 60 random arcs queued on classic cycles, SystemC model 
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
   CHECK(st.piece_checks > 0);
-  CHECK(st.pulses_z > 0);  // the third axis' stage ran
+  CHECK(st.pulses_z > 0);      // the third axis' stage ran
+  CHECK(st.paced_pieces > 0);  // the pacer ran, with a hold and an override change
 }
 
 TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC model and RTL equal every cycle",
@@ -40,5 +41,6 @@ TEST_CASE("motion cosim: 60 random arcs queued on pipelined cycles, SystemC mode
   CHECK(st.arcs == 60);
   CHECK(st.position_checks > 0);
   CHECK(st.piece_checks > 0);
-  CHECK(st.pulses_z > 0);  // the third axis' stage ran
+  CHECK(st.pulses_z > 0);      // the third axis' stage ran
+  CHECK(st.paced_pieces > 0);  // the pacer ran, with a hold and an override change
 }

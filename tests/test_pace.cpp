@@ -62,14 +62,12 @@ class Lockstep {
     t.override_i = in.set.override_;
     t.hold_i = in.set.hold;
     t.stepped_i = stepped;
-    if (in.cmd) {
-      const NormOperands o = norm_operands(*in.cmd, in.regs);
-      t.v_x_i = o.v_x;
-      t.v_y_i = o.v_y;
-      t.v_z_i = o.v_z;
-      t.cap_i = o.cap;
-      t.cap_z_i = o.cap_z;
-    }
+    const NormOperands& o = in.norm;
+    t.v_x_i = o.v_x;
+    t.v_y_i = o.v_y;
+    t.v_z_i = o.v_z;
+    t.cap_i = o.cap;
+    t.cap_z_i = o.cap_z;
     t.eval();
     const bool it = p.iterate(in);
     if (bool(t.iterate_o) != it) FAIL("clock " << clocks_ << ": iterate_o " << int(t.iterate_o) << ", model " << it);

@@ -87,14 +87,12 @@ struct Bench {
     t.override_i = in.set.override_, override_.write(in.set.override_);
     t.hold_i = in.set.hold, hold.write(in.set.hold);
     t.stepped_i = st, stepped.write(st);
-    if (in.cmd) {
-      const NormOperands o = norm_operands(*in.cmd, in.regs);
-      t.v_x_i = o.v_x, vx.write(o.v_x);
-      t.v_y_i = o.v_y, vy.write(o.v_y);
-      t.v_z_i = o.v_z, vz.write(o.v_z);
-      t.cap_i = o.cap, cap.write(o.cap);
-      t.cap_z_i = o.cap_z, cap_z.write(o.cap_z);
-    }
+    const NormOperands& o = in.norm;
+    t.v_x_i = o.v_x, vx.write(o.v_x);
+    t.v_y_i = o.v_y, vy.write(o.v_y);
+    t.v_z_i = o.v_z, vz.write(o.v_z);
+    t.cap_i = o.cap, cap.write(o.cap);
+    t.cap_z_i = o.cap_z, cap_z.write(o.cap_z);
   }
   void edge() {
     rtl->clk_i = 0;

@@ -225,7 +225,9 @@ inline constexpr std::array<Reg, 32> kFastRegisters{{
 
 // The core's ports (rtl/dda_core.v), in the order of the vector sets' expected words
 // for the outputs; `group` as for registers (clk_i and cmd_i are not in the vectors).
-enum class PortDir { In, Out };
+// Norm: an output the motion block's pacer reads (functions of the registers, which the
+// scoreboards compare; not in the vector sets).
+enum class PortDir { In, Out, Norm };
 struct Port {
   std::string_view name;
   int width;
@@ -233,7 +235,7 @@ struct Port {
   std::string_view meaning;
   std::string_view group = "";
 };
-inline constexpr std::array<Port, 16> kPorts{{
+inline constexpr std::array<Port, 21> kPorts{{
     {"clk_i", 1, PortDir::In, "clock, rising edge", "Command"},
     {"rst_ni", 1, PortDir::In, "reset, synchronous, active low", "Command"},
     {"cmd_valid_i", 1, PortDir::In, "a command is offered", "Command"},
@@ -250,6 +252,11 @@ inline constexpr std::array<Port, 16> kPorts{{
     {"done_o", 1, PortDir::Out, "a command finished on the edge", "Control"},
     {"err_o", 1, PortDir::Out, "a command stalled on the edge", "Control"},
     {"iter_o", 1, PortDir::Out, "an iteration happened on the edge", "Control"},
+    {"norm_v_x_o", kAccWidth, PortDir::Norm, "X integrand while X runs and it is positive, else 0"},
+    {"norm_v_y_o", kAccWidth, PortDir::Norm, "Y integrand while Y runs and it is positive, else 0"},
+    {"norm_v_z_o", kAccWidth, PortDir::Norm, "Z integrand while Z runs and it is positive, else 0"},
+    {"norm_cap_o", kAccWidth, PortDir::Norm, "the plane's capacity (cap_q)"},
+    {"norm_cap_z_o", kAccWidth, PortDir::Norm, "Z's capacity (u_lin_z.cap_q)"},
 }};
 constexpr std::size_t port(std::string_view name) { return index_of(kPorts, name); }
 inline constexpr std::size_t kNumOutputs = count_if(kPorts, [](const Port& p) { return p.dir == PortDir::Out; });

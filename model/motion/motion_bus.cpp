@@ -96,9 +96,9 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
-void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes) {
+void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace) {
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
-  const std::vector<std::uint32_t> w = entry_words(c, feed, axes);
+  const std::vector<std::uint32_t> w = entry_words(c, feed, axes, pace);
   std::vector<std::size_t> order(w.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
@@ -134,6 +134,14 @@ void MotionDriver::set_timings(char axis, const StageTimings& t) {
 }
 
 void MotionDriver::set_polarity(std::uint32_t bits) { m_.write(reg_offset("POLARITY"), bits); }
+
+void MotionDriver::set_pacing(std::uint32_t accel, std::uint32_t vmin) {
+  m_.write(reg_offset("ACCEL"), accel);
+  m_.write(reg_offset("VMIN"), vmin);
+}
+void MotionDriver::set_override(std::uint32_t value) { m_.write(reg_offset("OVERRIDE"), value); }
+void MotionDriver::hold() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "hold")); }
+void MotionDriver::resume() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "resume")); }
 
 Point MotionDriver::position() {
   const auto x = std::int32_t(m_.read(reg_offset("POS_X")));

@@ -111,8 +111,9 @@ std::uint32_t field_bit(std::string_view reg, std::string_view field);
 class MotionDriver {
  public:
   MotionDriver(WishboneMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
-  // feed: the entry's feed increment (0: the core's full rate).
-  void queue(const Command& c, std::uint32_t feed = 0, int axes = 0);
+  // feed: the entry's feed increment (0: the core's full rate); pace: its pacing fields
+  // (a cruise speed of 0: paced by the feed increment).
+  void queue(const Command& c, std::uint32_t feed = 0, int axes = 0, const PaceEntry& pace = {});
   // Until the queue is empty and the core idle; throws GuardError after max_polls.
   void drain(int max_polls = 1000000);
   void preset(Point p);
@@ -120,6 +121,11 @@ class MotionDriver {
   // An axis' step/dir timings ('x' or 'y'), written to STEP_* and DIR_*.
   void set_timings(char axis, const StageTimings& t);
   void set_polarity(std::uint32_t bits);
+  // The pacer's settings: ACCEL, VMIN; OVERRIDE; a feed hold (CTRL.hold) and its end.
+  void set_pacing(std::uint32_t accel, std::uint32_t vmin);
+  void set_override(std::uint32_t value);
+  void hold();
+  void resume();
 
  private:
   WishboneMaster& m_;

@@ -2,6 +2,7 @@
 #include "motion/motion_map.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cctype>
 
@@ -34,9 +35,10 @@ std::string_view access_name(Access a) {
 std::string constants_comment() {
   return fmt::format(
       "ID 0x{:08X}, version {}.{}, entry {} words ({} command bits, {}-bit axes at bit {} of word {}, {} reserved, a "
-      "{}-bit feed increment at bit {} of word {}), AccWidth {}, CntWidth {}",
+      "{}-bit feed increment at bit {} of word {}, the pacing fields {} in words {}..{}), AccWidth {}, CntWidth {}",
       kId, kVersionMajor, kVersionMinor, kEntryWords, hw::kCmdWidth, kAxesWidth, kAxesLsb, kAxesWord,
-      kEntrySpareBits - kFeedWidth - kAxesWidth, kFeedWidth, kFeedLsb, kFeedWord, hw::kAccWidth, hw::kCntWidth);
+      kEntrySpareBits - kFeedWidth - kAxesWidth, kFeedWidth, kFeedLsb, kFeedWord, fmt::join(kPaceFields, ", "),
+      kPaceWord, kPaceWord + kPaceWords - 1, hw::kAccWidth, hw::kCntWidth);
 }
 
 }  // namespace
@@ -121,6 +123,13 @@ std::string c_header(const Map& m) {
       "                                  (i + AXES) mod 3 of X, Y, Z */\n#define DDA_MOTION_AXES_LSB {}u\n"
       "#define DDA_MOTION_AXES_MASK 0x{:08X}u\n",
       kAxesWord, kAxesLsb, ((std::uint64_t{1} << kAxesWidth) - 1) << kAxesLsb);
+  for (std::size_t i = 0; i < kPaceFields.size(); ++i) {
+    o += fmt::format("#define DDA_MOTION_PACE_{}_WORD {}u  /* the entry word holding the pacing field {} */\n",
+                     upper(kPaceFields[i]), kPaceWord + int(i), kPaceFields[i]);
+  }
+  o += fmt::format(
+      "#define DDA_MOTION_OVERRIDE_ONE {}u  /* OVERRIDE of 100% */\n#define DDA_MOTION_OVERRIDE_MAX {}u\n\n",
+      kOverrideOne, 2 * kOverrideOne);
   for (const auto& r : m.regs) {
     o += fmt::format("#define DDA_MOTION_{}_OFFSET 0x{:02X}u  /* {}: {} */\n", upper(r.name), r.offset,
                      access_name(r.access), r.meaning);
@@ -156,6 +165,11 @@ std::string verilog_header(const Map& m) {
   o +=
       fmt::format("`define DDA_MOTION_AXES_WORD {}\n`define DDA_MOTION_AXES_LSB {}\n`define DDA_MOTION_AXES_WIDTH {}\n",
                   kAxesWord, kAxesLsb, kAxesWidth);
+  for (std::size_t i = 0; i < kPaceFields.size(); ++i) {
+    o += fmt::format("`define DDA_MOTION_PACE_{}_WORD {}\n", upper(kPaceFields[i]), kPaceWord + int(i));
+  }
+  o += fmt::format("`define DDA_MOTION_OVERRIDE_ONE {}\n`define DDA_MOTION_OVERRIDE_MAX {}\n", kOverrideOne,
+                   2 * kOverrideOne);
   o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n\n", kTimingWidth);
   for (const auto& r : m.regs) {
     o += fmt::format("`define DDA_MOTION_{}_ADDR {}'h{:02X}  // {}\n", upper(r.name), kAddrWidth, r.offset,

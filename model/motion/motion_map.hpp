@@ -7,11 +7,12 @@
 // motion-verilog`).
 //
 // Wishbone B4, 32-bit data, byte addresses (word aligned). A command entry is
-// kEntryWords words: word k holds bits 32k .. 32k+31 of the core's command word
-// (hw::kCmdFields, LSB first) and the entry's spare bits above it (kEntrySpareBits): the
-// kAxesWidth bits right above the command are the entry's axes (which of the block's
-// axes the core's drive), the last word its feed increment, the bits between them
-// reserved (written as 0).
+// kEntryWords words: word k < kCmdEntryWords holds bits 32k .. 32k+31 of the core's
+// command word (hw::kCmdFields, LSB first) and the entry's spare bits above it
+// (kEntrySpareBits): the kAxesWidth bits right above the command are the entry's axes
+// (which of the block's axes the core's drive), word kCmdEntryWords - 1 its feed
+// increment, the bits between them reserved (written as 0); the last kPaceWords words
+// its pacing fields (kPaceFields).
 #pragma once
 
 #include <array>
@@ -21,16 +22,24 @@
 #include <vector>
 
 #include "datapath/hw_params.hpp"
+#include "motion/pace_params.hpp"
 
 namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
-inline constexpr int kVersionMajor = 3;
+inline constexpr int kVersionMajor = 4;
 inline constexpr int kVersionMinor = 0;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
-inline constexpr int kEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
-inline constexpr int kEntrySpareBits = 32 * kEntryWords - hw::kCmdWidth;
+inline constexpr int kCmdEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
+inline constexpr int kEntrySpareBits = 32 * kCmdEntryWords - hw::kCmdWidth;
+// The pacing fields of an entry (motion::PaceEntry, docs/design.md "Pacer"), one word
+// each from word kPaceWord on, in this order. A cruise speed of 0 leaves the piece to
+// the feed increment (the pacer idles while it runs).
+inline constexpr std::array<std::string_view, 5> kPaceFields{{"cruise", "limit", "exit", "length", "brake_exit"}};
+inline constexpr int kPaceWords = int(kPaceFields.size());
+inline constexpr int kPaceWord = kCmdEntryWords;
+inline constexpr int kEntryWords = kCmdEntryWords + kPaceWords;
 inline constexpr int kAddrWidth = 8;          // byte address bits the block decodes
 inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
 inline constexpr int kLevelWidth = 8;         // queue level: 0 .. 128 entries
@@ -46,7 +55,7 @@ inline constexpr int kRowWords = (kEntryWords + kEntryRows - 1) / kEntryRows;
 // on and lets the core iterate on its carry: feed / 2^kFeedWidth iterations per clock
 // (0: one per clock, the core's full rate), a rate resolved to 2^-32 of the clock.
 inline constexpr int kFeedWidth = 32;
-inline constexpr int kFeedWord = kEntryWords - 1;
+inline constexpr int kFeedWord = kCmdEntryWords - 1;
 inline constexpr int kFeedLsb = 32 - kFeedWidth;
 // The entry's axes: bits kAxesLsb .. kAxesLsb + kAxesWidth - 1 of entry word kAxesWord,
 // right above the command. Value r: the core's axis i (x, y, z: a piece's plane and its
@@ -80,7 +89,7 @@ struct Register {
   Access access;
   std::string_view meaning;
 };
-inline constexpr std::array<Register, 22> kRegisters{{
+inline constexpr std::array<Register, 25> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
     {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
@@ -102,6 +111,9 @@ inline constexpr std::array<Register, 22> kRegisters{{
     {"POS_Z", 0x48, Access::RW, "Z position in steps, signed; counts the steps sent out; a write presets it"},
     {"STEP_Z", 0x4C, Access::RW, "Z step/dir stage: step pulse length and space (clock cycles)"},
     {"DIR_Z", 0x50, Access::RW, "Z step/dir stage: direction setup and hold (clock cycles)"},
+    {"ACCEL", 0x54, Access::RW, "the pacer's tangential acceleration"},
+    {"VMIN", 0x58, Access::RW, "the pacer's minimum speed"},
+    {"OVERRIDE", 0x5C, Access::RW, "feed override of the paced pieces (reset: 100%)"},
     {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
 }};
 
@@ -112,7 +124,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 53> kFields{{
+inline constexpr std::array<Field, 60> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -126,6 +138,8 @@ inline constexpr std::array<Field, 53> kFields{{
     {"CTRL", "abort", 1, 1,
      "stop the core on this edge, flush the queue, the entry being written and the waiting steps"},
     {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
+    {"CTRL", "hold", 3, 1, "feed hold: paced pieces ramp to rest at ACCEL (others stop), every register kept"},
+    {"CTRL", "resume", 4, 1, "end a feed hold: the speed ramps back up at ACCEL (hold and resume together: hold)"},
     {"STATUS", "busy", 0, 1, "the core runs a command, or a step is on its way to the pins or a pulse is out"},
     {"STATUS", "empty", 1, 1, "the queue is empty"},
     {"STATUS", "full", 2, 1, "the queue is full"},
@@ -135,6 +149,8 @@ inline constexpr std::array<Field, 53> kFields{{
     {"STATUS", "err_stall", 6, 1, "cause: the core stopped a command that could not go on (err_o)"},
     {"STATUS", "aborted", 7, 1, "an abort happened since the last clear"},
     {"STATUS", "err_lanes", 8, 1, "cause: an entry word written with other byte lanes than all four (not written)"},
+    {"STATUS", "holding", 9, 1, "a feed hold is on and the commanded speed is not 0 yet"},
+    {"STATUS", "held", 10, 1, "a feed hold is on and the commanded speed is 0: the core waits"},
     {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
     {"IRQ_STATUS", "done", 0, 1, "a command finished"},
     {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
@@ -169,8 +185,11 @@ inline constexpr std::array<Field, 53> kFields{{
     {"STEP_Z", "stepspace", 16, kTimingWidth, "as STEP_X.stepspace"},
     {"DIR_Z", "dirsetup", 0, kTimingWidth, "as DIR_X.dirsetup"},
     {"DIR_Z", "dirhold", 16, kTimingWidth, "as DIR_X.dirhold"},
+    {"ACCEL", "accel", 0, kAccelWidth, "steps per clock per clock x 2^-48 (0: no ramp, the speed jumps)"},
+    {"VMIN", "vmin", 0, 32, "steps per clock x 2^-32: no paced piece runs slower, the last one ends at it"},
+    {"OVERRIDE", "override", 0, kOverrideBits, "x 1/256 (256: 100%); a write above 512 (200%) takes 512"},
     {"ENTRY", "data", 0, 32,
-     "entry word k: command bits 32k .. 32k+31; above the command the axes, the last word the feed"},
+     "entry word k: command bits 32k .. 32k+31; above the command the axes, then the feed, the pacing fields"},
 }};
 // A register's offset and a field by name (a name not in the map does not compile where
 // the result is a constant expression; at run time it throws).

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "motion/motion_model.hpp"
+#include "motion/motion_wires.hpp"
 
 #include "datapath/errors.hpp"
 #include "datapath/hw_command.hpp"
@@ -63,79 +64,23 @@ int width_bits(Width w, int depth_log2) {
       return depth_log2;
     case Width::Entry:
       return kEntryWords;
+    case Width::Override:
+      return kOverrideBits;
+    case Width::Speed:
+      return kRampFrac;
+    case Width::Phase:
+      return kPhaseBits;
+    case Width::Distance:
+      return kDistWidth;
+    case Width::NormBusy:
+      return kNormBusyWidth;
+    case Width::OverrideCount:
+      return kOverrideCountWidth;
   }
   return 0;
 }
 
-std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
-  const auto reg = [&](std::string_view name, bool is_signed = false) {
-    return hw::WaveSignal{std::string(name), width_bits(kBlockRegs[breg(name)].width, depth_log2), is_signed};
-  };
-  std::vector<hw::WaveGroup> g;
-  g.push_back({"Bus",
-               {{"wb_cyc_i", 1},
-                {"wb_stb_i", 1},
-                {"wb_we_i", 1},
-                {"wb_adr_i", kAddrWidth},
-                {"wb_dat_i", 32},
-                {"wb_ack_o", 1},
-                {"wb_stall_o", 1},
-                {"wb_dat_o", 32}}});
-  g.push_back({"Queue", {reg("head_q"), reg("tail_q"), reg("level_q"), reg("mask_q"), reg("fetch_q")}});
-  g.push_back({"Status",
-               {reg("err_q"),
-                reg("err_overflow_q"),
-                reg("err_partial_q"),
-                reg("err_lanes_q"),
-                reg("err_stall_q"),
-                reg("aborted_q"),
-                reg("irq_status_q"),
-                reg("irq_enable_q"),
-                reg("irq_level_q"),
-                {"irq_o", 1}}});
-  g.push_back({"Axes",
-               {{"step_x_o", 1},
-                {"dir_x_o", 1},
-                {"step_y_o", 1},
-                {"dir_y_o", 1},
-                {"step_z_o", 1},
-                {"dir_z_o", 1},
-                {"busy_o", 1},
-                reg("pos_x_q", true),
-                reg("pos_y_q", true),
-                reg("pos_z_q", true),
-                reg("done_count_q"),
-                reg("done_wait_q"),
-                reg("err_count_q")}});
-  g.push_back({"Step/dir and feed",
-               {reg("u_sx.step_q"),
-                reg("u_sx.dir_q"),
-                reg("u_sx.pend_q"),
-                reg("u_sx.tf_q"),
-                reg("u_sy.step_q"),
-                reg("u_sy.dir_q"),
-                reg("u_sy.pend_q"),
-                reg("u_sy.tf_q"),
-                reg("u_sz.step_q"),
-                reg("u_sz.dir_q"),
-                reg("u_sz.pend_q"),
-                reg("u_sz.tf_q"),
-                reg("feed_q"),
-                reg("acc_q"),
-                reg("axes_q"),
-                reg("route_q"),
-                {"core_ce", 1}}});
-  hw::WaveGroup core{"Core", {}};
-  for (const auto& r : hw::kSignals) {
-    if (r.kind == hw::SigKind::Reg && (r.group == "Control" || r.group == "Counters")) {
-      core.signals.push_back({"u_core." + std::string(r.name), r.width, r.show_signed});
-    }
-  }
-  g.push_back(std::move(core));
-  return hw::gtkw_file(g, "the DDA motion block", file, top);
-}
-
-std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed, int axes) {
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace) {
   if (std::uint64_t{feed} >> kFeedWidth)
     throw GuardError("motion: a feed increment of more than " + std::to_string(kFeedWidth) + " bits");
   if (axes < 0 || axes > 2) throw GuardError("motion: axes " + std::to_string(axes) + " is not 0, 1 or 2");
@@ -143,7 +88,14 @@ std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed, int
   w.resize(kEntryWords, 0);
   w[kAxesWord] |= std::uint32_t(axes) << kAxesLsb;
   w[kFeedWord] |= feed << kFeedLsb;
+  const std::array<std::uint32_t, kPaceWords> p{pace.cruise, pace.limit, pace.exit, pace.length, pace.brake_exit};
+  for (int i = 0; i < kPaceWords; ++i) w[std::size_t(kPaceWord + i)] = p[std::size_t(i)];
   return w;
+}
+
+PaceEntry entry_pace(const std::vector<std::uint32_t>& words) {
+  const auto f = [&](int i) { return words[std::size_t(kPaceWord + i)]; };
+  return PaceEntry{f(0), f(1), f(2), f(3), f(4)};
 }
 
 CmdFields entry_fields(const std::vector<std::uint32_t>& words) {
@@ -228,7 +180,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
     return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) | bit("err", get("err_q")) |
            bit("err_overflow", get("err_overflow_q")) | bit("err_partial", get("err_partial_q")) |
            bit("err_stall", get("err_stall_q")) | bit("aborted", get("aborted_q")) |
-           bit("err_lanes", get("err_lanes_q")) |
+           bit("err_lanes", get("err_lanes_q")) | read_pace(adr) |
            std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
   }
   if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
@@ -241,6 +193,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("POS_Z")) return std::uint32_t(get("pos_z_q"));
   if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
   if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
+  if (adr == reg_offset("ACCEL") || adr == reg_offset("VMIN") || adr == reg_offset("OVERRIDE")) return read_pace(adr);
   std::uint32_t v = 0;
   for (const char axis : kAxes) {
     for (const auto& t : kTimingFields) {
@@ -268,27 +221,6 @@ BlockOutputs MotionModel::outputs() const {
   o.irq = (get("irq_status_q") & get("irq_enable_q")) != 0;
   return o;
 }
-
-// The combinational side of one edge (the RTL's wires): everything the registers load,
-// decoded from the inputs and the registers before the edge, before anything is written.
-struct MotionModel::Wires {
-  // The bus request.
-  std::uint32_t adr = 0, word = 0;
-  // The write data in the byte lanes selected, and merged with the addressed register's
-  // value in the others.
-  std::uint32_t wsel = 0, wdat = 0;
-  bool req = false, wr = false, commit = false, abort = false, clear = false, err_lanes = false;
-  // The queue.
-  std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, entry_axes = 0, fetch_d = 0;
-  bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;
-  bool cmd_valid = false, take = false;
-  // The core's registered outputs, the stages and the feed.
-  bool core_done = false, core_err = false, running = false, advance = false, core_ce = false;
-  StageEdge ex, ey, ez;
-  std::uint64_t acc_sum = 0;
-  // The read data of a bus read in this cycle.
-  std::uint32_t rd = 0;
-};
 
 MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
   Wires w;
@@ -350,7 +282,10 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.advance = ce && !hold;
   const std::uint64_t feed = get("feed_q");
   w.acc_sum = get("acc_q") + feed;
-  w.core_ce = w.advance && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
+  w.stepped = step[0] || step[1] || step[2];
+  pace_wires(false, w);
+  w.core_ce = w.pace.running ? w.pace_iterate
+                             : w.advance && !get("feed_hold_q") && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
 
   // The head entry is whole once both its rows are read (fetch_q 2); the RAM reads row 0
   // again after the head moves, while the queue is empty and after reset.
@@ -362,6 +297,7 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.tail = get("tail_q");
   w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
   w.entry_axes = (mem_[w.head][kAxesWord] >> kAxesLsb) & mask_of(kAxesWidth);
+  pace_wires(true, w);
 }
 
 void MotionModel::step_core(bool rst_n, const Wires& w) {
@@ -448,11 +384,13 @@ void MotionModel::load_feed(const Wires& w) {
   if (w.abort) {
     reg("feed_q") = 0;
     reg("acc_q") = 0;
+    reg("paced_q") = 0;
     reg("axes_q") = 0;
     reg("route_q") = 0;
   } else {
     if (w.take) reg("feed_q") = w.entry_feed;
-    if (w.advance) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+    if (w.advance && !get("feed_hold_q")) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+    if (w.take) reg("paced_q") = w.pace.entry.cruise != 0;
     reg("route_q") = get("axes_q");
     if (w.take) reg("axes_q") = w.entry_axes;
   }
@@ -483,6 +421,8 @@ void MotionModel::edge(const BlockInputs& in) {
   rise_x_ = rise_y_ = rise_z_ = 0;
   if (!in.rst_n) {
     r_ = BlockRegs{};
+    reg("override_q") = kOverrideOne;
+    pacer_ = Pacer{};
     for (const char axis : kAxes) set_stage(axis, stage_reset());
     return;
   }
@@ -490,7 +430,9 @@ void MotionModel::edge(const BlockInputs& in) {
   load_bus(in.bus, w);
   load_queue(w);
   load_status(w);
+  load_pace(w);
   load_feed(w);
+  load_pace_settings(w);
   set_stage('x', w.ex.next);
   set_stage('y', w.ey.next);
   set_stage('z', w.ez.next);

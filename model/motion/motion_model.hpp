@@ -14,6 +14,7 @@
 
 #include "datapath/core_model.hpp"
 #include "motion/motion_map.hpp"
+#include "motion/pacer.hpp"
 
 namespace dda::motion {
 
@@ -52,44 +53,110 @@ struct BlockOutputs {
 // The block's own registers by their RTL names (below dda_motion), each masked to its
 // width; the harness reads them by these names (public_flat_rd) and compares them with
 // the model's after every edge, beside the core's register table.
-enum class Width { One, Two, Three, Six, Word, Level, Index, Entry, Timing, Feed };
+enum class Width {
+  One,
+  Two,
+  Three,
+  Six,
+  Word,
+  Level,
+  Index,
+  Entry,
+  Timing,
+  Feed,
+  Override,
+  Speed,     // the pacer's v and cruise speed (kRampFrac bits)
+  Phase,     // kPhaseBits
+  Distance,  // kDistWidth
+  NormBusy,
+  OverrideCount
+};
 struct BlockReg {
   std::string_view name;
   Width width;
 };
 // Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
-// rtl/dda_stepdir.v).
-inline constexpr std::array<BlockReg, 60> kBlockRegs{{
-    {"ack_q", Width::One},           {"dat_q", Width::Word},
-    {"head_q", Width::Index},        {"tail_q", Width::Index},
-    {"level_q", Width::Level},       {"mask_q", Width::Entry},
-    {"fetch_q", Width::Two},         {"err_q", Width::One},
-    {"err_overflow_q", Width::One},  {"err_partial_q", Width::One},
-    {"err_stall_q", Width::One},     {"aborted_q", Width::One},
-    {"irq_status_q", Width::Three},  {"irq_enable_q", Width::Three},
-    {"irq_level_q", Width::Level},   {"done_count_q", Width::Word},
-    {"done_wait_q", Width::One},     {"err_count_q", Width::Word},
-    {"pos_x_q", Width::Word},        {"pos_y_q", Width::Word},
-    {"feed_q", Width::Feed},         {"acc_q", Width::Feed},
-    {"steplen_x_q", Width::Timing},  {"stepspace_x_q", Width::Timing},
-    {"dirsetup_x_q", Width::Timing}, {"dirhold_x_q", Width::Timing},
-    {"steplen_y_q", Width::Timing},  {"stepspace_y_q", Width::Timing},
-    {"dirsetup_y_q", Width::Timing}, {"dirhold_y_q", Width::Timing},
-    {"polarity_q", Width::Six},      {"u_sx.step_q", Width::One},
-    {"u_sx.dir_q", Width::One},      {"u_sx.pend_q", Width::One},
-    {"u_sx.pdir_q", Width::One},     {"u_sx.tf_q", Width::Timing},
-    {"u_sx.ts_q", Width::Timing},    {"u_sx.tag_q", Width::One},
-    {"u_sy.tag_q", Width::One},      {"u_sy.step_q", Width::One},
-    {"u_sy.dir_q", Width::One},      {"u_sy.pend_q", Width::One},
-    {"u_sy.pdir_q", Width::One},     {"u_sy.tf_q", Width::Timing},
-    {"u_sy.ts_q", Width::Timing},    {"pos_z_q", Width::Word},
-    {"steplen_z_q", Width::Timing},  {"stepspace_z_q", Width::Timing},
-    {"dirsetup_z_q", Width::Timing}, {"dirhold_z_q", Width::Timing},
-    {"u_sz.step_q", Width::One},     {"u_sz.dir_q", Width::One},
-    {"u_sz.pend_q", Width::One},     {"u_sz.pdir_q", Width::One},
-    {"u_sz.tf_q", Width::Timing},    {"u_sz.ts_q", Width::Timing},
-    {"u_sz.tag_q", Width::One},      {"axes_q", Width::Two},
-    {"route_q", Width::Two},         {"err_lanes_q", Width::One},
+// rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
+// model motion::Pacer holds).
+inline constexpr std::array<BlockReg, 78> kBlockRegs{{
+    {"ack_q", Width::One},
+    {"dat_q", Width::Word},
+    {"head_q", Width::Index},
+    {"tail_q", Width::Index},
+    {"level_q", Width::Level},
+    {"mask_q", Width::Entry},
+    {"fetch_q", Width::Two},
+    {"err_q", Width::One},
+    {"err_overflow_q", Width::One},
+    {"err_partial_q", Width::One},
+    {"err_stall_q", Width::One},
+    {"aborted_q", Width::One},
+    {"irq_status_q", Width::Three},
+    {"irq_enable_q", Width::Three},
+    {"irq_level_q", Width::Level},
+    {"done_count_q", Width::Word},
+    {"done_wait_q", Width::One},
+    {"err_count_q", Width::Word},
+    {"pos_x_q", Width::Word},
+    {"pos_y_q", Width::Word},
+    {"feed_q", Width::Feed},
+    {"acc_q", Width::Feed},
+    {"steplen_x_q", Width::Timing},
+    {"stepspace_x_q", Width::Timing},
+    {"dirsetup_x_q", Width::Timing},
+    {"dirhold_x_q", Width::Timing},
+    {"steplen_y_q", Width::Timing},
+    {"stepspace_y_q", Width::Timing},
+    {"dirsetup_y_q", Width::Timing},
+    {"dirhold_y_q", Width::Timing},
+    {"polarity_q", Width::Six},
+    {"u_sx.step_q", Width::One},
+    {"u_sx.dir_q", Width::One},
+    {"u_sx.pend_q", Width::One},
+    {"u_sx.pdir_q", Width::One},
+    {"u_sx.tf_q", Width::Timing},
+    {"u_sx.ts_q", Width::Timing},
+    {"u_sx.tag_q", Width::One},
+    {"u_sy.tag_q", Width::One},
+    {"u_sy.step_q", Width::One},
+    {"u_sy.dir_q", Width::One},
+    {"u_sy.pend_q", Width::One},
+    {"u_sy.pdir_q", Width::One},
+    {"u_sy.tf_q", Width::Timing},
+    {"u_sy.ts_q", Width::Timing},
+    {"pos_z_q", Width::Word},
+    {"steplen_z_q", Width::Timing},
+    {"stepspace_z_q", Width::Timing},
+    {"dirsetup_z_q", Width::Timing},
+    {"dirhold_z_q", Width::Timing},
+    {"u_sz.step_q", Width::One},
+    {"u_sz.dir_q", Width::One},
+    {"u_sz.pend_q", Width::One},
+    {"u_sz.pdir_q", Width::One},
+    {"u_sz.tf_q", Width::Timing},
+    {"u_sz.ts_q", Width::Timing},
+    {"u_sz.tag_q", Width::One},
+    {"axes_q", Width::Two},
+    {"route_q", Width::Two},
+    {"err_lanes_q", Width::One},
+    {"paced_q", Width::One},
+    {"feed_hold_q", Width::One},
+    {"accel_q", Width::Word},
+    {"vmin_q", Width::Word},
+    {"override_q", Width::Override},
+    {"u_pace.v_q", Width::Speed},
+    {"u_pace.ph_q", Width::Phase},
+    {"u_pace.s_q", Width::Distance},
+    {"u_pace.rem_q", Width::Distance},
+    {"u_pace.cruise_q", Width::Word},
+    {"u_pace.limit_q", Width::Word},
+    {"u_pace.exit_q", Width::Word},
+    {"u_pace.brake_q", Width::Word},
+    {"u_pace.busy_q", Width::NormBusy},
+    {"u_pace.pend_q", Width::One},
+    {"u_pace.ovr_q", Width::Override},
+    {"u_pace.mcnt_q", Width::OverrideCount},
+    {"u_pace.eff_q", Width::Speed},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -160,9 +227,16 @@ class MotionModel {
   void load_positions(const Wires& w);
   void load_feed(const Wires& w);
   void load_settings(const Wires& w);  // the timings and the polarity
+  // The pacer (motion_pace.cpp): its inputs and decision of this cycle (before the take
+  // is known, then with it), its edge, and the pacing settings.
+  void pace_wires(bool take_known, Wires& w) const;
+  void load_pace(const Wires& w);
+  void load_pace_settings(const Wires& w);
+  std::uint32_t read_pace(std::uint32_t adr) const;  // ACCEL, VMIN, OVERRIDE, STATUS' hold bits
 
   int depth_log2_;
   CoreModel core_;
+  Pacer pacer_;
   std::vector<std::vector<std::uint32_t>> mem_;  // [slot][word]
   BlockRegs r_{};
   bool took_ = false, core_ce_ = false, iterated_ = false;
@@ -176,8 +250,14 @@ class MotionModel {
 std::string gtkw(std::string_view file, std::string_view top, int depth_log2);
 
 // The entry words of a command: the core's command word LSB first, the axes (0: X, Y, Z;
-// Piece::rot) and the feed increment (0: full rate) in their fields, reserved bits 0.
-std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0, int axes = 0);
+// Piece::rot), the feed increment (0: full rate) and the pacing fields (a cruise speed of
+// 0: paced by the feed increment) in their fields, reserved bits 0.
+std::vector<std::uint32_t> entry_words(const Command& c, std::uint32_t feed = 0, int axes = 0,
+                                       const PaceEntry& pace = {});
+// The pacing fields of entry words.
+PaceEntry entry_pace(const std::vector<std::uint32_t>& words);
+// The norm operands the core's norm_*_o ports show for its registers.
+NormOperands core_norm_operands(const Signals& s);
 // The core's command fields of entry words (the inverse of entry_words on its bits).
 CmdFields entry_fields(const std::vector<std::uint32_t>& words);
 

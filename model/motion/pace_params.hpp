@@ -33,5 +33,13 @@ inline constexpr int kMarginShift = 3;  // ramp down 2^-kMarginShift step before
 inline constexpr int kPhaseBits = kRampFrac + 8;
 // The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
 inline constexpr int kAccelWidth = 32;
+// The widths of rtl/dda_pace.v's registers the block harnesses compare: s and the distance
+// to go (below 2^(kDistFrac + 25)), the norm unit's clock count (up to kNormLatency), the
+// product's clock count (up to kOverrideClocks).
+inline constexpr int kDistWidth = kDistFrac + 26;
+inline constexpr int kNormBusyWidth = 7;
+inline constexpr int kOverrideCountWidth = 4;
+static_assert(kNormLatency < (1 << kNormBusyWidth) && kOverrideClocks < (1 << kOverrideCountWidth),
+              "the pacer's clock counts fit their registers");
 
 }  // namespace dda::motion

@@ -2,6 +2,7 @@
 #include "motion/pacer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dda::motion {
 
@@ -36,7 +37,10 @@ NormOperands norm_operands(const Command& c, const RegState& r) {
 }
 
 std::uint64_t iteration_distance(const Command& c, const RegState& r) {
-  const NormOperands o = norm_operands(c, r);
+  return iteration_distance(norm_operands(c, r));
+}
+
+std::uint64_t iteration_distance(const NormOperands& o) {
   const auto q = [](std::uint64_t v, std::uint64_t cap) {
     return cap > 0 ? (u128(v) << kNormFrac) / u128(cap) : u128(0);
   };
@@ -69,6 +73,24 @@ std::uint32_t pace_length(const Command& c) {
   const u128 l = (sum + unit - 1) / unit;
   if (l > 0xFFFFFFFFu) throw GuardError("pacer: a piece longer than an entry's length field holds");
   return std::uint32_t(l);
+}
+
+std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uint32_t cruise, std::uint32_t vmin,
+                                    std::uint64_t accel, double feed, double accel_rate, double unit) {
+  std::vector<PaceEntry> entries(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    entries[i].cruise = entries[i].limit = cruise;
+    entries[i].length = pace_length(pieces[i]);
+  }
+  double exit = 0;  // of the piece after the one at hand
+  for (std::size_t i = pieces.size(); i-- > 0;) {
+    PaceEntry& e = entries[i];
+    e.exit = std::min(cruise, std::uint32_t(std::floor(exit / unit * std::ldexp(1.0, kSpeedFrac))));
+    e.brake_exit = brake_distance(e.exit, vmin, accel);
+    const double len = double(e.length) / std::ldexp(1.0, kLenFrac);
+    exit = accel_rate > 0 ? std::sqrt(exit * exit + 2 * accel_rate * len) : feed;
+  }
+  return entries;
 }
 
 bool Pacer::decelerate(const In& in) const {
@@ -123,7 +145,7 @@ void Pacer::edge(const In& in, bool stepped) {
   if (pending_ && stepped) busy_ = kNormLatency;
   pending_ = false;
   // (After a piece's last step the core's counters are 0: d of the finished piece is 0.)
-  if (busy_ > 0 && --busy_ == 0 && in.cmd) d_ = iteration_distance(*in.cmd, in.regs);
+  if (busy_ > 0 && --busy_ == 0) d_ = iteration_distance(in.norm);
   if (it) {
     pending_ = true;
     rem_ -= std::min(rem_, dist_of_norm(d_));

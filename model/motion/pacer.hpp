@@ -34,6 +34,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "datapath/datapath.hpp"
 #include "motion/pace_params.hpp"
@@ -56,14 +57,17 @@ struct PaceSettings {
   bool hold = false;
 };
 
-// The DDA's path length per iteration from the core's registers, x 2^kNormFrac steps.
-std::uint64_t iteration_distance(const Command& c, const RegState& r);
-// The norm unit's operands (rtl/dda_norm.v's v_x_i .. cap_z_i) from the core's
-// registers: an axis whose counter is done or whose integrand is not positive gives 0.
+// The norm unit's operands (rtl/dda_norm.v's v_x_i .. cap_z_i, the core's norm_*_o
+// ports) from the core's registers: an axis whose counter is done or whose integrand is
+// not positive gives 0.
 struct NormOperands {
   std::uint64_t v_x = 0, v_y = 0, v_z = 0, cap = 0, cap_z = 0;
 };
 NormOperands norm_operands(const Command& c, const RegState& r);
+// The DDA's path length per iteration, x 2^kNormFrac steps: from the norm operands, or
+// from the core's registers.
+std::uint64_t iteration_distance(const NormOperands& o);
+std::uint64_t iteration_distance(const Command& c, const RegState& r);
 // The distance a ramp down from speed v to vmin (x 2^kSpeedFrac) at accel travels, as
 // the pacer counts it, x 2^kLenFrac steps, rounded up; 0 for accel 0.
 std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel);
@@ -71,17 +75,26 @@ std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t 
 // iterations, x 2^kLenFrac steps, rounded up. Throws GuardError for a piece that does
 // not end or is longer than the field holds.
 std::uint32_t pace_length(const Command& c);
+// The entries a driver writes for pieces run back to back at one cruise speed (x
+// 2^kSpeedFrac, also their limit): their lengths, and exit speeds from a backward pass
+// (the last one's 0: it ends at vmin; before it the fastest speed from which the pieces
+// after it can still brake to their exits, sqrt(exit'^2 + 2 A L'), at most the cruise
+// speed) with their braking distances. feed and accel_rate are the cruise speed and the
+// acceleration in the caller's units (steps per `unit` clocks: per second with unit the
+// clock in Hz, per clock with unit 1); accel the ACCEL register's value.
+std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uint32_t cruise, std::uint32_t vmin,
+                                    std::uint64_t accel, double feed, double accel_rate, double unit);
 
 class Pacer {
  public:
   // The inputs of one clock: advance (ce_i, no stage holds the core), whether a piece
-  // runs and its registers (the core's state before the edge), whether the core takes
-  // an entry on this edge and that entry, whether another entry waits in the queue.
+  // runs and the norm operands of the core's registers before the edge (the running or
+  // the last piece's), whether the core takes an entry on this edge and that entry,
+  // whether another entry waits in the queue.
   struct In {
     bool advance = false;
     bool running = false;
-    const Command* cmd = nullptr;  // the running or the last piece's command (none before the first)
-    RegState regs;
+    NormOperands norm;
     bool take = false;
     PaceEntry entry;
     bool next_queued = false;

@@ -50,27 +50,12 @@ double trapezoid_seconds(double length, double feed, double accel, double vmin) 
 
 namespace {
 
-// The entries the driver writes: the feed as cruise speed and limit, lengths for the
-// pacer, and exit speeds from a backward pass over the arc's pieces (the last one's 0:
-// it ends at the minimum speed; before it, the fastest speed from which the pieces after
-// it can still brake to their exits: sqrt(exit'^2 + 2 A L'), at most the feed) with
-// their braking distances.
+// The entries the driver writes: the feed as cruise speed and limit (motion::pace_entries).
 std::vector<PaceEntry> entries_of(const Plan& plan, const PaceOptions& o, std::uint32_t cruise, std::uint32_t vmin,
                                   std::uint64_t accel) {
-  std::vector<PaceEntry> entries(plan.pieces.size());
-  for (std::size_t i = 0; i < plan.pieces.size(); ++i) {
-    entries[i].cruise = entries[i].limit = cruise;
-    entries[i].length = motion::pace_length(plan.pieces[i].cmd);
-  }
-  double exit = 0;  // steps/s, of the piece after the one at hand
-  for (std::size_t i = plan.pieces.size(); i-- > 0;) {
-    PaceEntry& e = entries[i];
-    e.exit = std::min(cruise, std::uint32_t(std::floor(exit / o.clock_hz * std::ldexp(1.0, kSpeedFrac))));
-    e.brake_exit = motion::brake_distance(e.exit, vmin, accel);
-    const double len = double(e.length) / std::ldexp(1.0, motion::kLenFrac);
-    exit = o.accel > 0 ? std::sqrt(exit * exit + 2 * o.accel * len) : o.feed;
-  }
-  return entries;
+  std::vector<Command> cmds;
+  for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
+  return motion::pace_entries(cmds, cruise, vmin, accel, o.feed, o.accel, o.clock_hz);
 }
 
 // The run's state between clocks.
@@ -92,10 +77,8 @@ struct Run {
     Pacer::In in;
     in.advance = true;
     in.running = dp && !dp->done();
-    if (dp) {  // the running piece's, or the finished one's (the core's registers as it left them)
-      in.cmd = &plan.pieces[cur].cmd;
-      in.regs = dp->regs();
-    }
+    // The running piece's, or the finished one's (the core's registers as it left them).
+    if (dp) in.norm = motion::norm_operands(plan.pieces[cur].cmd, dp->regs());
     in.take = !in.running && next < plan.pieces.size();
     if (in.take) in.entry = entries[next];
     in.next_queued = next + (in.take ? 1 : 0) < plan.pieces.size();
@@ -106,7 +89,7 @@ struct Run {
 
   // The measurements of an iteration on this clock, before its edge.
   void measure(const Pacer::In& in, std::uint64_t clock) {
-    const double d = feed::dda_speed(*in.cmd, in.regs);
+    const double d = feed::dda_speed(plan.pieces[cur].cmd, dp->regs());
     const double v = ramp_steps_per_s(pacer.speed(), o.clock_hz);
     const double path_speed = pacer.distance() ? v / (double(pacer.distance()) / std::ldexp(1.0, kNormFrac)) * d : 0;
     res.path += d;

@@ -38,6 +38,7 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   u_int_x->inc_on_y_i(cmd_inc_x_on_y);
   u_int_x->ovf_o(ovf_x);
   u_int_x->can_o(can_x);
+  u_int_x->jv_o(jv_x);
   u_int_y->active_i(active_y);
   u_int_y->jv_i(cmd_jv_y);
   u_int_y->jr_i(cmd_jr_y);
@@ -45,6 +46,7 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   u_int_y->inc_on_y_i(cmd_inc_y_on_y);
   u_int_y->ovf_o(ovf_y);
   u_int_y->can_o(can_y);
+  u_int_y->jv_o(jv_y);
 
   u_cnt_x.clk_i(clk_i);
   u_cnt_x.rst_ni(rst_ni);
@@ -89,6 +91,8 @@ dda_core::dda_core(sc_core::sc_module_name name, IntegratorFactory make_integrat
   dont_initialize();
   SC_METHOD(outputs);
   sensitive << step_x_q << step_y_q << step_z_q << dir_x_q << dir_y_q << dir_z_q;
+  SC_METHOD(norm);
+  sensitive << active_x << active_y << active_z << jv_x << jv_y << jv_z << cap_q << cap_z;
 }
 
 void dda_core::bind_third_axis() {
@@ -102,6 +106,8 @@ void dda_core::bind_third_axis() {
   u_lin_z.cap_i(cmd_cap_z);
   u_lin_z.ovf_o(ovf_z);
   u_lin_z.can_o(can_z);
+  u_lin_z.jv_o(jv_z);
+  u_lin_z.cap_o(cap_z);
   u_cnt_z.clk_i(clk_i);
   u_cnt_z.rst_ni(rst_ni);
   u_cnt_z.load_i(load);
@@ -175,6 +181,17 @@ void dda_core::outputs() {
   dir_y_o.write(dir_y_q.read());
   step_z_o.write(step_z_q.read());
   dir_z_o.write(dir_z_q.read());
+}
+
+void dda_core::norm() {
+  const auto v = [](bool active, const acc_t& jv) {
+    return active && !jv[hw::kAccWidth - 1] ? std::uint64_t(jv.to_uint64()) : std::uint64_t{0};
+  };
+  norm_v_x_o.write(v(active_x.read(), jv_x.read()));
+  norm_v_y_o.write(v(active_y.read(), jv_y.read()));
+  norm_v_z_o.write(v(active_z.read(), jv_z.read()));
+  norm_cap_o.write(cap_q.read().to_uint64());
+  norm_cap_z_o.write(cap_z.read().to_uint64());
 }
 
 void dda_core::trace(sc_core::sc_trace_file* tf) const {

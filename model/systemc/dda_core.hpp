@@ -20,6 +20,9 @@ SC_MODULE(dda_core) {
   sc_core::sc_in<cmd_t> cmd_i;
   sc_core::sc_out<bool> step_x_o, dir_x_o, step_y_o, dir_y_o, step_z_o, dir_z_o;
   sc_core::sc_out<bool> busy_o, done_o, err_o, iter_o;
+  // The pacer's norm operands (hw::PortDir::Norm): an axis' integrand while its counter
+  // runs and the integrand is positive, else 0; the capacities.
+  sc_core::sc_out<std::uint64_t> norm_v_x_o, norm_v_y_o, norm_v_z_o, norm_cap_o, norm_cap_z_o;
 
   // Builds an integrator; tests may pass one that builds a deliberately wrong variant.
   using IntegratorFactory = std::function<std::unique_ptr<dda_integrator>(const char* name)>;
@@ -54,11 +57,13 @@ SC_MODULE(dda_core) {
   sc_core::sc_signal<bool> can_x{"can_x"}, can_y{"can_y"}, can_z{"can_z"};
   sc_core::sc_signal<bool> active_x{"active_x"}, active_y{"active_y"}, active_z{"active_z"};
   sc_core::sc_signal<bool> last_x{"last_x"}, last_y{"last_y"}, last_z{"last_z"};
+  sc_core::sc_signal<acc_t> jv_x{"jv_x"}, jv_y{"jv_y"}, jv_z{"jv_z"}, cap_z{"cap_z"};
   void bind_third_axis();
 
   void decode();
   void seq();
   void outputs();
+  void norm();
 };
 
 }  // namespace dda::sc

@@ -10,6 +10,7 @@ void dda_integrator::comb() {
   const bool add = active_i.read() && !jv_q.read()[hw::kAccWidth - 1];
   ovf_o.write(add && carry(s, cap_i.read()));
   can_o.write(add && jv_q.read() != 0);
+  jv_o.write(jv_q.read());
 }
 
 void dda_integrator::seq() {

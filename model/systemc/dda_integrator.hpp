@@ -17,6 +17,7 @@ SC_MODULE(dda_integrator) {
   sc_core::sc_in<bool> ovf_x_i, ovf_y_i;                     // both axes' carries of this iteration
   sc_core::sc_out<bool> ovf_o;                               // this axis carries
   sc_core::sc_out<bool> can_o;                               // active and jv_q != 0: can still carry
+  sc_core::sc_out<acc_t> jv_o;                               // the integrand (the pacer's norm operand)
 
   // Architectural registers.
   sc_core::sc_signal<acc_t> jv_q{"jv_q"}, jr_q{"jr_q"}, inc_on_x_q{"inc_on_x_q"}, inc_on_y_q{"inc_on_y_q"};

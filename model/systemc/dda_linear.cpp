@@ -8,6 +8,8 @@ void dda_linear::comb() {
   sum.write(s);
   ovf_o.write(active_i.read() && s >= sum_t(cap_q.read()));
   can_o.write(active_i.read() && jv_q.read() != 0);
+  jv_o.write(jv_q.read());
+  cap_o.write(cap_q.read());
 }
 
 void dda_linear::seq() {

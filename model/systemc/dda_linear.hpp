@@ -15,6 +15,7 @@ SC_MODULE(dda_linear) {
   sc_core::sc_in<acc_t> jv_i, jr_i, cap_i;  // command fields
   sc_core::sc_out<bool> ovf_o;              // this axis carries
   sc_core::sc_out<bool> can_o;              // active and jv_q != 0: can still carry
+  sc_core::sc_out<acc_t> jv_o, cap_o;       // the integrand and the capacity (the pacer's norm operands)
 
   // Architectural registers.
   sc_core::sc_signal<acc_t> jv_q{"jv_q"}, jr_q{"jr_q"}, cap_q{"cap_q"};

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "dda_motion.hpp"
 
+#include <algorithm>
+
 namespace dda::sc {
 
 namespace {
@@ -51,13 +53,20 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.done_o(core_done);
   u_core.err_o(core_err);
   u_core.iter_o(core_iter);
+  u_core.norm_v_x_o(norm_v_x);
+  u_core.norm_v_y_o(norm_v_y);
+  u_core.norm_v_z_o(norm_v_z);
+  u_core.norm_cap_o(norm_cap);
+  u_core.norm_cap_z_o(norm_cap_z);
   bind_stages();
+  bind_pace();
 
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << wb_sel_i << ack_q << dat_q
             << fetch_q << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
             << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir
-            << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q;
+            << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q
+            << core_ready << pace_iterate << paced_q << feed_hold_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -96,6 +105,32 @@ void dda_motion::bind_stages() {
   }
 }
 
+void dda_motion::bind_pace() {
+  u_pace.clk_i(clk_i);
+  u_pace.rst_ni(core_rst_n);  // the core's reset: a reset or an abort
+  u_pace.advance_i(advance);
+  u_pace.running_i(pace_running);
+  u_pace.take_i(take);
+  u_pace.cruise_i(entry_pace[0]);
+  u_pace.limit_i(entry_pace[1]);
+  u_pace.exit_i(entry_pace[2]);
+  u_pace.length_i(entry_pace[3]);
+  u_pace.brake_exit_i(entry_pace[4]);
+  u_pace.next_queued_i(next_queued);
+  u_pace.accel_i(accel_q);
+  u_pace.vmin_i(vmin_q);
+  u_pace.override_i(override_q);
+  u_pace.hold_i(feed_hold_q);
+  u_pace.stepped_i(stepped);
+  u_pace.v_x_i(norm_v_x);
+  u_pace.v_y_i(norm_v_y);
+  u_pace.v_z_i(norm_v_z);
+  u_pace.cap_i(norm_cap);
+  u_pace.cap_z_i(norm_cap_z);
+  u_pace.iterate_o(pace_iterate);
+  u_pace.speed_o(pace_speed);
+}
+
 void dda_motion::comb() {
   const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
@@ -112,9 +147,17 @@ void dda_motion::comb() {
                                 adr == motion::reg_offset("STEP_Z") || adr == motion::reg_offset("DIR_Z"));
   const bool held = sx_hold.read() || sy_hold.read() || sz_hold.read() || wr_timing;
   hold.write(held);
-  const bool advance = ce_i.read() && !held;
+  const bool adv = ce_i.read() && !held;
+  advance.write(adv);
   const std::uint64_t feed = feed_q.read(), sum = acc_q.read() + feed;
-  core_ce.write(advance && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
+  const bool running_paced = core_busy.read() && paced_q.read();
+  pace_running.write(running_paced);
+  core_ce.write(running_paced ? pace_iterate.read()
+                              : adv && !feed_hold_q.read() && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
+  const bool tk = fetch_q.read() == 2 && level_q.read() != 0 && core_ready.read() && !abort;
+  take.write(tk);
+  next_queued.write(level_q.read() > (tk ? 1u : 0u));
+  stepped.write(c_step_x.read() || c_step_y.read() || c_step_z.read());
   wb_ack_o.write(ack_q.read());
   wb_stall_o.write(ack_q.read());
   wb_dat_o.write(dat_q.read());
@@ -156,7 +199,9 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            bit("empty", level == 0) | bit("full", level == depth) | bit("err", err_q.read()) |
            bit("err_overflow", err_overflow_q.read()) | bit("err_partial", err_partial_q.read()) |
            bit("err_stall", err_stall_q.read()) | bit("aborted", aborted_q.read()) |
-           bit("err_lanes", err_lanes_q.read()) | level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
+           bit("err_lanes", err_lanes_q.read()) | bit("holding", feed_hold_q.read() && pace_speed.read() != 0) |
+           bit("held", feed_hold_q.read() && pace_speed.read() == 0) |
+           level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
   if (adr == kIrqEnable) return irq_enable_q.read();
@@ -168,6 +213,9 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == kPosZ) return pos_z_q.read();
   if (adr == motion::reg_offset("ENTRY_MASK")) return mask_q.read();
   if (adr == motion::reg_offset("POLARITY")) return polarity_q.read();
+  if (adr == motion::reg_offset("ACCEL")) return accel_q.read();
+  if (adr == motion::reg_offset("VMIN")) return vmin_q.read();
+  if (adr == motion::reg_offset("OVERRIDE")) return override_q.read();
   std::uint32_t v = 0;
   const auto regs = timing_regs();
   for (std::size_t i = 0; i < regs.size(); ++i) {
@@ -240,6 +288,7 @@ void dda_motion::seq_ram(const Decode& d) {
   entry_feed.write(
       std::uint32_t((words[motion::kFeedWord] >> motion::kFeedLsb) & ((std::uint64_t{1} << motion::kFeedWidth) - 1)));
   entry_axes.write((words[motion::kAxesWord] >> motion::kAxesLsb) & ((1u << motion::kAxesWidth) - 1));
+  for (std::size_t i = 0; i < entry_pace.size(); ++i) entry_pace[i].write(words[std::size_t(motion::kPaceWord) + i]);
 }
 
 void dda_motion::seq_reset() {
@@ -251,8 +300,11 @@ void dda_motion::seq_reset() {
         &irq_level_q, &done_count_q,  &err_count_q,  &pos_x_q,     &pos_y_q,     &feed_q,        &acc_q,
         &steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q, &steplen_y_q, &stepspace_y_q, &dirsetup_y_q,
         &dirhold_y_q, &polarity_q,    &pos_z_q,      &fetch_q,     &steplen_z_q, &stepspace_z_q, &dirsetup_z_q,
-        &dirhold_z_q, &axes_q,        &route_q})
+        &dirhold_z_q, &axes_q,        &route_q,      &accel_q,     &vmin_q})
     s->write(0);
+  paced_q.write(false);
+  feed_hold_q.write(false);
+  override_q.write(motion::kOverrideOne);
 }
 
 // ack_q, dat_q.
@@ -323,13 +375,16 @@ void dda_motion::seq_feed(const Decode& d) {
   if (d.abort) {
     feed_q.write(0);
     acc_q.write(0);
+    paced_q.write(false);
     axes_q.write(0);
     route_q.write(0);
   } else {
     route_q.write(axes_q.read());
     if (d.take) axes_q.write(entry_axes.read());
     if (d.take) feed_q.write(entry_feed.read());
-    if (ce_i.read() && !hold.read()) acc_q.write(std::uint32_t((std::uint64_t{acc_q.read()} + feed_q.read()) & fmask));
+    if (d.take) paced_q.write(entry_pace[0].read() != 0);
+    if (ce_i.read() && !hold.read() && !feed_hold_q.read())
+      acc_q.write(std::uint32_t((std::uint64_t{acc_q.read()} + feed_q.read()) & fmask));
   }
 }
 
@@ -345,6 +400,18 @@ void dda_motion::seq_settings(const Decode& d) {
   if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.wdat & 0x3Fu);
 }
 
+// A feed hold outlasts an abort: a held machine stays held until CTRL.resume.
+void dda_motion::seq_pace_settings(const Decode& d) {
+  const bool ctrl = d.wr && d.adr == kCtrl;
+  const auto bit = [&](std::string_view f) {
+    return ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", f).lsb)) & 1u) != 0;
+  };
+  feed_hold_q.write(bit("hold") || (feed_hold_q.read() && !bit("resume")));
+  if (d.wr && d.adr == motion::reg_offset("ACCEL")) accel_q.write(d.wdat);
+  if (d.wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
+  if (d.wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
+}
+
 void dda_motion::seq() {
   const Decode d = decode();
   seq_ram(d);
@@ -357,6 +424,7 @@ void dda_motion::seq() {
   seq_status(d);
   seq_feed(d);
   seq_settings(d);
+  seq_pace_settings(d);
 }
 
 }  // namespace dda::sc

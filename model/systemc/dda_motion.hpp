@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dda_core.hpp"
+#include "dda_pace.hpp"
 #include "dda_stepdir.hpp"
 #include "motion/motion_map.hpp"
 
@@ -32,6 +33,7 @@ SC_MODULE(dda_motion) {
 
   dda_core u_core{"u_core"};
   dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"}, u_sz{"u_sz"};
+  dda_pace u_pace{"u_pace", hw::kAccWidth};
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
   sc_core::sc_signal<bool> ack_q{"ack_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
@@ -44,6 +46,9 @@ SC_MODULE(dda_motion) {
       acc_q{"acc_q"}, steplen_x_q{"steplen_x_q"}, stepspace_x_q{"stepspace_x_q"}, dirsetup_x_q{"dirsetup_x_q"},
       dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"}, stepspace_y_q{"stepspace_y_q"},
       dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"}, polarity_q{"polarity_q"};
+  // Pacing: the running entry has a cruise speed; the feed hold and the settings.
+  sc_core::sc_signal<bool> paced_q{"paced_q"}, feed_hold_q{"feed_hold_q"};
+  sc_core::sc_signal<std::uint32_t> accel_q{"accel_q"}, vmin_q{"vmin_q"}, override_q{"override_q"};
 
  private:
   int depth_log2_;
@@ -51,6 +56,12 @@ SC_MODULE(dda_motion) {
   std::vector<std::uint32_t> rd_row_q, row0_q;  // the RAM output and the row 0 kept (words)
   sc_core::sc_signal<cmd_t> entry{"entry"};     // the command of {rd_row_q, row0_q}
   sc_core::sc_signal<std::uint32_t> entry_feed{"entry_feed"}, entry_axes{"entry_axes"};
+  std::array<sc_core::sc_signal<std::uint32_t>, motion::kPaceWords> entry_pace;  // motion::kPaceFields' order
+  // The pacer's wires.
+  sc_core::sc_signal<bool> advance{"advance"}, pace_running{"pace_running"}, take{"take"}, next_queued{"next_queued"},
+      stepped{"stepped"}, pace_iterate{"pace_iterate"};
+  sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
+      norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
   // Wires.
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
@@ -77,6 +88,7 @@ SC_MODULE(dda_motion) {
             &dirsetup_y_q, &dirhold_y_q,   &steplen_z_q,  &stepspace_z_q, &dirsetup_z_q, &dirhold_z_q};
   }
   void bind_stages();
+  void bind_pace();
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;
@@ -91,6 +103,7 @@ SC_MODULE(dda_motion) {
   void seq_status(const Decode& d);
   void seq_feed(const Decode& d);
   void seq_settings(const Decode& d);
+  void seq_pace_settings(const Decode& d);  // feed_hold_q, accel_q, vmin_q, override_q
 };
 
 }  // namespace dda::sc

@@ -25,7 +25,22 @@ void bind_outputs(Core& c, Outputs& o) {
   c.done_o(o.done);
   c.err_o(o.err);
   c.iter_o(o.iter);
+  c.norm_v_x_o(o.norm[0]);
+  c.norm_v_y_o(o.norm[1]);
+  c.norm_v_z_o(o.norm[2]);
+  c.norm_cap_o(o.norm[3]);
+  c.norm_cap_z_o(o.norm[4]);
 }
+constexpr std::array<std::string_view, 5> kNormPorts{"norm_v_x_o", "norm_v_y_o", "norm_v_z_o", "norm_cap_o",
+                                                     "norm_cap_z_o"};
+constexpr bool norm_ports_listed() {
+  std::size_t k = 0;
+  for (const auto& p : hw::kPorts) {
+    if (p.dir == hw::PortDir::Norm && (k >= kNormPorts.size() || kNormPorts[k++] != p.name)) return false;
+  }
+  return k == kNormPorts.size();
+}
+static_assert(norm_ports_listed(), "kNormPorts no longer lists hw::kPorts' norm outputs in order");
 
 }  // namespace
 
@@ -97,6 +112,7 @@ bool CosimHarness::edge() {
   };
   bool same = diff.empty();
   for (const auto& o : outs) same = same && o.a == o.b;
+  for (std::size_t k = 0; k < kNormPorts.size(); ++k) same = same && sc_out_.norm[k].read() == rtl_out_.norm[k].read();
   if (same) {
     ++compared_;
     return ready;
@@ -110,6 +126,12 @@ bool CosimHarness::edge() {
         m << "cosim mismatch at cycle " << edge_no << ": output " << o.name << ": " << o.a << " vs " << o.b
           << " (systemc vs rtl)";
         break;
+      }
+    }
+    for (std::size_t k = 0; k < kNormPorts.size() && m.tellp() == 0; ++k) {
+      if (sc_out_.norm[k].read() != rtl_out_.norm[k].read()) {
+        m << "cosim mismatch at cycle " << edge_no << ": output " << kNormPorts[k] << ": " << sc_out_.norm[k].read()
+          << " vs " << rtl_out_.norm[k].read() << " (systemc vs rtl)";
       }
     }
   }

@@ -7,6 +7,7 @@
 // the RTL, equal to it at every cycle, is checked against the golden model too.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -47,6 +48,7 @@ class CosimHarness : public CoreHarness {
   // Each model drives its own copy of every output.
   struct Outputs {
     sc_core::sc_signal<bool> cmd_ready, step_x, dir_x, step_y, dir_y, step_z, dir_z, busy, done, err, iter;
+    std::array<sc_core::sc_signal<std::uint64_t>, 5> norm;  // norm_v_x_o .. norm_cap_z_o
   };
   Outputs sc_out_, rtl_out_;
   std::unique_ptr<sc::dda_core> sc_;

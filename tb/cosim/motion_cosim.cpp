@@ -74,6 +74,8 @@ BlockRegs MotionCosim::sc_block() const {
       r[i] = b->read();
     } else if (const auto* u = dynamic_cast<const sc_core::sc_signal<std::uint32_t>*>(o)) {
       r[i] = u->read();
+    } else if (const auto* l = dynamic_cast<const sc_core::sc_signal<std::uint64_t>*>(o)) {
+      r[i] = l->read();
     } else {
       throw GuardError("motion cosim: the SystemC model has no register " + name);
     }

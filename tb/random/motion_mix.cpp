@@ -2,6 +2,7 @@
 #include "motion_mix.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ class Mix {
       : rng_(seed),
         gen_(seed, max_axis, 4, ArcKind::Program),
         short_arcs_(seed + 3, std::min<std::int64_t>(max_axis, 8), 4, ArcKind::Program),
+        paced_arcs_(seed + 5, std::min<std::int64_t>(max_axis, 30), 4, ArcKind::Program),
         spatial_(seed + 4, max_axis, 4, ArcKind::Spatial),
         timing_(t),
         mon_(timing_),
@@ -39,10 +41,18 @@ class Mix {
 
  private:
   void ctrl(std::string_view bit) { m_.write(reg_offset("CTRL"), field_bit("CTRL", bit)); }
-  std::vector<Plan> draw_batch(bool large, std::uint64_t arcs);
+  // The pacing of a batch: none (feed increments), or the pacer's settings and the
+  // entries' cruise speed.
+  struct Pacing {
+    bool on = false;
+    std::uint32_t cruise = 0, vmin = 0, accel = 0;
+  };
+  std::vector<Plan> draw_batch(bool large, bool paced, std::uint64_t arcs);
+  Pacing draw_pacing(bool paced);
+  void pace_events();
   void set_outputs(unsigned kind, bool large);
   void partial_commit();
-  Point queue_batch(const std::vector<Plan>& batch);
+  Point queue_batch(const std::vector<Plan>& batch, const Pacing& pc);
   bool cut_short(const Plan& first);
   void abort_batch();
   void reset_batch();
@@ -51,7 +61,7 @@ class Mix {
 
   MixStats st_;
   std::mt19937_64 rng_;
-  RandomArcs gen_, short_arcs_, spatial_;
+  RandomArcs gen_, short_arcs_, paced_arcs_, spatial_;
   StepDirMonitor timing_;
   PieceMonitor mon_;
   WishboneMaster m_;
@@ -66,17 +76,21 @@ MixStats Mix::run(std::uint64_t arcs) {
     ++st_.batches;
     // One to four arcs back to back from a preset position; a twentieth of the batches
     // are one short arc with large timings.
+    // are one short arc with large timings; a fifth are paced by the pacer (shorter
+    // arcs: a paced step takes a hundred clocks or more).
     const unsigned kind = unsigned(rng_() % 20);
-    const bool large = kind == 0;
-    const std::vector<Plan> batch = draw_batch(large, arcs);
+    const bool large = kind == 0, paced = kind % 5 == 2;
+    const std::vector<Plan> batch = draw_batch(large, paced, arcs);
     if (batch.empty()) break;
     d_.drain();
     set_outputs(kind, large);
+    const Pacing pc = draw_pacing(paced);
     d_.preset(batch.front().from);
     if (rng_() % 10 == 0) partial_commit();
-    const Point want = queue_batch(batch);
+    const Point want = queue_batch(batch, pc);
     st_.arcs += batch.size();
     if (cut_short(batch.front())) continue;
+    if (pc.on) pace_events();
     d_.drain();
     check_position(want);
   }
@@ -89,11 +103,11 @@ MixStats Mix::run(std::uint64_t arcs) {
 // The arcs of a batch: one short arc if large, else one to four, no more than the run
 // still needs; a third of the others move the third axis (3-D lines, plunges, helices),
 // turned onto another plane of the block's axes two times in three (the entry's axes).
-std::vector<Plan> Mix::draw_batch(bool large, std::uint64_t arcs) {
+std::vector<Plan> Mix::draw_batch(bool large, bool paced, std::uint64_t arcs) {
   std::vector<Plan> batch;
-  const std::uint64_t n = large ? 1 : 1 + rng_() % 4;
+  const std::uint64_t n = large ? 1 : paced ? 1 + rng_() % 2 : 1 + rng_() % 4;
   while (batch.size() < n && st_.arcs + batch.size() < arcs) {
-    RandomArcs& g = large ? short_arcs_ : rng_() % 3 == 0 ? spatial_ : gen_;
+    RandomArcs& g = large ? short_arcs_ : paced ? paced_arcs_ : rng_() % 3 == 0 ? spatial_ : gen_;
     if (auto p = g.next()) {
       st_.spatial += &g == &spatial_;
       if (&g == &spatial_) {
@@ -123,6 +137,43 @@ void Mix::set_outputs(unsigned kind, bool large) {
   d_.set_polarity(std::uint32_t(rng_() % 64));
 }
 
+// A paced batch's settings: a cruise speed of 0.002 to 0.02 steps per clock (above about
+// 0.009 the norm unit's latency is the limit: the phase saturates), a minimum speed of
+// 0.0005 to 0.0015, a ramp to the cruise speed over 1000 to 4000 clocks (no ramp an
+// eighth of the time).
+Mix::Pacing Mix::draw_pacing(bool paced) {
+  Pacing pc;
+  if (!paced) return pc;
+  std::uniform_real_distribution<double> u(0, 1);
+  const double cruise = 0.002 + 0.018 * u(rng_), vmin = 0.0005 + 0.001 * u(rng_);
+  const double accel = rng_() % 8 == 0 ? 0 : cruise / (1000 + 3000 * u(rng_));
+  pc.on = true;
+  pc.cruise = std::uint32_t(std::ldexp(cruise, kSpeedFrac));
+  pc.vmin = std::uint32_t(std::ldexp(vmin, kSpeedFrac));
+  pc.accel = std::uint32_t(std::min(std::ldexp(accel, kRampFrac), 4294967295.0));
+  d_.set_pacing(pc.accel, pc.vmin);
+  ++st_.paced_batches;
+  return pc;
+}
+
+// While a paced batch runs: an override change (0 to 235%: above 200% is clamped), a
+// feed hold and its end, the override back to 100%.
+void Mix::pace_events() {
+  m_.idle(int(rng_() % 3000));
+  d_.set_override(std::uint32_t(20 + rng_() % 580));
+  m_.idle(int(rng_() % 3000));
+  d_.hold();
+  ++st_.holds;
+  m_.idle(int(rng_() % 6000));
+  if (!get_field("STATUS", "held", m_.read(reg_offset("STATUS"))) &&
+      !get_field("STATUS", "holding", m_.read(reg_offset("STATUS")))) {
+    throw GuardError("motion mix: a feed hold shows neither holding nor held");
+  }
+  d_.resume();
+  m_.idle(int(rng_() % 3000));
+  d_.set_override(kOverrideOne);
+}
+
 // A partial entry committed: refused, with err_partial.
 void Mix::partial_commit() {
   m_.write(reg_offset("ENTRY"), std::uint32_t(rng_()));
@@ -136,16 +187,26 @@ void Mix::partial_commit() {
 
 // Queues every piece of the batch (a random feed on half of them), each expected to end
 // on its point; returns where the batch ends.
-Point Mix::queue_batch(const std::vector<Plan>& batch) {
+Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
   Point want = batch.front().from;
   Point at = batch.front().from;
+  std::vector<PaceEntry> pace;
+  if (pc.on) {
+    std::vector<Command> cmds;
+    for (const auto& p : batch)
+      for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
+    pace = pace_entries(cmds, pc.cruise, pc.vmin, pc.accel, std::ldexp(pc.cruise, -kSpeedFrac),
+                        std::ldexp(pc.accel, -kRampFrac), 1.0);
+  }
+  std::size_t k = 0;
   for (const auto& p : batch) {
     for (const auto& piece : p.pieces) {
       at = at + Point{piece.to.x - piece.from.x, piece.to.y - piece.from.y, piece.to.z - piece.from.z};
       mon_.expect(at);
       const std::uint32_t feed = rng_() % 2 == 0 ? 0 : 0x20000000u + std::uint32_t(rng_() % 0xE0000000u);
-      st_.fed_pieces += feed != 0;
-      d_.queue(piece.cmd, feed, piece.rot);
+      st_.fed_pieces += feed != 0 && !pc.on;
+      st_.paced_pieces += pc.on;
+      d_.queue(piece.cmd, feed, piece.rot, pc.on ? pace[k++] : PaceEntry{});
     }
     want = want + Point{p.to.x - p.from.x, p.to.y - p.from.y, p.to.z - p.from.z};
     st_.pieces += p.pieces.size();

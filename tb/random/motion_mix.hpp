@@ -8,10 +8,12 @@
 // three of them turned onto another plane of the axes (the entry's axes). Each batch runs with random step/dir
 // timings (all 0 half of the time, small ones, and large ones, up to the fields' maximum, on a batch of short arcs
 // drawn apart so the cycles stay bounded), random output polarity and a random feed increment per piece (0, the full
-// rate, half of the time). Every edge passes the timing monitor (StepDirMonitor: the four timings, no step lost or
-// added); every piece that finishes must leave the position counters on its end point (PieceMonitor), and after every
-// batch that ran to its end they must equal the batch's start plus the arcs' moves
-// (throws GuardError otherwise); the target itself checks every edge.
+// rate, half of the time); a fifth of the batches are short arcs paced by the pacer instead (a random cruise speed,
+// minimum speed and acceleration, the entries' exit speeds planned over the batch), with an override change and a
+// feed hold and resume while they run. Every edge passes the timing monitor (StepDirMonitor: the four timings, no step
+// lost or added); every piece that finishes must leave the position counters on its end point (PieceMonitor), and after
+// every batch that ran to its end they must equal the batch's start plus the arcs' moves (throws GuardError otherwise);
+// the target itself checks every edge.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +28,7 @@ struct MixStats {
   std::uint64_t timed_batches = 0, large_timing_batches = 0, fed_pieces = 0, pulses = 0;
   std::uint64_t spatial = 0, pulses_z = 0;  // arcs that move the third axis, its pulses
   std::uint64_t turned = 0;                 // of those, turned onto another plane (the entry's axes)
+  std::uint64_t paced_batches = 0, paced_pieces = 0, holds = 0;  // batches paced by the pacer
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).

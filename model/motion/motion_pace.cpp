@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block's reference model, its pacing (rtl/dda_motion.v, "pace"): the pacer
+// (motion::Pacer, rtl/dda_pace.v's u_pace) and the pacing settings ACCEL, VMIN, OVERRIDE
+// and the feed hold.
+#include "datapath/hw_params.hpp"
+#include "motion/motion_model.hpp"
+#include "motion/motion_wires.hpp"
+
+namespace dda::motion {
+
+NormOperands core_norm_operands(const Signals& s) {
+  const auto reg = [&](std::string_view name) { return s[hw::sig(name)]; };
+  const std::uint64_t sign = std::uint64_t{1} << (hw::kAccWidth - 1);
+  const auto v = [&](std::string_view cnt, std::string_view jv) {
+    return reg(cnt) != 0 && (reg(jv) & sign) == 0 ? reg(jv) : 0;
+  };
+  return NormOperands{v("u_cnt_x.cnt_q", "u_int_x.jv_q"), v("u_cnt_y.cnt_q", "u_int_y.jv_q"),
+                      v("u_cnt_z.cnt_q", "u_lin_z.jv_q"), reg("cap_q"), reg("u_lin_z.cap_q")};
+}
+
+void MotionModel::pace_wires(bool take_known, Wires& w) const {
+  Pacer::In& in = w.pace;
+  if (!take_known) {
+    // What the decision to iterate reads: the pacer runs while the core runs a paced piece.
+    in.advance = w.advance;
+    in.running = w.running && get("paced_q") != 0;
+    w.pace_iterate = pacer_.iterate(in);
+    return;
+  }
+  in.norm = core_norm_operands(core_.state());
+  in.take = w.take;
+  if (w.cmd_valid) in.entry = entry_pace(mem_[w.head]);
+  // Another entry waits in the queue besides the one taken on this edge.
+  in.next_queued = w.level > (w.take ? 1u : 0u);
+  in.set.accel = get("accel_q");
+  in.set.vmin = std::uint32_t(get("vmin_q"));
+  in.set.override_ = std::uint32_t(get("override_q"));
+  in.set.hold = get("feed_hold_q") != 0;
+}
+
+void MotionModel::load_pace(const Wires& w) {
+  // The pacer's reset is the core's: a reset or an abort.
+  if (w.abort) {
+    pacer_ = Pacer{};
+  } else {
+    pacer_.edge(w.pace, w.stepped);
+  }
+  const PaceEntry& e = pacer_.entry();
+  reg("u_pace.v_q") = pacer_.speed();
+  reg("u_pace.ph_q") = pacer_.phase();
+  reg("u_pace.s_q") = pacer_.brake();
+  reg("u_pace.rem_q") = pacer_.to_go();
+  reg("u_pace.cruise_q") = e.cruise;
+  reg("u_pace.limit_q") = e.limit;
+  reg("u_pace.exit_q") = e.exit;
+  reg("u_pace.brake_q") = e.brake_exit;
+  reg("u_pace.busy_q") = std::uint64_t(pacer_.norm_busy());
+  reg("u_pace.pend_q") = pacer_.pending();
+  reg("u_pace.ovr_q") = pacer_.override_of();
+  reg("u_pace.mcnt_q") = std::uint64_t(pacer_.override_busy());
+  reg("u_pace.eff_q") = pacer_.cruise_speed();
+}
+
+void MotionModel::load_pace_settings(const Wires& w) {
+  // A feed hold outlasts an abort: a held machine stays held until CTRL.resume.
+  const bool ctrl = w.wr && w.adr == reg_offset("CTRL");
+  const auto bit = [&](std::string_view f) { return ctrl && ((w.wsel >> field_of("CTRL", f).lsb) & 1u) != 0; };
+  reg("feed_hold_q") = bit("hold") || (get("feed_hold_q") && !bit("resume"));
+  if (w.wr && w.adr == reg_offset("ACCEL")) reg("accel_q") = w.wdat;
+  if (w.wr && w.adr == reg_offset("VMIN")) reg("vmin_q") = w.wdat;
+  if (w.wr && w.adr == reg_offset("OVERRIDE")) reg("override_q") = std::min<std::uint32_t>(w.wdat, 2 * kOverrideOne);
+}
+
+std::uint32_t MotionModel::read_pace(std::uint32_t adr) const {
+  if (adr == reg_offset("ACCEL")) return std::uint32_t(get("accel_q"));
+  if (adr == reg_offset("VMIN")) return std::uint32_t(get("vmin_q"));
+  if (adr == reg_offset("OVERRIDE")) return std::uint32_t(get("override_q"));
+  if (adr != reg_offset("STATUS")) return 0;
+  const bool hold = get("feed_hold_q") != 0, at_rest = pacer_.speed() == 0;
+  return std::uint32_t(hold && !at_rest) << field_of("STATUS", "holding").lsb | std::uint32_t(hold && at_rest)
+                                                                                    << field_of("STATUS", "held").lsb;
+}
+
+}  // namespace dda::motion
