@@ -94,6 +94,7 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
   vectors->add_option("--feed-rate", c.feed_rate,
                       "with --bus: feed in steps per second along the path (needs --clock)");
   vectors->add_option("--clock", c.clock_hz, "with --bus --feed-rate: the block's clock in Hz");
+  add_bus_pace_options(vectors, c);
 }
 
 namespace {
@@ -122,10 +123,13 @@ motion::StageTimings parse_timing(const std::string& opt, const std::string& s) 
 
 BusOptions bus_options(const BusCli& c) {
   const bool any = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() || !c.timing_y.empty() ||
-                   !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0;
+                   !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0 || c.scenario();
   if (!c.bus) {
-    if (any)
-      throw InputError("--pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only");
+    if (any) {
+      throw InputError(
+          "--pipelined, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, --override*, "
+          "--hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only");
+    }
     return BusOptions{};
   }
   BusOptions b;
@@ -149,6 +153,7 @@ BusOptions bus_options(const BusCli& c) {
   b.feed = c.feed;
   b.feed_rate = c.feed_rate;
   b.clock_hz = c.clock_hz;
+  bus_pace_options(c, b);
   return b;
 }
 
@@ -157,7 +162,11 @@ BusOptions bus_options(const BusCli& c) {
 void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
   motion::WishboneMaster m(t, opt.seed, bus.pipelined, bus.idle_percent);
   std::mt19937_64 ce_rng(opt.seed + 1);
-  m.each_cycle = [&] { t.set_ce(int(ce_rng() % 100) < opt.ce_percent); };
+  std::uint64_t cycle = 0;  // the set's cycles so far
+  m.each_cycle = [&] {
+    ++cycle;
+    t.set_ce(int(ce_rng() % 100) < opt.ce_percent);
+  };
   motion::MotionDriver d(m, opt.seed + 2);
   t.set_reset(false);
   m.idle(2);
@@ -166,22 +175,24 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
   d.set_timings('y', bus.timing_y);
   d.set_timings('z', bus.timing_z);
   d.set_polarity(bus.polarity);
+  if (bus.paced) {
+    const PaceOptions& o = bus.pace;
+    d.set_pacing(std::uint32_t(accel_field(o.accel, o.clock_hz)), speed_field(o.vmin, o.clock_hz));
+  }
+  if (bus.override_ != motion::kOverrideOne && bus.override_at == 0) d.set_override(bus.override_);
   d.preset(plans.front().from);
+  const std::vector<motion::PaceEntry> pace = bus_pace_entries(plans, bus);
+  std::size_t k = 0;
   for (const auto& p : plans) {
     for (const auto& piece : p.pieces) {
-      const std::uint32_t f = bus.feed_rate > 0
-                                  ? feed::feed_increment(feed::piece_motion(piece.cmd), bus.feed_rate, bus.clock_hz)
-                                  : bus.feed;
-      d.queue(piece.cmd, f, piece.rot);
+      const std::uint32_t f = bus.paced || bus.feed_rate == 0
+                                  ? bus.feed
+                                  : feed::feed_increment(feed::piece_motion(piece.cmd), bus.feed_rate, bus.clock_hz);
+      d.queue(piece.cmd, f, piece.rot, bus.paced ? pace[k++] : motion::PaceEntry{});
     }
   }
-  if (bus.abort_after > 0) {
-    m.idle(bus.abort_after);
-    m.write(motion::reg_offset("CTRL"), motion::field_bit("CTRL", "abort"));
-    m.read(motion::reg_offset("STATUS"));
-  } else {
-    d.drain();
-  }
+  run_bus_scenario(m, d, bus, cycle);
+  m.read(motion::reg_offset("STATUS"));
   d.position();
   m.idle(4);
 }
@@ -248,6 +259,11 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   } else {
     j["feed_increment"] = bus.feed;
   }
+  if (bus.paced) {
+    j["paced"] = {{"accel_steps_per_s2", bus.pace.accel}, {"vmin_steps_per_s", bus.pace.vmin}};
+  }
+  j["scenario"] = {{"override", bus.override_},  {"override_at", bus.override_at},   {"hold_at", bus.hold_at},
+                   {"resume_at", bus.resume_at}, {"soft_stop_at", bus.soft_stop_at}, {"watchdog", bus.watchdog}};
   j["files"] = {{"counts.hex", "the number of cycles"},
                 {"cycle_in.hex", "per cycle: the inputs applied before the edge (layout cycle_in)"},
                 {"cycle_exp.hex", "per cycle: the outputs and registers after the edge (layout cycle_exp)"}};

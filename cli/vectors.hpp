@@ -9,12 +9,15 @@
 
 #include "accuracy/golden.hpp"
 #include "datapath/hw_params.hpp"
+#include "motion/motion_bus.hpp"
 #include "motion/motion_model.hpp"
+#include "report/pace_report.hpp"
 #include "vector_set.hpp"
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace dda::vec {
 
@@ -40,6 +43,14 @@ struct BusOptions {
   std::uint32_t polarity = 0;                         // POLARITY
   std::uint32_t feed = 0;                             // every piece's feed increment (0: full rate) ...
   double feed_rate = 0, clock_hz = 0;                 // ... or each piece's for this feed (steps/s) and clock
+  // Paced by the pacer (--accel): the feed, acceleration, minimum speed and clock.
+  bool paced = false;
+  PaceOptions pace;
+  // The scenario, in cycles of the set (0: none): OVERRIDE from override_at on, a feed
+  // hold and its end, a soft stop, the watchdog's timeout written after the last commit.
+  std::uint32_t override_ = motion::kOverrideOne;
+  std::uint64_t override_at = 0, hold_at = 0, resume_at = 0, soft_stop_at = 0;
+  std::uint32_t watchdog = 0;
 };
 // The --bus options of `dda vectors` as given, and their checked values (InputError for
 // a malformed timing, a feed without --bus, ...).
@@ -49,7 +60,25 @@ struct BusCli {
   std::string timing, timing_x, timing_y, timing_z;
   std::uint32_t polarity = 0, feed = 0;
   double feed_rate = 0, clock_hz = 0;
+  double accel = 0, vmin = 0, override_pct = 100;
+  std::uint64_t override_at = 0, hold_at = 0, resume_at = 0, soft_stop_at = 0;
+  std::uint32_t watchdog = 0;
+  CLI::Option *accel_opt = nullptr, *vmin_opt = nullptr, *override_opt = nullptr;
+  bool scenario() const;  // any of the pacing and scenario options given
 };
+// The pacing and scenario options (cli/bus_pace.cpp): added to `dda vectors`, checked
+// into the bus options, and run by the firmware after its last commit until the queue
+// drains (InputError for a combination that never drains or a value out of range).
+void add_bus_pace_options(CLI::App* vectors, BusCli& c);
+void bus_pace_options(const BusCli& c, BusOptions& b);
+// The entries of every piece of the plans run back to back (paced: planned by
+// motion::pace_entries; else none).
+std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, const BusOptions& b);
+// After the last commit: the scenario's events at their cycles (cycle: the set's cycle
+// count, kept by the caller) and an abort abort_after cycles on, until the queue is
+// empty, the block idle and no event is left.
+void run_bus_scenario(motion::WishboneMaster& m, motion::MotionDriver& d, const BusOptions& b,
+                      const std::uint64_t& cycle);
 void add_bus_options(CLI::App* vectors, BusCli& c);
 BusOptions bus_options(const BusCli& c);
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);

@@ -28,7 +28,12 @@
 // err_o (a stalled command) sets err_stall.
 // Abort (CTRL.abort): the core is reset on the edge that takes the write, the queue and
 // the entry being written are flushed, the steps waiting in the step/dir stages are
-// dropped (a pulse already out finishes its steplen), STATUS.aborted is set.
+// dropped (a pulse already out finishes its steplen), STATUS.aborted is set. A hard stop
+// (CTRL.hard_stop) is an abort that also sets the sticky err_hard_stop. A soft stop
+// (CTRL.soft_stop, or the watchdog running out: err_watchdog) holds the pace (paced
+// pieces ramp to rest, others stop) and, once at rest with no step on its way to the
+// pins, flushes as an abort does. The watchdog (WATCHDOG: a timeout in clocks, 0 off)
+// restarts on every write to it.
 // Axes (docs/design.md, "Step and direction timing"): each core step goes through a
 // step/dir stage (rtl/dda_stepdir.v) with the axis' four timings; the position counters
 // count the pulses the stages start. Pace: an entry with a cruise speed (its pacing
@@ -96,7 +101,10 @@ module dda_motion #(
 
   wire wr_ctrl   = wr & (adr == `DDA_MOTION_CTRL_ADDR);
   wire commit    = wr_ctrl & wsel[`DDA_MOTION_CTRL_COMMIT_LSB];
-  wire abort     = wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB];
+  wire hard_stop = wr_ctrl & wsel[`DDA_MOTION_CTRL_HARD_STOP_LSB];
+  wire soft_stop = wr_ctrl & wsel[`DDA_MOTION_CTRL_SOFT_STOP_LSB];
+  wire soft_flush;  // a soft stop at rest with no step on its way: its flush
+  wire abort     = (wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB]) | hard_stop | soft_flush;
   wire clear     = wr_ctrl & wsel[`DDA_MOTION_CTRL_CLEAR_LSB];
   wire hold_set  = wr_ctrl & wsel[`DDA_MOTION_CTRL_HOLD_LSB];
   wire hold_clr  = wr_ctrl & wsel[`DDA_MOTION_CTRL_RESUME_LSB];
@@ -201,8 +209,10 @@ module dda_motion #(
   wire [FW:0]   acc_sum = {1'b0, acc_q} + {1'b0, feed_q};
   wire          pace_iterate;
   wire          core_busy_paced = core_busy & paced_q;
+  reg           stopping_q  /* verilator public_flat_rd */;  // a soft stop runs
+  wire          halt    = feed_hold_q | stopping_q;          // the pace heads for rest
   wire          core_ce = core_busy_paced ? pace_iterate
-                        : advance & ~feed_hold_q & (feed_q == '0 | acc_sum[FW]);
+                        : advance & ~halt & (feed_q == '0 | acc_sum[FW]);
 
   // ---- the core ----
   dda_core u_core (
@@ -248,7 +258,7 @@ module dda_motion #(
     .accel_i      (accel_q),
     .vmin_i       (vmin_q),
     .override_i   (override_q),
-    .hold_i       (feed_hold_q),
+    .hold_i       (halt),
     .stepped_i    (core_step_x | core_step_y | core_step_z),
     .v_x_i        (norm_v_x),
     .v_y_i        (norm_v_y),
@@ -276,14 +286,35 @@ module dda_motion #(
       route_q <= '0;
     end else begin
       if (take) feed_q <= entry_feed;
-      if (advance & ~feed_hold_q) acc_q <= acc_sum[FW-1:0];
+      if (advance & ~halt) acc_q <= acc_sum[FW-1:0];
       if (take) paced_q <= entry_cruise != 32'd0;
       if (take) axes_q <= entry_axes;
       route_q <= axes_q;
     end
   end
-  // The pacing settings; a feed hold outlasts an abort (a held machine stays held).
+  // The pacing settings; a feed hold outlasts an abort (a held machine stays held). The
+  // watchdog: wd_cnt_q counts down from each write to WATCHDOG; it bites on its last
+  // clock.
   localparam [31:0] OverrideMax = `DDA_MOTION_OVERRIDE_MAX;
+  reg  [31:0] wd_q     /* verilator public_flat_rd */;
+  reg  [31:0] wd_cnt_q /* verilator public_flat_rd */;
+  wire        wr_wd = wr & (adr == `DDA_MOTION_WATCHDOG_ADDR);
+  wire        bite  = ~wr_wd & (wd_cnt_q == 32'd1);
+  always @(posedge clk_i) begin
+    if (!rst_ni) begin
+      stopping_q <= 1'b0;
+      wd_q       <= '0;
+      wd_cnt_q   <= '0;
+    end else begin
+      stopping_q <= ~abort & (stopping_q | soft_stop | bite);
+      if (wr_wd) begin
+        wd_q     <= wdat;
+        wd_cnt_q <= wdat;
+      end else if (wd_cnt_q != 32'd0) begin
+        wd_cnt_q <= wd_cnt_q - 32'd1;
+      end
+    end
+  end
   always @(posedge clk_i) begin
     if (!rst_ni) begin
       feed_hold_q <= 1'b0;
@@ -357,6 +388,7 @@ module dda_motion #(
   assign step_z_o = sz_step ^ polarity_q[`DDA_MOTION_POLARITY_STEP_Z_LSB];
   assign dir_z_o  = sz_dir ^ polarity_q[`DDA_MOTION_POLARITY_DIR_Z_LSB];
   wire   busy     = core_busy | sx_busy | sy_busy | sz_busy;
+  assign soft_flush = stopping_q & at_rest & ~(sx_busy | sy_busy | sz_busy);
   assign busy_o   = busy;
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -409,6 +441,8 @@ module dda_motion #(
   reg        err_lanes_q    /* verilator public_flat_rd */;
   reg        err_stall_q    /* verilator public_flat_rd */;
   reg        aborted_q      /* verilator public_flat_rd */;
+  reg        err_hard_q     /* verilator public_flat_rd */;
+  reg        err_watchdog_q /* verilator public_flat_rd */;
   reg [2:0]  irq_status_q   /* verilator public_flat_rd */;  // {low, err, done}
   reg [2:0]  irq_enable_q   /* verilator public_flat_rd */;
   reg [LW-1:0] irq_level_q  /* verilator public_flat_rd */;
@@ -418,7 +452,7 @@ module dda_motion #(
   reg [31:0] pos_y_q        /* verilator public_flat_rd */;
   reg [31:0] pos_z_q        /* verilator public_flat_rd */;
 
-  wire err_set = err_overflow | err_partial | err_lanes | core_err;
+  wire err_set = err_overflow | err_partial | err_lanes | core_err | hard_stop | bite;
   wire low_set = take & (level_d < irq_level_q);
   // A piece is done when the core has finished it and its last steps have left the
   // stages: DONE_COUNT, IRQ_STATUS.done and the position counters agree. On the core's
@@ -447,6 +481,8 @@ module dda_motion #(
       err_lanes_q    <= 1'b0;
       err_stall_q    <= 1'b0;
       aborted_q      <= 1'b0;
+      err_hard_q     <= 1'b0;
+      err_watchdog_q <= 1'b0;
       irq_status_q   <= '0;
       irq_enable_q   <= '0;
       irq_level_q    <= '0;
@@ -464,6 +500,8 @@ module dda_motion #(
       err_lanes_q    <= (err_lanes_q & ~clear) | err_lanes;
       err_stall_q    <= (err_stall_q & ~clear) | core_err;
       aborted_q      <= (aborted_q & ~clear) | abort;
+      err_hard_q     <= (err_hard_q & ~clear) | hard_stop;
+      err_watchdog_q <= (err_watchdog_q & ~clear) | bite;
       irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wsel[2:0] : 3'b000))
                         | irq_set;
       if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wdat[2:0];
@@ -505,6 +543,9 @@ module dda_motion #(
         rd[`DDA_MOTION_STATUS_ERR_LANES_LSB]    = err_lanes_q;
         rd[`DDA_MOTION_STATUS_HOLDING_LSB]      = feed_hold_q & ~at_rest;
         rd[`DDA_MOTION_STATUS_HELD_LSB]         = feed_hold_q & at_rest;
+        rd[`DDA_MOTION_STATUS_STOPPING_LSB]     = stopping_q;
+        rd[`DDA_MOTION_STATUS_ERR_HARD_STOP_LSB] = err_hard_q;
+        rd[`DDA_MOTION_STATUS_ERR_WATCHDOG_LSB] = err_watchdog_q;
         rd[`DDA_MOTION_STATUS_LEVEL_LSB+:`DDA_MOTION_STATUS_LEVEL_WIDTH] = level_q;
       end
       `DDA_MOTION_IRQ_STATUS_ADDR: rd[2:0] = irq_status_q;
@@ -544,6 +585,7 @@ module dda_motion #(
       `DDA_MOTION_ACCEL_ADDR:    rd = accel_q;
       `DDA_MOTION_VMIN_ADDR:     rd = vmin_q;
       `DDA_MOTION_OVERRIDE_ADDR: rd[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0] = override_q;
+      `DDA_MOTION_WATCHDOG_ADDR: rd = wd_q;
       default: rd = 32'd0;
     endcase
   end

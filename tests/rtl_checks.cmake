@@ -162,6 +162,21 @@ set_property(TEST vectors.bus.gen_helix vectors.bus.helix vectors.bus.gen_pocket
              vectors.bus.gen_drilling vectors.bus.drilling vectors.bus.gen_lines_3d vectors.bus.lines_3d
              vectors.bus.gen_planes vectors.bus.planes
              APPEND PROPERTY LABELS "program;stepdir")
+# Paced by the pacer (2 MHz, 15,000 steps/s, 1.5e6 steps/s^2: a ramp of 75 steps, short
+# sets): a quarter of 300 x 200 with an override change to 150% and a feed hold and its
+# end; the same with a soft stop; a line with the watchdog running out.
+set(_dda_paced --a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --feed-rate 15000 --accel 1.5e6
+    --vmin 1000 --clock 2e6)
+dda_bus_vec_set(paced ${_dda_paced} --override 150 --override-at 30000 --hold-at 45000 --resume-at 60000 --seed 31)
+dda_bus_vec_set(soft_stop ${_dda_paced} --soft-stop-at 30000 --timing 2,2,1,1 --pipelined --seed 33)
+dda_bus_vec_set(watchdog --line --from 0,0 --to 400,150 --feed-rate 15000 --accel 1.5e6 --clock 2e6 --watchdog 25000 --seed 35)
+set_property(TEST vectors.bus.gen_paced vectors.bus.paced vectors.bus.gen_soft_stop vectors.bus.soft_stop
+             vectors.bus.gen_watchdog vectors.bus.watchdog APPEND PROPERTY LABELS pacer)
+dda_rtl_test(vectors.bus.detects_corruption_paced NEEDS IVERILOG VVP VERILATOR
+             COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 50000 pos_y_q ${_dda_bvec}/paced)
+set_tests_properties(vectors.bus.detects_corruption_paced PROPERTIES FIXTURES_REQUIRED bvec_paced
+                     LABELS "rtl;motion;pacer" ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR}
+                     RESOURCE_LOCK vec_bench_build_bus)
 dda_rtl_test(vectors.bus.detects_corruption NEEDS IVERILOG VVP VERILATOR
              COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 60 pos_x_q ${_dda_bvec}/paper)
 set_tests_properties(vectors.bus.detects_corruption PROPERTIES FIXTURES_REQUIRED bvec_paper LABELS "rtl;motion"

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "motion/motion_model.hpp"
+#include "motion/speed_monitor.hpp"
 
 namespace dda::motion {
 
@@ -73,6 +74,24 @@ class PieceMonitor : public BusTarget {
   std::size_t next_ = 0;
   std::uint64_t done_ = 0, err_ = 0, checked_ = 0;
   bool reset_ = false;
+};
+
+// Measures the motion at the pins: a target between the master and the block that hands
+// every edge's step and direction pins (POLARITY undone) to a SpeedMonitor, which throws
+// GuardError at the first window over its limits.
+class SpeedWatch : public BusTarget {
+ public:
+  SpeedWatch(BusTarget& inner, const MotionLimits& limits) : t_(inner), mon_(limits) {}
+  void set_reset(bool rst_n) override { t_.set_reset(rst_n); }
+  void set_ce(bool ce) override { t_.set_ce(ce); }
+  void tick(const BusIn& bus) override;
+  const BlockOutputs& outputs() const override { return t_.outputs(); }
+  const MotionModel& model() const override { return t_.model(); }
+  const SpeedMonitor& monitor() const { return mon_; }
+
+ private:
+  BusTarget& t_;
+  SpeedMonitor mon_;
 };
 
 // A Wishbone B4 master: one transfer at a time (the block answers one request every

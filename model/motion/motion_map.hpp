@@ -89,7 +89,7 @@ struct Register {
   Access access;
   std::string_view meaning;
 };
-inline constexpr std::array<Register, 25> kRegisters{{
+inline constexpr std::array<Register, 26> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
     {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
@@ -114,6 +114,7 @@ inline constexpr std::array<Register, 25> kRegisters{{
     {"ACCEL", 0x54, Access::RW, "the pacer's tangential acceleration"},
     {"VMIN", 0x58, Access::RW, "the pacer's minimum speed"},
     {"OVERRIDE", 0x5C, Access::RW, "feed override of the paced pieces (reset: 100%)"},
+    {"WATCHDOG", 0x60, Access::RW, "the watchdog's timeout; every write restarts it"},
     {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
 }};
 
@@ -124,7 +125,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 60> kFields{{
+inline constexpr std::array<Field, 66> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -140,6 +141,9 @@ inline constexpr std::array<Field, 60> kFields{{
     {"CTRL", "clear", 2, 1, "clear STATUS.err, its causes and STATUS.aborted"},
     {"CTRL", "hold", 3, 1, "feed hold: paced pieces ramp to rest at ACCEL (others stop), every register kept"},
     {"CTRL", "resume", 4, 1, "end a feed hold: the speed ramps back up at ACCEL (hold and resume together: hold)"},
+    {"CTRL", "soft_stop", 5, 1,
+     "paced pieces ramp to rest at ACCEL (others stop), then, once no step is on its way, a flush as by abort"},
+    {"CTRL", "hard_stop", 6, 1, "stop on this edge as by abort, and set STATUS.err_hard_stop"},
     {"STATUS", "busy", 0, 1, "the core runs a command, or a step is on its way to the pins or a pulse is out"},
     {"STATUS", "empty", 1, 1, "the queue is empty"},
     {"STATUS", "full", 2, 1, "the queue is full"},
@@ -151,6 +155,9 @@ inline constexpr std::array<Field, 60> kFields{{
     {"STATUS", "err_lanes", 8, 1, "cause: an entry word written with other byte lanes than all four (not written)"},
     {"STATUS", "holding", 9, 1, "a feed hold is on and the commanded speed is not 0 yet"},
     {"STATUS", "held", 10, 1, "a feed hold is on and the commanded speed is 0: the core waits"},
+    {"STATUS", "stopping", 11, 1, "a soft stop (CTRL.soft_stop or the watchdog) ramps down toward its flush"},
+    {"STATUS", "err_hard_stop", 12, 1, "cause: a hard stop (CTRL.hard_stop)"},
+    {"STATUS", "err_watchdog", 13, 1, "cause: the watchdog ran out (and started a soft stop)"},
     {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
     {"IRQ_STATUS", "done", 0, 1, "a command finished"},
     {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
@@ -188,6 +195,8 @@ inline constexpr std::array<Field, 60> kFields{{
     {"ACCEL", "accel", 0, kAccelWidth, "steps per clock per clock x 2^-48 (0: no ramp, the speed jumps)"},
     {"VMIN", "vmin", 0, 32, "steps per clock x 2^-32: no paced piece runs slower, the last one ends at it"},
     {"OVERRIDE", "override", 0, kOverrideBits, "x 1/256 (256: 100%); a write above 512 (200%) takes 512"},
+    {"WATCHDOG", "clocks", 0, 32,
+     "0: off; else a soft stop, STATUS.err_watchdog and IRQ_STATUS.err this many clocks after the last write"},
     {"ENTRY", "data", 0, 32,
      "entry word k: command bits 32k .. 32k+31; above the command the axes, then the feed, the pacing fields"},
 }};

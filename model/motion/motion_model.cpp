@@ -193,7 +193,8 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
   if (adr == reg_offset("POS_Z")) return std::uint32_t(get("pos_z_q"));
   if (adr == reg_offset("ENTRY_MASK")) return std::uint32_t(get("mask_q"));
   if (adr == reg_offset("POLARITY")) return std::uint32_t(get("polarity_q"));
-  if (adr == reg_offset("ACCEL") || adr == reg_offset("VMIN") || adr == reg_offset("OVERRIDE")) return read_pace(adr);
+  for (const char* r : {"ACCEL", "VMIN", "OVERRIDE", "WATCHDOG"})
+    if (adr == reg_offset(r)) return read_pace(adr);
   std::uint32_t v = 0;
   for (const char axis : kAxes) {
     for (const auto& t : kTimingFields) {
@@ -239,7 +240,10 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
   w.wdat = (w.rd & ~lanes) | w.wsel;
   const bool wr_ctrl = w.wr && w.adr == reg_offset("CTRL");
   w.commit = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
-  w.abort = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u);
+  w.hard_stop = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "hard_stop").lsb)) & 1u);
+  w.soft_stop = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "soft_stop").lsb)) & 1u);
+  w.abort = (wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u)) || w.hard_stop || soft_flush();
+  w.bite = !(w.wr && w.adr == reg_offset("WATCHDOG")) && get("wd_cnt_q") == 1;
   w.clear = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = w.adr >= kEntryBase && w.adr < kEntryBase + 4u * kEntryWords;
   w.word = (w.adr - kEntryBase) >> 2;
@@ -284,8 +288,8 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.acc_sum = get("acc_q") + feed;
   w.stepped = step[0] || step[1] || step[2];
   pace_wires(false, w);
-  w.core_ce = w.pace.running ? w.pace_iterate
-                             : w.advance && !get("feed_hold_q") && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
+  w.core_ce =
+      w.pace.running ? w.pace_iterate : w.advance && !halt() && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
 
   // The head entry is whole once both its rows are read (fetch_q 2); the RAM reads row 0
   // again after the head moves, while the queue is empty and after reset.
@@ -341,7 +345,7 @@ void MotionModel::load_queue(const Wires& w) {
 }
 
 void MotionModel::load_status(const Wires& w) {
-  const bool err_set = w.err_overflow || w.err_partial || w.err_lanes || w.core_err;
+  const bool err_set = w.err_overflow || w.err_partial || w.err_lanes || w.core_err || w.hard_stop || w.bite;
   const bool low_set = w.take && w.level_d < get("irq_level_q");
   // A piece is done once its last steps (tagged on the core's done_o) have left.
   const bool tags_left = w.ex.tag_left || w.ey.tag_left || w.ez.tag_left;
@@ -358,6 +362,8 @@ void MotionModel::load_status(const Wires& w) {
   reg("err_lanes_q") = (get("err_lanes_q") && !w.clear) || w.err_lanes;
   reg("err_stall_q") = (get("err_stall_q") && !w.clear) || w.core_err;
   reg("aborted_q") = (get("aborted_q") && !w.clear) || w.abort;
+  reg("err_hard_q") = (get("err_hard_q") && !w.clear) || w.hard_stop;
+  reg("err_watchdog_q") = (get("err_watchdog_q") && !w.clear) || w.bite;
   const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (w.wsel & 7u) : 0;
   reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
   if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = w.wdat & 7u;
@@ -389,7 +395,7 @@ void MotionModel::load_feed(const Wires& w) {
     reg("route_q") = 0;
   } else {
     if (w.take) reg("feed_q") = w.entry_feed;
-    if (w.advance && !get("feed_hold_q")) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
+    if (w.advance && !halt()) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
     if (w.take) reg("paced_q") = w.pace.entry.cruise != 0;
     reg("route_q") = get("axes_q");
     if (w.take) reg("axes_q") = w.entry_axes;
@@ -437,6 +443,7 @@ void MotionModel::edge(const BlockInputs& in) {
   set_stage('y', w.ey.next);
   set_stage('z', w.ez.next);
   load_settings(w);
+  load_watchdog(w);
 }
 
 }  // namespace dda::motion

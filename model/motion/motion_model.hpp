@@ -78,7 +78,7 @@ struct BlockReg {
 // Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
 // rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
 // model motion::Pacer holds).
-inline constexpr std::array<BlockReg, 78> kBlockRegs{{
+inline constexpr std::array<BlockReg, 83> kBlockRegs{{
     {"ack_q", Width::One},
     {"dat_q", Width::Word},
     {"head_q", Width::Index},
@@ -157,6 +157,11 @@ inline constexpr std::array<BlockReg, 78> kBlockRegs{{
     {"u_pace.ovr_q", Width::Override},
     {"u_pace.mcnt_q", Width::OverrideCount},
     {"u_pace.eff_q", Width::Speed},
+    {"stopping_q", Width::One},
+    {"wd_q", Width::Word},
+    {"wd_cnt_q", Width::Word},
+    {"err_hard_q", Width::One},
+    {"err_watchdog_q", Width::One},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -232,7 +237,10 @@ class MotionModel {
   void pace_wires(bool take_known, Wires& w) const;
   void load_pace(const Wires& w);
   void load_pace_settings(const Wires& w);
-  std::uint32_t read_pace(std::uint32_t adr) const;  // ACCEL, VMIN, OVERRIDE, STATUS' hold bits
+  std::uint32_t read_pace(std::uint32_t adr) const;  // ACCEL, VMIN, OVERRIDE, WATCHDOG, STATUS' pace bits
+  bool halt() const;                                 // the pace heads for rest: a feed hold or a soft stop
+  bool soft_flush() const;             // a soft stop at rest with no step on its way: its flush on this edge
+  void load_watchdog(const Wires& w);  // stopping_q, wd_q, wd_cnt_q
 
   int depth_log2_;
   CoreModel core_;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block's reference model, its pacing (rtl/dda_motion.v, "pace"): the pacer
-// (motion::Pacer, rtl/dda_pace.v's u_pace) and the pacing settings ACCEL, VMIN, OVERRIDE
-// and the feed hold.
+// (motion::Pacer, rtl/dda_pace.v's u_pace), the pacing settings ACCEL, VMIN, OVERRIDE,
+// the feed hold, the soft stop and the watchdog.
 #include "datapath/hw_params.hpp"
 #include "motion/motion_model.hpp"
 #include "motion/motion_wires.hpp"
@@ -35,7 +35,33 @@ void MotionModel::pace_wires(bool take_known, Wires& w) const {
   in.set.accel = get("accel_q");
   in.set.vmin = std::uint32_t(get("vmin_q"));
   in.set.override_ = std::uint32_t(get("override_q"));
-  in.set.hold = get("feed_hold_q") != 0;
+  in.set.hold = halt();
+}
+
+bool MotionModel::halt() const { return get("feed_hold_q") != 0 || get("stopping_q") != 0; }
+
+bool MotionModel::soft_flush() const {
+  // No step on its way: none out of the core (the stages' step inputs are the core's
+  // step outputs, routed), none waiting in a stage, no pulse out.
+  const PortValues p = CoreModel::outputs(core_.state(), false);
+  bool busy = false;
+  for (const char* o : {"step_x_o", "step_y_o", "step_z_o"}) {
+    std::size_t k = 0;  // the index among the outputs
+    for (std::size_t i = 0; i < hw::port(o); ++i) k += hw::kPorts[i].dir == hw::PortDir::Out;
+    busy = busy || p[k] != 0;
+  }
+  for (const char axis : kAxes) busy = busy || stage(axis).pend || stage(axis).step;
+  return get("stopping_q") != 0 && pacer_.speed() == 0 && !busy;
+}
+
+void MotionModel::load_watchdog(const Wires& w) {
+  reg("stopping_q") = !w.abort && (get("stopping_q") != 0 || w.soft_stop || w.bite);
+  if (w.wr && w.adr == reg_offset("WATCHDOG")) {
+    reg("wd_q") = w.wdat;
+    reg("wd_cnt_q") = w.wdat;
+  } else if (get("wd_cnt_q") != 0) {
+    reg("wd_cnt_q") = get("wd_cnt_q") - 1;
+  }
 }
 
 void MotionModel::load_pace(const Wires& w) {
@@ -75,10 +101,12 @@ std::uint32_t MotionModel::read_pace(std::uint32_t adr) const {
   if (adr == reg_offset("ACCEL")) return std::uint32_t(get("accel_q"));
   if (adr == reg_offset("VMIN")) return std::uint32_t(get("vmin_q"));
   if (adr == reg_offset("OVERRIDE")) return std::uint32_t(get("override_q"));
+  if (adr == reg_offset("WATCHDOG")) return std::uint32_t(get("wd_q"));
   if (adr != reg_offset("STATUS")) return 0;
   const bool hold = get("feed_hold_q") != 0, at_rest = pacer_.speed() == 0;
-  return std::uint32_t(hold && !at_rest) << field_of("STATUS", "holding").lsb | std::uint32_t(hold && at_rest)
-                                                                                    << field_of("STATUS", "held").lsb;
+  const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
+  return bit("holding", hold && !at_rest) | bit("held", hold && at_rest) | bit("stopping", get("stopping_q") != 0) |
+         bit("err_hard_stop", get("err_hard_q") != 0) | bit("err_watchdog", get("err_watchdog_q") != 0);
 }
 
 }  // namespace dda::motion

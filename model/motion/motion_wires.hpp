@@ -16,6 +16,8 @@ struct MotionModel::Wires {
   // value in the others.
   std::uint32_t wsel = 0, wdat = 0;
   bool req = false, wr = false, commit = false, abort = false, clear = false, err_lanes = false;
+  // A hard stop, a soft stop asked for, the watchdog running out on this edge.
+  bool hard_stop = false, soft_stop = false, bite = false;
   // The queue.
   std::uint64_t level = 0, head = 0, tail = 0, level_d = 0, entry_feed = 0, entry_axes = 0, fetch_d = 0;
   bool empty = false, entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false;

@@ -66,7 +66,7 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
             << fetch_q << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
             << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir
             << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q
-            << core_ready << pace_iterate << paced_q << feed_hold_q;
+            << core_ready << pace_iterate << paced_q << feed_hold_q << stopping_q << pace_speed;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -120,7 +120,7 @@ void dda_motion::bind_pace() {
   u_pace.accel_i(accel_q);
   u_pace.vmin_i(vmin_q);
   u_pace.override_i(override_q);
-  u_pace.hold_i(feed_hold_q);
+  u_pace.hold_i(pace_halt);
   u_pace.stepped_i(stepped);
   u_pace.v_x_i(norm_v_x);
   u_pace.v_y_i(norm_v_y);
@@ -135,8 +135,13 @@ void dda_motion::comb() {
   const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
   const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
   const std::uint32_t wsel = wb_dat_i.read() & lane_mask(wb_sel_i.read());
-  const bool abort =
-      req && wb_we_i.read() && adr == kCtrl && ((wsel >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  const auto ctrl = [&](std::string_view f) {
+    return req && wb_we_i.read() && adr == kCtrl && ((wsel >> std::uint32_t(motion::field_of("CTRL", f).lsb)) & 1u);
+  };
+  // A soft stop at rest with no step on its way flushes as an abort does.
+  const bool soft_flush =
+      stopping_q.read() && pace_speed.read() == 0 && !(sx_busy.read() || sy_busy.read() || sz_busy.read());
+  const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush;
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
@@ -152,8 +157,10 @@ void dda_motion::comb() {
   const std::uint64_t feed = feed_q.read(), sum = acc_q.read() + feed;
   const bool running_paced = core_busy.read() && paced_q.read();
   pace_running.write(running_paced);
+  const bool halt = feed_hold_q.read() || stopping_q.read();  // the pace heads for rest
+  pace_halt.write(halt);
   core_ce.write(running_paced ? pace_iterate.read()
-                              : adv && !feed_hold_q.read() && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
+                              : adv && !halt && (feed == 0 || ((sum >> motion::kFeedWidth) & 1u) != 0));
   const bool tk = fetch_q.read() == 2 && level_q.read() != 0 && core_ready.read() && !abort;
   take.write(tk);
   next_queued.write(level_q.read() > (tk ? 1u : 0u));
@@ -200,7 +207,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            bit("err_overflow", err_overflow_q.read()) | bit("err_partial", err_partial_q.read()) |
            bit("err_stall", err_stall_q.read()) | bit("aborted", aborted_q.read()) |
            bit("err_lanes", err_lanes_q.read()) | bit("holding", feed_hold_q.read() && pace_speed.read() != 0) |
-           bit("held", feed_hold_q.read() && pace_speed.read() == 0) |
+           bit("held", feed_hold_q.read() && pace_speed.read() == 0) | bit("stopping", stopping_q.read()) |
+           bit("err_hard_stop", err_hard_q.read()) | bit("err_watchdog", err_watchdog_q.read()) |
            level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
@@ -216,6 +224,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   if (adr == motion::reg_offset("ACCEL")) return accel_q.read();
   if (adr == motion::reg_offset("VMIN")) return vmin_q.read();
   if (adr == motion::reg_offset("OVERRIDE")) return override_q.read();
+  if (adr == motion::reg_offset("WATCHDOG")) return wd_q.read();
   std::uint32_t v = 0;
   const auto regs = timing_regs();
   for (std::size_t i = 0; i < regs.size(); ++i) {
@@ -232,7 +241,7 @@ struct dda_motion::Decode {
   // dat: the write data; wsel: in the byte lanes selected; wdat: merged with the addressed
   // register's value in the others.
   std::uint32_t adr = 0, dat = 0, wsel = 0, wdat = 0, word = 0, tail = 0, level_d = 0, head_d = 0, fetch_d = 0;
-  bool req = false, wr = false, abort = false, clear = false;
+  bool req = false, wr = false, abort = false, clear = false, hard_stop = false, soft_stop = false, bite = false;
   bool entry_ok = false, commit_ok = false, err_overflow = false, err_partial = false, err_lanes = false, take = false;
 };
 
@@ -249,7 +258,13 @@ dda_motion::Decode dda_motion::decode() const {
   if (d.wr) d.wdat = (read(d.adr) & ~lanes) | d.wsel;  // (it reads the whole map: only for a write)
   const bool wr_ctrl = d.wr && d.adr == kCtrl;
   const bool commit = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "commit").lsb)) & 1u);
-  d.abort = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "abort").lsb)) & 1u);
+  const auto bit = [&](std::string_view f) {
+    return wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", f).lsb)) & 1u) != 0;
+  };
+  d.hard_stop = bit("hard_stop");
+  d.soft_stop = bit("soft_stop");
+  d.abort = bit("abort") || d.hard_stop || flush.read();  // flush: the abort wire, soft flush included
+  d.bite = !(d.wr && d.adr == motion::reg_offset("WATCHDOG")) && wd_cnt_q.read() == 1;
   d.clear = wr_ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = d.adr >= motion::kEntryBase && d.adr < motion::kEntryBase + 4u * kEntryWords;
   d.word = (d.adr - motion::kEntryBase) >> 2;
@@ -292,15 +307,15 @@ void dda_motion::seq_ram(const Decode& d) {
 }
 
 void dda_motion::seq_reset() {
-  for (auto* s :
-       {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q, &err_lanes_q})
+  for (auto* s : {&ack_q, &done_wait_q, &err_q, &err_overflow_q, &err_partial_q, &err_stall_q, &aborted_q, &err_lanes_q,
+                  &stopping_q, &err_hard_q, &err_watchdog_q})
     s->write(false);
   for (auto* s :
        {&dat_q,       &head_q,        &tail_q,       &level_q,     &mask_q,      &irq_status_q,  &irq_enable_q,
         &irq_level_q, &done_count_q,  &err_count_q,  &pos_x_q,     &pos_y_q,     &feed_q,        &acc_q,
         &steplen_x_q, &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q, &steplen_y_q, &stepspace_y_q, &dirsetup_y_q,
         &dirhold_y_q, &polarity_q,    &pos_z_q,      &fetch_q,     &steplen_z_q, &stepspace_z_q, &dirsetup_z_q,
-        &dirhold_z_q, &axes_q,        &route_q,      &accel_q,     &vmin_q})
+        &dirhold_z_q, &axes_q,        &route_q,      &accel_q,     &vmin_q,      &wd_q,          &wd_cnt_q})
     s->write(0);
   paced_q.write(false);
   feed_hold_q.write(false);
@@ -341,7 +356,7 @@ void dda_motion::seq_status(const Decode& d) {
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
   done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
-  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr;
+  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr || d.hard_stop || d.bite;
   const bool low_set = d.take && d.level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
   // Sticky bits: a cause on the edge of a clear stays set.
@@ -351,6 +366,8 @@ void dda_motion::seq_status(const Decode& d) {
   err_lanes_q.write((err_lanes_q.read() && !d.clear) || d.err_lanes);
   err_stall_q.write((err_stall_q.read() && !d.clear) || cerr);
   aborted_q.write((aborted_q.read() && !d.clear) || d.abort);
+  err_hard_q.write((err_hard_q.read() && !d.clear) || d.hard_stop);
+  err_watchdog_q.write((err_watchdog_q.read() && !d.clear) || d.bite);
   const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.wsel & 7u) : 0u;
   irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
   if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.wdat & 7u);
@@ -410,6 +427,14 @@ void dda_motion::seq_pace_settings(const Decode& d) {
   if (d.wr && d.adr == motion::reg_offset("ACCEL")) accel_q.write(d.wdat);
   if (d.wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
   if (d.wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
+  // The soft stop runs until its flush; the watchdog counts down from each write.
+  stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite));
+  if (d.wr && d.adr == motion::reg_offset("WATCHDOG")) {
+    wd_q.write(d.wdat);
+    wd_cnt_q.write(d.wdat);
+  } else if (wd_cnt_q.read() != 0) {
+    wd_cnt_q.write(wd_cnt_q.read() - 1);
+  }
 }
 
 void dda_motion::seq() {

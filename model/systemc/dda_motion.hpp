@@ -47,8 +47,11 @@ SC_MODULE(dda_motion) {
       dirhold_x_q{"dirhold_x_q"}, steplen_y_q{"steplen_y_q"}, stepspace_y_q{"stepspace_y_q"},
       dirsetup_y_q{"dirsetup_y_q"}, dirhold_y_q{"dirhold_y_q"}, polarity_q{"polarity_q"};
   // Pacing: the running entry has a cruise speed; the feed hold and the settings.
-  sc_core::sc_signal<bool> paced_q{"paced_q"}, feed_hold_q{"feed_hold_q"};
+  sc_core::sc_signal<bool> paced_q{"paced_q"}, feed_hold_q{"feed_hold_q"}, stopping_q{"stopping_q"};
   sc_core::sc_signal<std::uint32_t> accel_q{"accel_q"}, vmin_q{"vmin_q"}, override_q{"override_q"};
+  // The watchdog (timeout, count) and the sticky causes of the stops.
+  sc_core::sc_signal<std::uint32_t> wd_q{"wd_q"}, wd_cnt_q{"wd_cnt_q"};
+  sc_core::sc_signal<bool> err_hard_q{"err_hard_q"}, err_watchdog_q{"err_watchdog_q"};
 
  private:
   int depth_log2_;
@@ -59,7 +62,7 @@ SC_MODULE(dda_motion) {
   std::array<sc_core::sc_signal<std::uint32_t>, motion::kPaceWords> entry_pace;  // motion::kPaceFields' order
   // The pacer's wires.
   sc_core::sc_signal<bool> advance{"advance"}, pace_running{"pace_running"}, take{"take"}, next_queued{"next_queued"},
-      stepped{"stepped"}, pace_iterate{"pace_iterate"};
+      stepped{"stepped"}, pace_iterate{"pace_iterate"}, pace_halt{"pace_halt"};
   sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
       norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
   // Wires.
@@ -103,7 +106,7 @@ SC_MODULE(dda_motion) {
   void seq_status(const Decode& d);
   void seq_feed(const Decode& d);
   void seq_settings(const Decode& d);
-  void seq_pace_settings(const Decode& d);  // feed_hold_q, accel_q, vmin_q, override_q
+  void seq_pace_settings(const Decode& d);  // feed_hold_q, accel_q, vmin_q, override_q, stopping_q, the watchdog
 };
 
 }  // namespace dda::sc

@@ -80,6 +80,7 @@ module dda_fpga_top #(
     assign rd_row[16*l+:16] = rd_q;
   end
 
+  wire [`DDA_ACC_WIDTH-1:0] norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z;
   dda_core #(.Impl(Impl)) u_core (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -96,7 +97,13 @@ module dda_fpga_top #(
     .busy_o      (busy_o),
     .done_o      (done_o),
     .err_o       (err_o),
-    .iter_o      (iter_o)
+    .iter_o      (iter_o),
+    .norm_v_x_o  (norm_v_x),  // the pacer's norm operands: no pacer here
+    .norm_v_y_o  (norm_v_y),
+    .norm_v_z_o  (norm_v_z),
+    .norm_cap_o  (norm_cap),
+    .norm_cap_z_o(norm_cap_z)
   );
+  wire unused_norm = &{1'b0, norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z};
 
 endmodule

@@ -21,6 +21,7 @@ module dda_vec_tb;
   reg  [`DDA_CMD_WIDTH-1:0]    cmd = {`DDA_CMD_WIDTH{1'b0}};
   wire                         cmd_ready, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, done, err, iter;
 
+  wire [`DDA_ACC_WIDTH-1:0] norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z;
   dda_core dut (
     .clk_i       (clk),
     .rst_ni      (rst_n),
@@ -37,8 +38,14 @@ module dda_vec_tb;
     .busy_o      (busy),
     .done_o      (done),
     .err_o       (err),
-    .iter_o      (iter)
+    .iter_o      (iter),
+    .norm_v_x_o  (norm_v_x),  // the pacer's norm operands: no pacer here
+    .norm_v_y_o  (norm_v_y),
+    .norm_v_z_o  (norm_v_z),
+    .norm_cap_o  (norm_cap),
+    .norm_cap_z_o(norm_cap_z)
   );
+  wire unused_norm = &{1'b0, norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z};
 
   reg [`DDA_CMD_WIDTH-1:0]     cmds [0:MaxCmds-1];
   reg [31:0]                   counts [0:1];

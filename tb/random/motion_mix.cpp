@@ -55,6 +55,9 @@ class Mix {
   Point queue_batch(const std::vector<Plan>& batch, const Pacing& pc);
   bool cut_short(const Plan& first);
   void abort_batch();
+  void hard_stop_batch();
+  void soft_stop_batch(bool watchdog);
+  std::uint32_t wait_status(std::string_view field, bool value);
   void reset_batch();
   void overflow(const Plan& first);
   void check_position(Point want);
@@ -214,20 +217,78 @@ Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
   return want;
 }
 
-// Ends three sixteenths of the batches early (an abort, a reset, an overflow); true if
-// this one was.
+// Ends a quarter of the batches early (an abort, a reset, an overflow, a hard stop, a
+// soft stop, the watchdog running out); true if this one was.
 bool Mix::cut_short(const Plan& first) {
-  const unsigned end = unsigned(rng_() % 16);
-  if (end == 0) {
-    abort_batch();
-  } else if (end == 1) {
-    reset_batch();
-  } else if (end == 2) {
-    overflow(first);
-  } else {
-    return false;
+  switch (rng_() % 24) {
+    case 0:
+      abort_batch();
+      return true;
+    case 1:
+      reset_batch();
+      return true;
+    case 2:
+      overflow(first);
+      return true;
+    case 3:
+      hard_stop_batch();
+      return true;
+    case 4:
+      soft_stop_batch(false);
+      return true;
+    case 5:
+      soft_stop_batch(true);
+      return true;
+    default:
+      return false;
   }
-  return true;
+}
+
+// Polls STATUS until `field` reads `value`; returns STATUS then.
+std::uint32_t Mix::wait_status(std::string_view field, bool value) {
+  for (int i = 0; i < 1000000; ++i) {
+    const std::uint32_t s = m_.read(reg_offset("STATUS"));
+    if ((get_field("STATUS", field, s) != 0) == value) return s;
+    m_.idle(int(rng_() % 16));
+  }
+  throw GuardError("motion mix: STATUS." + std::string(field) + " did not become " + (value ? "1" : "0"));
+}
+
+// A hard stop in the middle: an abort with STATUS.err_hard_stop.
+void Mix::hard_stop_batch() {
+  m_.idle(int(rng_() % 300));
+  ctrl("hard_stop");
+  mon_.flush();
+  ++st_.hard_stops;
+  const std::uint32_t s = m_.read(reg_offset("STATUS"));
+  if (!get_field("STATUS", "aborted", s) || !get_field("STATUS", "err_hard_stop", s) ||
+      get_field("STATUS", "level", s) != 0) {
+    throw GuardError("motion mix: a hard stop left the queue non-empty or was not reported");
+  }
+  ctrl("clear");
+}
+
+// A soft stop in the middle, asked for or by the watchdog (a timeout of 500 to 5500
+// clocks not rewritten): a ramp to rest, then the flush (STATUS.aborted; with the
+// watchdog STATUS.err_watchdog). The timing monitor checks on every edge that the
+// position counters count exactly the pulses that went out.
+void Mix::soft_stop_batch(bool watchdog) {
+  if (watchdog) {
+    m_.write(reg_offset("WATCHDOG"), 500 + std::uint32_t(rng_() % 5000));
+    wait_status("err_watchdog", true);
+    ++st_.watchdogs;
+  } else {
+    m_.idle(int(rng_() % 3000));
+    ctrl("soft_stop");
+    ++st_.soft_stops;
+  }
+  const std::uint32_t s = wait_status("stopping", false);
+  m_.write(reg_offset("WATCHDOG"), 0);
+  if (!get_field("STATUS", "aborted", s) || get_field("STATUS", "level", s) != 0) {
+    throw GuardError("motion mix: a soft stop did not flush the queue or was not reported");
+  }
+  mon_.flush();
+  ctrl("clear");
 }
 
 // An abort in the middle: the queue flushed, STATUS.aborted set.

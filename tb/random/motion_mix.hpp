@@ -10,10 +10,11 @@
 // drawn apart so the cycles stay bounded), random output polarity and a random feed increment per piece (0, the full
 // rate, half of the time); a fifth of the batches are short arcs paced by the pacer instead (a random cruise speed,
 // minimum speed and acceleration, the entries' exit speeds planned over the batch), with an override change and a
-// feed hold and resume while they run. Every edge passes the timing monitor (StepDirMonitor: the four timings, no step
-// lost or added); every piece that finishes must leave the position counters on its end point (PieceMonitor), and after
-// every batch that ran to its end they must equal the batch's start plus the arcs' moves (throws GuardError otherwise);
-// the target itself checks every edge.
+// feed hold and resume while they run; a quarter of the batches are cut short (an abort, a reset, an overflow, a hard
+// stop, a soft stop, the watchdog running out). Every edge passes the timing monitor (StepDirMonitor: the four timings,
+// no step lost or added); every piece that finishes must leave the position counters on its end point (PieceMonitor),
+// and after every batch that ran to its end they must equal the batch's start plus the arcs' moves (throws GuardError
+// otherwise); the target itself checks every edge.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,7 @@ struct MixStats {
   std::uint64_t spatial = 0, pulses_z = 0;  // arcs that move the third axis, its pulses
   std::uint64_t turned = 0;                 // of those, turned onto another plane (the entry's axes)
   std::uint64_t paced_batches = 0, paced_pieces = 0, holds = 0;  // batches paced by the pacer
+  std::uint64_t hard_stops = 0, soft_stops = 0, watchdogs = 0;   // batches cut short so
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).

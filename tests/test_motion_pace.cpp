@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block pacing its entries (docs/design.md, "Pacing in the block"), on the
+// RTL beside the reference model (every register after every edge), measured at the
+// pins by the speed monitor (SpeedWatch): a paced circle at its feed and acceleration, a
+// feed hold and its stopping distance, a soft stop, the watchdog, a hard stop and the
+// pacing registers.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "motion/motion_bus.hpp"
+#include "motion_harness.hpp"
+#include "planner/planner.hpp"
+#include "report/pace_report.hpp"
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+constexpr double kClock = 16e6;  // Hz, the nominal clock the figures below are at
+constexpr double kFeed = 1e5;    // steps/s
+constexpr double kAccel = 2e7;   // steps/s^2
+constexpr double kVmin = 2000;   // steps/s
+
+std::uint32_t speed_field(double steps_per_s) { return dda::speed_field(steps_per_s, kClock); }
+std::uint32_t accel_field(double a) { return std::uint32_t(dda::accel_field(a, kClock)); }
+
+// The RTL beside the reference model, its pins watched, a master and a driver.
+struct Bench {
+  MotionHarness h;
+  SpeedWatch watch{h, MotionLimits{kClock, kFeed, kAccel}};
+  WishboneMaster m{watch, 1, false, 0};
+  MotionDriver d{m, 2, false};
+
+  Bench() {
+    watch.set_reset(false);
+    m.idle(2);
+    watch.set_reset(true);
+    d.set_pacing(accel_field(kAccel), speed_field(kVmin));
+  }
+  std::uint32_t status() { return m.read(reg_offset("STATUS")); }
+  bool status_bit(std::string_view f) { return get_field("STATUS", f, status()) != 0; }
+  // Queues the plan's pieces paced at the feed, from its start.
+  void queue(const Plan& plan) {
+    std::vector<Command> cmds;
+    for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
+    const std::vector<PaceEntry> e =
+        pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel), kFeed, kAccel, kClock);
+    d.preset(plan.from);
+    for (std::size_t i = 0; i < plan.pieces.size(); ++i) d.queue(plan.pieces[i].cmd, 0, plan.pieces[i].rot, e[i]);
+  }
+  // How far the pins took the tool from the start (along a line from the origin: its path).
+  double gone() const {
+    const auto p = watch.monitor().position();
+    return std::hypot(double(p[0]), double(p[1]));
+  }
+  void wait_for(std::string_view f, bool v) {
+    for (int i = 0; i < 200000 && status_bit(f) != v; ++i) m.idle(8);
+    REQUIRE(status_bit(f) == v);
+  }
+};
+
+Plan line() { return plan_line(Point{}, Point{3000, 1000, 0}, Preload::Half); }
+// The braking distance from the feed at the acceleration, as the targets bound a stop.
+double stop_bound() { return kFeed * kFeed / (2 * kAccel) * 1.01 + 1; }
+
+}  // namespace
+
+TEST_CASE("pace block: a line and a circle at their feed, the acceleration measured at the pins", "[motion][pacer]") {
+  // On the line the monitor's windows (50,600 clocks, 316 steps at the feed) measure the
+  // path; on a circle of radius 200 their chords cut it short, so there the monitor
+  // guards the limits only.
+  {
+    Bench b;
+    const Plan l = line();
+    b.queue(l);
+    b.d.drain();
+    CHECK(b.d.position() == l.to);
+    const SpeedMonitor& mon = b.watch.monitor();
+    INFO(mon.summary());
+    CHECK(mon.peak_speed() > 0.97 * kFeed);  // it reached the feed (the monitor fails a run above it)
+    CHECK(mon.peak_accel() > 0.5 * kAccel);  // and ramped
+  }
+  Bench b;  // (one Verilated model at a time)
+  ArcSpec s;
+  s.a = s.b = 200;
+  s.preload = Preload::Half;
+  const Plan circle = plan_arc(s);
+  b.queue(circle);
+  b.d.drain();
+  CHECK(b.d.position() == circle.to);
+}
+
+TEST_CASE("pace block: a feed hold stops within the braking distance, holds, resumes to the end", "[motion][pacer]") {
+  Bench b;
+  const Plan l = line();
+  b.queue(l);
+  b.m.idle(200000);  // at the feed by now (the ramp takes 80,000 clocks)
+  const double at_hold = b.gone();
+  b.d.hold();
+  CHECK(b.status_bit("holding"));
+  b.wait_for("held", true);
+  const double at_rest = b.gone();
+  INFO("stopped " << at_rest - at_hold << " steps after the hold, bound " << stop_bound());
+  CHECK(at_rest - at_hold <= stop_bound());
+  CHECK(at_rest - at_hold > 0.9 * kFeed * kFeed / (2 * kAccel));  // a ramp, not a jump
+  const Point held = b.d.position();
+  b.m.idle(20000);
+  CHECK(b.d.position() == held);
+  CHECK(b.status_bit("busy"));
+  b.d.resume();
+  CHECK_FALSE(b.status_bit("held"));
+  b.d.drain();
+  CHECK(b.d.position() == l.to);
+}
+
+TEST_CASE("pace block: a soft stop ramps to rest and flushes, the positions exact", "[motion][pacer]") {
+  Bench b;
+  const Plan l = line();
+  b.queue(l);
+  b.m.idle(200000);
+  const double at_stop = b.gone();
+  b.m.write(reg_offset("CTRL"), field_bit("CTRL", "soft_stop"));
+  b.wait_for("stopping", false);
+  const std::uint32_t st = b.status();
+  CHECK(get_field("STATUS", "aborted", st));
+  CHECK(get_field("STATUS", "level", st) == 0);
+  CHECK_FALSE(get_field("STATUS", "busy", st));
+  CHECK(b.gone() - at_stop <= stop_bound());
+  const auto p = b.watch.monitor().position();  // what the pins sent, counted apart
+  CHECK(b.d.position() == Point{p[0], p[1], p[2]});
+}
+
+TEST_CASE("pace block: the watchdog runs out into a soft stop, an error and an interrupt", "[motion][pacer]") {
+  Bench b;
+  b.m.write(reg_offset("IRQ_ENABLE"), field_bit("IRQ_ENABLE", "err"));
+  const Plan l = line();
+  b.queue(l);
+  b.m.write(reg_offset("WATCHDOG"), 50000);
+  b.m.idle(45000);
+  b.m.write(reg_offset("WATCHDOG"), 100000);  // rewritten in time: no bite
+  const std::uint64_t armed = b.h.cycle();
+  CHECK(b.m.read(reg_offset("WATCHDOG")) == 100000);
+  b.wait_for("err_watchdog", true);
+  CHECK(b.h.cycle() - armed >= 100000);
+  CHECK(b.h.cycle() - armed < 100000 + 200);
+  CHECK(b.h.outputs().irq);
+  b.wait_for("stopping", false);
+  CHECK(get_field("STATUS", "aborted", b.status()));
+  const auto p = b.watch.monitor().position();
+  CHECK(b.d.position() == Point{p[0], p[1], p[2]});
+  CHECK(b.d.position() != l.to);  // stopped on the way
+}
+
+TEST_CASE("pace block: a hard stop stops on its edge with an error; the pacing registers", "[motion][pacer]") {
+  MotionHarness h;  // (no speed watch: a hard stop is an infinite deceleration)
+  WishboneMaster m{h, 1, false, 0};
+  MotionDriver d{m, 2, false};
+  h.set_reset(false);
+  m.idle(2);
+  h.set_reset(true);
+  CHECK(m.read(reg_offset("OVERRIDE")) == kOverrideOne);
+  d.set_override(1000);
+  CHECK(m.read(reg_offset("OVERRIDE")) == 2 * kOverrideOne);  // clamped to 200%
+  d.set_override(128);
+  CHECK(m.read(reg_offset("OVERRIDE")) == 128);
+  d.set_override(kOverrideOne);
+  d.set_pacing(accel_field(kAccel), speed_field(kVmin));
+  CHECK(m.read(reg_offset("ACCEL")) == accel_field(kAccel));
+  CHECK(m.read(reg_offset("VMIN")) == speed_field(kVmin));
+  const Plan l = line();
+  std::vector<Command> cmds;
+  for (const auto& p : l.pieces) cmds.push_back(p.cmd);
+  const auto e = pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel), kFeed, kAccel, kClock);
+  for (std::size_t i = 0; i < l.pieces.size(); ++i) d.queue(l.pieces[i].cmd, 0, 0, e[i]);
+  m.idle(150000);
+  m.write(reg_offset("CTRL"), field_bit("CTRL", "hard_stop"));
+  const std::uint32_t st = m.read(reg_offset("STATUS"));
+  CHECK(get_field("STATUS", "err_hard_stop", st));
+  CHECK(get_field("STATUS", "err", st));
+  CHECK(get_field("STATUS", "aborted", st));
+  CHECK(get_field("STATUS", "level", st) == 0);
+  const Point at = d.position();
+  m.idle(5000);
+  CHECK(d.position() == at);
+  m.write(reg_offset("CTRL"), field_bit("CTRL", "clear"));
+  CHECK_FALSE(get_field("STATUS", "err_hard_stop", m.read(reg_offset("STATUS"))));
+}
