@@ -197,6 +197,39 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
   m.idle(4);
 }
 
+namespace {
+// The manifest's record of how the set was made (docs/vectors.md).
+nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, std::uint64_t ncycles) {
+  nlohmann::ordered_json j;
+  j["generator"] = "dda vectors --bus (the motion block's reference model, model/motion/motion_model.hpp)";
+  j["command_line"] = opt.command_line;
+  j["cycles"] = ncycles;
+  j["queue_depth_log2"] = motion::kMaxDepthLog2;
+  j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
+  j["abort_after"] = bus.abort_after;
+  const auto timing = [](const motion::StageTimings& t) {
+    return nlohmann::ordered_json{
+        {"steplen", t.steplen}, {"stepspace", t.stepspace}, {"dirsetup", t.dirsetup}, {"dirhold", t.dirhold}};
+  };
+  j["timing_x"] = timing(bus.timing_x);
+  j["timing_y"] = timing(bus.timing_y);
+  j["timing_z"] = timing(bus.timing_z);
+  j["polarity"] = bus.polarity;
+  if (bus.feed_rate > 0) {
+    j["feed_rate_steps_per_s"] = bus.feed_rate;
+    j["clock_hz"] = bus.clock_hz;
+  } else {
+    j["feed_increment"] = bus.feed;
+  }
+  if (bus.paced) {
+    j["paced"] = {{"accel_steps_per_s2", bus.pace.accel}, {"vmin_steps_per_s", bus.pace.vmin}};
+  }
+  j["scenario"] = {{"override", bus.override_},  {"override_at", bus.override_at},   {"hold_at", bus.hold_at},
+                   {"resume_at", bus.resume_at}, {"soft_stop_at", bus.soft_stop_at}, {"watchdog", bus.watchdog}};
+  return j;
+}
+}  // namespace
+
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
   if (plans.empty()) throw InputError("vectors need at least one arc");
   // The per-cycle files stream into the set's temporary directory; every line of them
@@ -238,32 +271,7 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
     drive(h, plans, opt, bus);
   }
 
-  nlohmann::ordered_json j;
-  j["generator"] = "dda vectors --bus (the motion block's reference model, model/motion/motion_model.hpp)";
-  j["command_line"] = opt.command_line;
-  j["cycles"] = ncycles;
-  j["queue_depth_log2"] = motion::kMaxDepthLog2;
-  j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
-  j["abort_after"] = bus.abort_after;
-  const auto timing = [](const motion::StageTimings& t) {
-    return nlohmann::ordered_json{
-        {"steplen", t.steplen}, {"stepspace", t.stepspace}, {"dirsetup", t.dirsetup}, {"dirhold", t.dirhold}};
-  };
-  j["timing_x"] = timing(bus.timing_x);
-  j["timing_y"] = timing(bus.timing_y);
-  j["timing_z"] = timing(bus.timing_z);
-  j["polarity"] = bus.polarity;
-  if (bus.feed_rate > 0) {
-    j["feed_rate_steps_per_s"] = bus.feed_rate;
-    j["clock_hz"] = bus.clock_hz;
-  } else {
-    j["feed_increment"] = bus.feed;
-  }
-  if (bus.paced) {
-    j["paced"] = {{"accel_steps_per_s2", bus.pace.accel}, {"vmin_steps_per_s", bus.pace.vmin}};
-  }
-  j["scenario"] = {{"override", bus.override_},  {"override_at", bus.override_at},   {"hold_at", bus.hold_at},
-                   {"resume_at", bus.resume_at}, {"soft_stop_at", bus.soft_stop_at}, {"watchdog", bus.watchdog}};
+  nlohmann::ordered_json j = bus_manifest(opt, bus, ncycles);
   j["files"] = {{"counts.hex", "the number of cycles"},
                 {"cycle_in.hex", "per cycle: the inputs applied before the edge (layout cycle_in)"},
                 {"cycle_exp.hex", "per cycle: the outputs and registers after the edge (layout cycle_exp)"}};

@@ -514,7 +514,8 @@ TEST_CASE("cli: vectors --bus writes the motion block's set, and --pipelined and
   r = run_dda(s, "vectors " + kPaper + " --pipelined --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK(r.err ==
-        "dda: error: --pipelined, --abort-after, --timing*, --polarity, --feed* and --clock go with --bus only\n");
+        "dda: error: --pipelined, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, "
+        "--override*, --hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only\n");
   CHECK_FALSE(fs::exists(bad));
   r = run_dda(s, "vectors " + kPaper + " --bus --abort-after 0 --out-dir " + bad.string());
   CHECK(r.status == 2);

@@ -155,7 +155,7 @@ TEST_CASE("pace block: the watchdog runs out into a soft stop, an error and an i
   CHECK(b.d.position() != l.to);  // stopped on the way
 }
 
-TEST_CASE("pace block: a hard stop stops on its edge with an error; the pacing registers", "[motion][pacer]") {
+TEST_CASE("pace block: a hard stop stops on its edge with an error, and the pacing registers", "[motion][pacer]") {
   MotionHarness h;  // (no speed watch: a hard stop is an infinite deceleration)
   WishboneMaster m{h, 1, false, 0};
   MotionDriver d{m, 2, false};
