@@ -4,6 +4,28 @@
 
 namespace dda::motion {
 
+namespace {
+// The pacing registers, the pacer's state and its decision.
+template <typename Reg>
+hw::WaveGroup pace_group(const Reg& reg) {
+  return {"Pace",
+          {reg("paced_q"),
+           reg("feed_hold_q"),
+           reg("stopping_q"),
+           reg("accel_q"),
+           reg("vmin_q"),
+           reg("override_q"),
+           reg("u_pace.v_q"),
+           reg("u_pace.ph_q"),
+           reg("u_pace.s_q"),
+           reg("u_pace.rem_q"),
+           reg("u_pace.eff_q"),
+           reg("u_pace.busy_q"),
+           reg("u_pace.pend_q"),
+           {"pace_iterate", 1}}};
+}
+}  // namespace
+
 std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
   const auto reg = [&](std::string_view name, bool is_signed = false) {
     return hw::WaveSignal{std::string(name), width_bits(kBlockRegs[breg(name)].width, depth_log2), is_signed};
@@ -62,20 +84,7 @@ std::string gtkw(std::string_view file, std::string_view top, int depth_log2) {
                 reg("axes_q"),
                 reg("route_q"),
                 {"core_ce", 1}}});
-  g.push_back({"Pace",
-               {reg("paced_q"),
-                reg("feed_hold_q"),
-                reg("accel_q"),
-                reg("vmin_q"),
-                reg("override_q"),
-                reg("u_pace.v_q"),
-                reg("u_pace.ph_q"),
-                reg("u_pace.s_q"),
-                reg("u_pace.rem_q"),
-                reg("u_pace.eff_q"),
-                reg("u_pace.busy_q"),
-                reg("u_pace.pend_q"),
-                {"pace_iterate", 1}}});
+  g.push_back(pace_group(reg));
   hw::WaveGroup core{"Core", {}};
   for (const auto& r : hw::kSignals) {
     if (r.kind == hw::SigKind::Reg && (r.group == "Control" || r.group == "Counters")) {

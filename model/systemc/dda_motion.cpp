@@ -235,6 +235,14 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   return v;
 }
 
+std::array<sc_core::sc_signal<std::uint32_t>*, 12> dda_motion::timing_regs() const {
+  auto* m = const_cast<dda_motion*>(this);  // (the const reads of read() and the writes of seq_settings())
+  return {&m->steplen_x_q,  &m->stepspace_x_q, &m->dirsetup_x_q, &m->dirhold_x_q,   &m->steplen_y_q,  &m->stepspace_y_q,
+          &m->dirsetup_y_q, &m->dirhold_y_q,   &m->steplen_z_q,  &m->stepspace_z_q, &m->dirsetup_z_q, &m->dirhold_z_q};
+}
+
+// seq() in parts, in the order it runs them: the decode, the RAM lanes, then the reset or
+// the registers group by group as rtl/dda_motion.v's always blocks hold them.
 // The decode of this edge's bus request and queue (the RTL's wires), read from the ports
 // and registers before the edge.
 struct dda_motion::Decode {

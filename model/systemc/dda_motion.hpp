@@ -60,44 +60,33 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<cmd_t> entry{"entry"};     // the command of {rd_row_q, row0_q}
   sc_core::sc_signal<std::uint32_t> entry_feed{"entry_feed"}, entry_axes{"entry_axes"};
   std::array<sc_core::sc_signal<std::uint32_t>, motion::kPaceWords> entry_pace;  // motion::kPaceFields' order
-  // The pacer's wires.
+  // Wires: the pacer's, the core's, the stages'.
   sc_core::sc_signal<bool> advance{"advance"}, pace_running{"pace_running"}, take{"take"}, next_queued{"next_queued"},
       stepped{"stepped"}, pace_iterate{"pace_iterate"}, pace_halt{"pace_halt"};
   sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
       norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
-  // Wires.
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};
   sc_core::sc_signal<bool> step_z{"step_z"}, dir_z{"dir_z"};  // the core's axes routed to the stages (route_q)
   sc_core::sc_signal<bool> c_step_x{"c_step_x"}, c_step_y{"c_step_y"}, c_step_z{"c_step_z"}, c_dir_x{"c_dir_x"},
-      c_dir_y{"c_dir_y"}, c_dir_z{"c_dir_z"};                   // the core's step outputs
-  sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"};  // flush: the abort of this cycle
+      c_dir_y{"c_dir_y"}, c_dir_z{"c_dir_z"};                                 // the core's step outputs
+  sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"}, hold{"hold"};  // flush: the abort of this cycle
   sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
       sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};
   sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
       sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
   sc_core::sc_signal<bool> sz_step{"sz_step"}, sz_dir{"sz_dir"}, sz_hold{"sz_hold"}, sz_rise{"sz_rise"},
       sz_rise_dir{"sz_rise_dir"}, sz_wait{"sz_wait"}, sz_tag_left{"sz_tag_left"}, sz_busy{"sz_busy"};
-  sc_core::sc_signal<bool> hold{"hold"};
 
   // The timing registers in motion::kTimingFields' order, X's, Y's then Z's.
-  std::array<sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() {
-    return {&steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,   &steplen_y_q,  &stepspace_y_q,
-            &dirsetup_y_q, &dirhold_y_q,   &steplen_z_q,  &stepspace_z_q, &dirsetup_z_q, &dirhold_z_q};
-  }
-  std::array<const sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() const {
-    return {&steplen_x_q,  &stepspace_x_q, &dirsetup_x_q, &dirhold_x_q,   &steplen_y_q,  &stepspace_y_q,
-            &dirsetup_y_q, &dirhold_y_q,   &steplen_z_q,  &stepspace_z_q, &dirsetup_z_q, &dirhold_z_q};
-  }
+  std::array<sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() const;
   void bind_stages();
   void bind_pace();
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;
-  // seq() in parts, in the order it runs them: the decode, the RAM lanes, then the reset
-  // or the registers group by group as rtl/dda_motion.v's always blocks hold them.
-  struct Decode;
+  struct Decode;  // seq() in parts (dda_motion.cpp)
   Decode decode() const;
   void seq_ram(const Decode& d);
   void seq_reset();
