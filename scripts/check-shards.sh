@@ -3,7 +3,7 @@
 # Shards add up: the totals of N shards of a regression, merged, equal one unsharded
 # run's (every case draws from its own (seed, index) stream). Prints both and "equal".
 #   usage: scripts/check-shards.sh [systemc|rtl|cosim] [cases] [shards] [seed]
-#   (ctest regress.shards_add_up runs it with 200 cases on the RTL; docs/verification.md
+#   (ctest regress.shards_add_up runs it with 80 cases on the RTL; docs/verification.md
 #   quotes 2,000)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
