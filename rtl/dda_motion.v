@@ -242,8 +242,9 @@ module dda_motion #(
 
   // ---- the pacer ----
   wire [`DDA_ACC_WIDTH-1:0] norm_v_x, norm_v_y, norm_v_z, norm_cap, norm_cap_z;
-  wire [47:0] pace_speed;
-  dda_pace u_pace (
+  localparam integer PaceRF = 48;  // the pacer's speed fraction bits (kRampFrac), set on it below
+  wire [PaceRF-1:0] pace_speed;
+  dda_pace #(.RF(PaceRF)) u_pace (
     .clk_i        (clk_i),
     .rst_ni       (rst_ni & ~abort),
     .advance_i    (advance),
@@ -268,7 +269,7 @@ module dda_motion #(
     .iterate_o    (pace_iterate),
     .speed_o      (pace_speed)
   );
-  wire at_rest = pace_speed == 48'd0;
+  wire at_rest = pace_speed == '0;
 
   // ---- axes: which stage each of the core's axes drives ----
   // axes_q is the running entry's; route_q the one of the core's step outputs, which

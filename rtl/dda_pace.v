@@ -15,7 +15,8 @@
 // times the override, clamped to its limit; the exit speed (0 with no next piece) once
 // the braking distance s, less the exit speed's, reaches the distance still to go less
 // 2^-MarginShift step; never below vmin; 0 on a hold. The product of the cruise speed and
-// the override is formed a bit per clock, OW clocks after a take or an override change. s adds v on a ramp step
+// the override is formed a bit per clock, OW clocks after a take or an override change (a
+// take clamps the product in force to the new limit at once). s adds v on a ramp step
 // up from above vmin and takes the new v off on one down to above vmin.
 `include "dda_params.vh"
 
@@ -104,6 +105,11 @@ module dda_pace #(
   wire [MW-1:0]  msum   = macc_q + (mplier_q[0] ? mcand_q : '0);
   wire [MW-1:0]  lim    = MW'(limit_q) << (RF - SF);
   wire [MW-1:0]  eff_d  = msum < lim ? msum : lim;
+  // A take clamps the product in force to the new entry's limit at once (the new
+  // product is OW clocks away).
+  wire [RF-1:0]  eff_m  = mcnt_q == 4'd1 ? eff_d[RF-1:0] : eff_q;
+  wire [RF-1:0]  lim_in = RF'(limit_i) << (RF - SF);
+  wire [RF-1:0]  eff_n  = take_i && lim_in < eff_m ? lim_in : eff_m;
 
   // The target: the cruise speed; the exit speed on the way down; 0 on a hold.
   wire [RF-1:0] t_ex  = next_queued_i ? RF'(exit_q) << (RF - SF) : '0;
@@ -149,8 +155,8 @@ module dda_pace #(
         mcand_q  <= mcand_q << 1;
         mplier_q <= mplier_q >> 1;
         mcnt_q   <= mcnt_q - 4'd1;
-        if (mcnt_q == 4'd1) eff_q <= eff_d[RF-1:0];
       end
+      eff_q <= eff_n;
       if (mstart) begin
         ovr_q    <= override_i;
         mplier_q <= override_i;

@@ -139,3 +139,36 @@ TEST_CASE("pacer: an override is reached through the ramp and clamped to the pie
   CHECK(speed_half == Approx(feed / 2).epsilon(1e-6));
   CHECK(speed_over == Approx(feed).epsilon(1e-6));  // 200% clamped to the limit: the cruise speed
 }
+
+TEST_CASE("pacer: a take clamps the cruise speed in force to the new entry's limit at once", "[pacer]") {
+  // Two entries by hand: the first cruises at its limit, the second's limit is half of
+  // it. From the edge of the take on, the target (the held product of cruise speed and
+  // override, until the new product is formed) is within the new limit; the ramp then
+  // never takes v above it.
+  Pacer p;
+  Pacer::In in;
+  in.advance = true;
+  in.set.accel = std::uint64_t{1} << 30;  // (1/16 step/clock in 2^14 clocks)
+  in.norm = NormOperands{1000, 0, 0, 1u << 20, 1u << 20};
+  in.running = true;
+  in.take = true;
+  in.entry = PaceEntry{1u << 28, 1u << 28, 0, 1u << 30, 0};
+  p.edge(in, false);
+  in.take = false;
+  for (int i = 0; i < 20000; ++i) p.edge(in, false);
+  REQUIRE(p.cruise_speed() == std::uint64_t{1u << 28} << (kRampFrac - kSpeedFrac));
+  REQUIRE(p.speed() == p.cruise_speed());
+  in.take = true;
+  in.entry = PaceEntry{1u << 28, 1u << 27, 0, 1u << 30, 0};
+  p.edge(in, false);
+  in.take = false;
+  const std::uint64_t limit = std::uint64_t{1u << 27} << (kRampFrac - kSpeedFrac);
+  CHECK(p.cruise_speed() == limit);
+  CHECK(p.override_busy() > 0);  // the new product is still being formed
+  for (int i = 0; i < 20000; ++i) {
+    p.edge(in, false);
+    REQUIRE(p.target(in) <= limit);
+    REQUIRE(p.speed() <= std::max(limit, std::uint64_t{1u << 28} << (kRampFrac - kSpeedFrac)));
+  }
+  CHECK(p.speed() == limit);
+}

@@ -186,6 +186,7 @@ void Pacer::edge(const In& in, bool stepped) {
   }
   if (in.take) {
     e_ = in.entry;
+    eff_ = std::min(eff_, ramp(e_.limit));  // the product in force, within the new limit at once
     rem_ = dist_of_len(e_.length);
     busy_ = kNormLatency;
     pending_ = false;

@@ -61,13 +61,17 @@ void dda_pace::comb() {
 // - 8), 8 = log2 kOverrideOne).
 void dda_pace::multiply() {
   const std::uint64_t msum = macc_q.read() + ((mplier_q.read() & 1u) ? mcand_q.read() : 0);
+  std::uint64_t eff = eff_q.read();
   if (mcnt_q.read() != 0) {
     macc_q.write(msum);
     mcand_q.write(mcand_q.read() << 1);
     mplier_q.write(mplier_q.read() >> 1);
     mcnt_q.write(mcnt_q.read() - 1);
-    if (mcnt_q.read() == 1) eff_q.write(std::min(msum, ramp(limit_q.read())));
+    if (mcnt_q.read() == 1) eff = std::min(msum, ramp(limit_q.read()));
   }
+  // A take clamps the product in force to the new limit at once.
+  if (take_i.read()) eff = std::min(eff, ramp(limit_i.read()));
+  eff_q.write(eff);
   if (take_i.read() || override_i.read() != ovr_q.read()) {
     const std::uint64_t cruise = take_i.read() ? cruise_i.read() : cruise_q.read();
     ovr_q.write(override_i.read());
