@@ -408,7 +408,7 @@ void dda_motion::seq_feed(const Decode& d) {
     if (d.take) axes_q.write(entry_axes.read());
     if (d.take) feed_q.write(entry_feed.read());
     if (d.take) paced_q.write(entry_pace[0].read() != 0);
-    if (ce_i.read() && !hold.read() && !feed_hold_q.read())
+    if (ce_i.read() && !hold.read() && !pace_halt.read())  // (a feed hold or a soft stop)
       acc_q.write(std::uint32_t((std::uint64_t{acc_q.read()} + feed_q.read()) & fmask));
   }
 }
