@@ -98,11 +98,12 @@ std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1
 
 void SpeedWatch::tick(const BusIn& bus) {
   t_.tick(bus);
+  if (!mon_) return;
   const BlockOutputs& o = t_.outputs();
   const std::uint64_t pol = t_.model().regs()[breg("polarity_q")];
   const auto pin = [&](bool v, std::string_view f) { return v != (((pol >> field_of("POLARITY", f).lsb) & 1u) != 0); };
-  mon_.edge({pin(o.step_x, "step_x"), pin(o.step_y, "step_y"), pin(o.step_z, "step_z")},
-            {pin(o.dir_x, "dir_x"), pin(o.dir_y, "dir_y"), pin(o.dir_z, "dir_z")});
+  mon_->edge({pin(o.step_x, "step_x"), pin(o.step_y, "step_y"), pin(o.step_z, "step_z")},
+             {pin(o.dir_x, "dir_x"), pin(o.dir_y, "dir_y"), pin(o.dir_z, "dir_z")});
 }
 
 void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -78,20 +79,27 @@ class PieceMonitor : public BusTarget {
 
 // Measures the motion at the pins: a target between the master and the block that hands
 // every edge's step and direction pins (POLARITY undone) to a SpeedMonitor, which throws
-// GuardError at the first window over its limits.
+// GuardError at the first window over its limits. It watches from its construction with
+// limits, or between watch() (the machine at rest) and unwatch() (before a stop the
+// limits do not hold for, such as an abort).
 class SpeedWatch : public BusTarget {
  public:
-  SpeedWatch(BusTarget& inner, const MotionLimits& limits) : t_(inner), mon_(limits) {}
+  explicit SpeedWatch(BusTarget& inner) : t_(inner) {}
+  SpeedWatch(BusTarget& inner, const MotionLimits& limits) : t_(inner) { watch(limits); }
   void set_reset(bool rst_n) override { t_.set_reset(rst_n); }
   void set_ce(bool ce) override { t_.set_ce(ce); }
   void tick(const BusIn& bus) override;
   const BlockOutputs& outputs() const override { return t_.outputs(); }
   const MotionModel& model() const override { return t_.model(); }
-  const SpeedMonitor& monitor() const { return mon_; }
+  // A new monitor from here on (the one before, if any, is dropped).
+  void watch(const MotionLimits& limits) { mon_.emplace(limits); }
+  void unwatch() { mon_.reset(); }
+  bool watching() const { return mon_.has_value(); }
+  const SpeedMonitor& monitor() const { return mon_.value(); }
 
  private:
   BusTarget& t_;
-  SpeedMonitor mon_;
+  std::optional<SpeedMonitor> mon_;
 };
 
 // A Wishbone B4 master: one transfer at a time (the block answers one request every

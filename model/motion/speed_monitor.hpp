@@ -63,6 +63,7 @@ class SpeedMonitor {
   const std::vector<Sample>& samples() const { return samples_; }
   double peak_speed() const { return peak_speed_; }
   double peak_accel() const { return peak_accel_; }  // the largest |acceleration|
+  const MotionLimits& limits() const { return lim_; }
   std::uint64_t sub_clocks() const { return sub_; }
   std::array<std::int64_t, 3> position() const { return pos_; }
   // A one-line summary of the figures against the limits.

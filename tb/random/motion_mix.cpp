@@ -29,7 +29,8 @@ class Mix {
         paced_arcs_(seed + 5, std::min<std::int64_t>(max_axis, 30), 4, ArcKind::Program),
         spatial_(seed + 4, max_axis, 4, ArcKind::Spatial),
         timing_(t),
-        mon_(timing_),
+        speed_(timing_),
+        mon_(speed_),
         m_(mon_, seed + 1, pipelined, 20),
         d_(m_, seed + 2) {
     m_.each_cycle = [this] { mon_.set_ce(rng_() % 10 != 0); };
@@ -53,6 +54,7 @@ class Mix {
   void set_outputs(unsigned kind, bool large);
   void partial_commit();
   Point queue_batch(const std::vector<Plan>& batch, const Pacing& pc);
+  void slow_some(std::vector<PaceEntry>& pace, const Pacing& pc);
   bool cut_short(const Plan& first);
   void abort_batch();
   void hard_stop_batch();
@@ -61,11 +63,14 @@ class Mix {
   void reset_batch();
   void overflow(const Plan& first);
   void check_position(Point want);
+  void watch_speed(const Pacing& pc);
+  void unwatch_speed();
 
   MixStats st_;
   std::mt19937_64 rng_;
   RandomArcs gen_, short_arcs_, paced_arcs_, spatial_;
   StepDirMonitor timing_;
+  SpeedWatch speed_;  // on a paced batch, from rest to its end or its soft stop
   PieceMonitor mon_;
   WishboneMaster m_;
   MotionDriver d_;
@@ -78,7 +83,6 @@ MixStats Mix::run(std::uint64_t arcs) {
   while (st_.arcs < arcs) {
     ++st_.batches;
     // One to four arcs back to back from a preset position; a twentieth of the batches
-    // are one short arc with large timings.
     // are one short arc with large timings; a fifth are paced by the pacer (shorter
     // arcs: a paced step takes a hundred clocks or more).
     const unsigned kind = unsigned(rng_() % 20);
@@ -90,12 +94,16 @@ MixStats Mix::run(std::uint64_t arcs) {
     const Pacing pc = draw_pacing(paced);
     d_.preset(batch.front().from);
     if (rng_() % 10 == 0) partial_commit();
+    watch_speed(pc);
     const Point want = queue_batch(batch, pc);
     st_.arcs += batch.size();
-    if (cut_short(batch.front())) continue;
-    if (pc.on) pace_events();
-    d_.drain();
-    check_position(want);
+    const bool cut = cut_short(batch.front());
+    if (!cut) {
+      if (pc.on) pace_events();
+      d_.drain();
+      check_position(want);
+    }
+    unwatch_speed();
   }
   st_.piece_checks = mon_.checked();
   st_.pulses = timing_.pulses(0) + timing_.pulses(1) + timing_.pulses(2);
@@ -200,6 +208,7 @@ Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
       for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
     pace = pace_entries(cmds, pc.cruise, pc.vmin, pc.accel, std::ldexp(pc.cruise, -kSpeedFrac),
                         std::ldexp(pc.accel, -kRampFrac), 1.0);
+    slow_some(pace, pc);
   }
   std::size_t k = 0;
   for (const auto& p : batch) {
@@ -217,10 +226,30 @@ Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
   return want;
 }
 
+// A quarter of a paced batch's pieces slower than the rest: cruise speed and limit 30
+// to 90% of the batch's, the exits into and out of them no faster (a take then lowers
+// the limit under a running ramp; a piece may enter above its cruise speed and ramp
+// down at the acceleration).
+void Mix::slow_some(std::vector<PaceEntry>& pace, const Pacing& pc) {
+  std::uniform_real_distribution<double> u(0.3, 0.9);
+  for (std::size_t k = 0; k < pace.size(); ++k) {
+    if (rng_() % 4 != 0) continue;
+    const auto c = std::uint32_t(pc.cruise * u(rng_));
+    pace[k].cruise = pace[k].limit = c;
+    for (const std::size_t j : {k, k - 1}) {
+      if (j >= pace.size() || pace[j].exit <= c) continue;  // (k - 1 wraps for k = 0)
+      pace[j].exit = c;
+      pace[j].brake_exit = brake_distance(c, pc.vmin, pc.accel);
+    }
+  }
+}
+
 // Ends a quarter of the batches early (an abort, a reset, an overflow, a hard stop, a
 // soft stop, the watchdog running out); true if this one was.
 bool Mix::cut_short(const Plan& first) {
-  switch (rng_() % 24) {
+  const unsigned how = unsigned(rng_() % 24);
+  if (how < 4) unwatch_speed();  // an infinite deceleration: no limit holds
+  switch (how) {
     case 0:
       abort_batch();
       return true;
@@ -332,6 +361,29 @@ void Mix::overflow(const Plan& first) {
   ctrl("abort");
   mon_.flush();
   ctrl("clear");
+}
+
+// The speed monitor on a paced batch, from rest (the batch before drained): the path
+// speed at the pins within the cruise speed (the override is clamped to it, the entries'
+// limit) and, with a ramp, the acceleration within the batch's. Clocks as time (a
+// clock of 1 Hz: steps per clock); ce_i low only slows the motion.
+void Mix::watch_speed(const Pacing& pc) {
+  if (!pc.on) return;
+  MotionLimits lim;
+  lim.clock_hz = 1;
+  lim.max_speed = std::ldexp(pc.cruise, -kSpeedFrac);
+  lim.max_accel = std::ldexp(pc.accel, -kRampFrac);
+  speed_.watch(lim);
+  ++st_.speed_watched;
+}
+
+// The batch's windows into the statistics; the monitor off.
+void Mix::unwatch_speed() {
+  if (!speed_.watching()) return;
+  st_.speed_windows += speed_.monitor().samples().size();
+  st_.peak_speed_share =
+      std::max(st_.peak_speed_share, speed_.monitor().peak_speed() / speed_.monitor().limits().max_speed);
+  speed_.unwatch();
 }
 
 // After a batch that ran to its end: the position counters on the batch's end.

@@ -31,6 +31,8 @@ struct MixStats {
   std::uint64_t turned = 0;                 // of those, turned onto another plane (the entry's axes)
   std::uint64_t paced_batches = 0, paced_pieces = 0, holds = 0;  // batches paced by the pacer
   std::uint64_t hard_stops = 0, soft_stops = 0, watchdogs = 0;   // batches cut short so
+  std::uint64_t speed_watched = 0, speed_windows = 0;            // paced batches under the speed monitor, its windows
+  double peak_speed_share = 0;                                   // the fastest window over its batch's cruise speed
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).
