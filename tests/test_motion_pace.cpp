@@ -50,8 +50,13 @@ struct Bench {
     const std::vector<PaceEntry> e =
         pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel), kFeed, kAccel, kClock);
     d.preset(plan.from);
+    start = h.cycle();
     for (std::size_t i = 0; i < plan.pieces.size(); ++i) d.queue(plan.pieces[i].cmd, 0, plan.pieces[i].rot, e[i]);
   }
+  // Seconds since the first entry was queued (after drain(): the run's time, within a
+  // status poll).
+  double seconds() const { return double(h.cycle() - start) / kClock; }
+  std::uint64_t start = 0;
   // How far the pins took the tool from the start (along a line from the origin: its path).
   double gone() const {
     const auto p = watch.monitor().position();
@@ -66,6 +71,9 @@ struct Bench {
 Plan line() { return plan_line(Point{}, Point{3000, 1000, 0}, Preload::Half); }
 // The braking distance from the feed at the acceleration, as the targets bound a stop.
 double stop_bound() { return kFeed * kFeed / (2 * kAccel) * 1.01 + 1; }
+// The ideal trapezoid's time over the line (up at the acceleration to the feed, down to
+// the minimum speed), which the run is to follow within 2%.
+double line_ideal() { return trapezoid_seconds(std::hypot(3000.0, 1000.0), kFeed, kAccel, kVmin); }
 
 }  // namespace
 
@@ -83,6 +91,9 @@ TEST_CASE("pace block: a line and a circle at their feed, the acceleration measu
     INFO(mon.summary());
     CHECK(mon.peak_speed() > 0.97 * kFeed);  // it reached the feed (the monitor fails a run above it)
     CHECK(mon.peak_accel() > 0.5 * kAccel);  // and ramped
+    WARN("the line: " << b.seconds() << " s, the ideal trapezoid " << line_ideal() << " s, "
+                      << 100 * (b.seconds() / line_ideal() - 1) << "% over");
+    CHECK(std::fabs(b.seconds() / line_ideal() - 1) <= 0.02);
   }
   Bench b;  // (one Verilated model at a time)
   ArcSpec s;
@@ -100,6 +111,7 @@ TEST_CASE("pace block: a feed hold stops within the braking distance, holds, res
   b.queue(l);
   b.m.idle(200000);  // at the feed by now (the ramp takes 80,000 clocks)
   const double at_hold = b.gone();
+  const std::uint64_t hold_at = b.h.cycle();
   b.d.hold();
   CHECK(b.status_bit("holding"));
   b.wait_for("held", true);
@@ -111,10 +123,19 @@ TEST_CASE("pace block: a feed hold stops within the braking distance, holds, res
   b.m.idle(20000);
   CHECK(b.d.position() == held);
   CHECK(b.status_bit("busy"));
+  const double held_s = double(b.h.cycle() - hold_at) / kClock;
   b.d.resume();
   CHECK_FALSE(b.status_bit("held"));
   b.d.drain();
   CHECK(b.d.position() == l.to);
+  // The ideal: the trapezoid plus the time from the hold to the resume (a stop and a
+  // start at the acceleration cost together what cruising over their distance would,
+  // plus the time at rest).
+  const double ideal = line_ideal() + held_s;
+  WARN("the line with a feed hold: stopped " << at_rest - at_hold << " steps after the hold (bound " << stop_bound()
+                                             << "), " << b.seconds() << " s, ideal " << ideal << " s, "
+                                             << 100 * (b.seconds() / ideal - 1) << "% over");
+  CHECK(std::fabs(b.seconds() / ideal - 1) <= 0.02);
 }
 
 TEST_CASE("pace block: a soft stop ramps to rest and flushes, the positions exact", "[motion][pacer]") {
