@@ -90,6 +90,10 @@ std::string compare_block(const BlockRegs& got, const Signals& got_core, const M
 MotionHarness::MotionHarness(const std::string& vcd)
     : ctx_(std::make_unique<VerilatedContext>()), model_(kHarnessDepthLog2) {
   ctx_->traceEverOn(!vcd.empty());
+  // Verilator (5.006) files a model's scopes under the thread's current context when
+  // the model is built and looks them up there again when it is destroyed: make it this
+  // harness' context both times, so that two harnesses can live side by side.
+  Verilated::threadContextp(ctx_.get());
   top_ = std::make_unique<Vdda_motion>(ctx_.get(), "dut");
   top_->clk_i = 0;
   top_->rst_ni = 0;
@@ -103,6 +107,8 @@ MotionHarness::MotionHarness(const std::string& vcd)
 MotionHarness::~MotionHarness() {
   if (vcd_) vcd_->close();
   if (top_) top_->final();
+  Verilated::threadContextp(ctx_.get());  // (see the constructor)
+  top_.reset();
 }
 
 void MotionHarness::tick(const BusIn& bus) {

@@ -11,6 +11,10 @@ namespace dda::rtl {
 
 RtlHarness::RtlHarness(const std::string& vcd) : ctx_(std::make_unique<VerilatedContext>()) {
   ctx_->traceEverOn(!vcd.empty());
+  // Verilator (5.006) files a model's scopes under the thread's current context when
+  // the model is built and looks them up there again when it is destroyed: make it this
+  // harness' context both times, so that two harnesses can live side by side.
+  Verilated::threadContextp(ctx_.get());
   top_ = std::make_unique<Vdda_core>(ctx_.get(), "dut");
   top_->clk_i = 0;
   top_->rst_ni = 0;
@@ -24,6 +28,8 @@ RtlHarness::RtlHarness(const std::string& vcd) : ctx_(std::make_unique<Verilated
 RtlHarness::~RtlHarness() {
   close_trace();
   if (top_) top_->final();
+  Verilated::threadContextp(ctx_.get());  // (see the constructor)
+  top_.reset();
 }
 
 void RtlHarness::close_trace() {

@@ -95,7 +95,7 @@ TEST_CASE("pace block: a line and a circle at their feed, the acceleration measu
                       << 100 * (b.seconds() / line_ideal() - 1) << "% over");
     CHECK(std::fabs(b.seconds() / line_ideal() - 1) <= 0.02);
   }
-  Bench b;  // (one Verilated model at a time)
+  Bench b;
   ArcSpec s;
   s.a = s.b = 200;
   s.preload = Preload::Half;
@@ -209,4 +209,22 @@ TEST_CASE("pace block: a hard stop stops on its edge with an error, and the paci
   CHECK(d.position() == at);
   m.write(reg_offset("CTRL"), field_bit("CTRL", "clear"));
   CHECK_FALSE(get_field("STATUS", "err_hard_stop", m.read(reg_offset("STATUS"))));
+}
+
+TEST_CASE("pace block: two blocks side by side, each in its own Verilator context", "[motion][pacer]") {
+  // Verilator files a model's scopes under the thread's current context: two harnesses
+  // alive at once, destroyed in reverse order, deadlocked on the first one's scopes
+  // (or corrupted memory) until each harness made its own context current.
+  {
+    Bench b1;
+    Bench b2;
+    b1.m.idle(100);
+    b2.m.idle(100);
+    CHECK(b1.status_bit("empty"));
+    CHECK(b2.status_bit("empty"));
+  }
+  Bench b3;
+  b3.queue(plan_line(Point{}, Point{30, 10, 0}, Preload::Half));
+  b3.d.drain();
+  CHECK(b3.d.position() == Point{30, 10, 0});
 }
