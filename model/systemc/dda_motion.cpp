@@ -242,9 +242,9 @@ std::array<sc_core::sc_signal<std::uint32_t>*, 12> dda_motion::timing_regs() con
 }
 
 // seq() in parts, in the order it runs them: the decode, the RAM lanes, then the reset or
-// the registers group by group as rtl/dda_motion.v's always blocks hold them.
-// The decode of this edge's bus request and queue (the RTL's wires), read from the ports
-// and registers before the edge.
+// the registers group by group as rtl/dda_motion.v's always blocks hold them. First the
+// decode of this edge's bus request and queue (the RTL's wires), read from the ports and
+// registers before the edge.
 struct dda_motion::Decode {
   // dat: the write data; wsel: in the byte lanes selected; wdat: merged with the addressed
   // register's value in the others.
