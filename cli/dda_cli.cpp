@@ -45,6 +45,7 @@
 #include "report/pace_report.hpp"
 #include "report/program_report.hpp"
 #include "report/report.hpp"
+#include "speed_cmd.hpp"
 #include "temp_files.hpp"
 #include "vectors.hpp"
 
@@ -136,6 +137,7 @@ struct FeedCli {
 // Every subcommand's options, as the command line fills them in.
 struct Cli {
   ArcOptions trace, path, stats, plot;
+  SpeedCli stats_speed;
   std::string plot_view = "xy";
   std::string plot_speed;  // --speed FILE.svg
   CLI::Option* plot_speed_opt = nullptr;
@@ -150,7 +152,10 @@ void set_up_trace(CLI::App* sub, Cli& c) { add_arc_options(sub, c.trace, "csv, t
 
 void set_up_path(CLI::App* sub, Cli& c) { add_arc_options(sub, c.path, "csv or json", "csv"); }
 
-void set_up_stats(CLI::App* sub, Cli& c) { add_arc_options(sub, c.stats, "text or json", "text"); }
+void set_up_stats(CLI::App* sub, Cli& c) {
+  add_arc_options(sub, c.stats, "text or json (and csv with --program)", "text");
+  add_speed_options(sub, c.stats_speed);
+}
 
 void set_up_vectors(CLI::App* sub, Cli& c) {
   VectorsCli& v = c.vectors;
@@ -214,6 +219,7 @@ void run_stats(const Cli& c, int, char**) {
       "format", c.stats.format,
       {{"text", BlockStatsFormat::Text}, {"csv", BlockStatsFormat::Csv}, {"json", BlockStatsFormat::Json}});
   if (fmt == BlockStatsFormat::Csv && !c.stats.prog.given()) throw InputError("--format csv goes with --program");
+  if (c.stats_speed.wanted()) return run_speed_report(c.stats, c.stats_speed);
   run_arc_command(c.stats, [&](std::ostream& os, const RunTarget& t) -> std::unique_ptr<RunSink> {
     if (t.program) {
       return std::make_unique<program::BlockStatsSink>(

@@ -109,6 +109,7 @@ Program read(std::string_view text, const std::string& file, const ReadOptions& 
   p.ended = s.ended;
   p.dialect = s.dialect;
   p.plane = s.plane;
+  p.dwell_after = s.dwell_after;
   return p;
 }
 

@@ -58,6 +58,9 @@ enum class Machine { Mill, Lathe };
 enum class Dialect { LinuxCnc, Hnc, Fanuc };
 std::string_view dialect_name(Dialect d);  // "linuxcnc", "hnc", "fanuc"
 enum class MoveKind { Rapid, Line, ArcCw, ArcCcw, EllipseCw, EllipseCcw };
+// How F is read: units per minute (G94; G98 on HNC's and Fanuc's lathes), units per
+// spindle revolution (G95; G99 there), inverse time (G93: the move takes 1/F minutes).
+enum class FeedMode { PerMinute, PerRevolution, InverseTime };
 std::string_view kind_name(MoveKind k);  // "rapid", "line", "arc cw", ...
 
 struct SourcePos {
@@ -90,8 +93,23 @@ struct Move {
   // The machine coordinate along the axis normal to the move's plane (G17: Z) at its
   // start and at its end: they differ on a 3-D line, a plunge or a helix.
   Length w = 0, w_to = 0;
-  // The feed in force (F, program units per minute as written, 0 if none yet).
+  // The feed in force (F as written, 0 if none yet), read by feed_mode, in inches when
+  // inch (G20) is in force, else millimetres.
   double feed = 0;
+  FeedMode feed_mode = FeedMode::PerMinute;
+  bool inch = false;
+  // The spindle: S in force (0 if none yet), in rpm under G97 or, under G96 (css),
+  // the surface speed in m/min (ft/min in inches).
+  double spindle = 0;
+  bool css = false;
+  // Path control in force (the speed planner reads it): exact stop (G61, G61.1) rests at
+  // the block's end; continuous (G64) blends within path_tolerance (G64 P; 0: none).
+  bool exact_stop = false;
+  Length path_tolerance = 0;
+  // What the program asks between the move before and this one: a dwell (G04, seconds)
+  // and a program stop (M00, M01); the tool is at rest for both.
+  double dwell = 0;
+  bool stop = false;
 };
 
 // A word that does not move the tool, accepted and reported ("S1200", "M03", "G54").
@@ -106,7 +124,8 @@ struct Program {
   Point2 start;
   bool ended = false;  // M02 or M30 seen (text after it is not read)
   Dialect dialect = Dialect::LinuxCnc;
-  int plane = 170;  // the plane of the two axes (G17 170, G18 180, G19 190)
+  int plane = 170;         // the plane of the two axes (G17 170, G18 180, G19 190)
+  double dwell_after = 0;  // a dwell (seconds) after the last move
 };
 
 struct ReadOptions {
@@ -137,6 +156,8 @@ struct ReadSummary {
   bool ended = false;
   Dialect dialect = Dialect::LinuxCnc;
   int plane = 170;
+  // A dwell (seconds) after the last move, before the program's end.
+  double dwell_after = 0;
 };
 inline constexpr std::size_t kMaxIgnoredKept = 1000;
 // Reads the program from `in` (a seekable stream: tellg/seekg must work) and calls

@@ -100,6 +100,7 @@ void Reader::block(const Line& l) {
       fail(b.group[kNonModal]->pos, "G53 moves in machine coordinates: it needs an axis word");
     }
   }
+  if (b.stop) stop_ = true;
   if (b.end) sum_.ended = true;
 }
 
@@ -116,6 +117,10 @@ void Reader::sort_word(const Word& w, Block& b) {
       m_code(w, b);
       break;
     case 'S':
+      if (b.spindle) fail(w.pos, "S twice in one block");
+      b.spindle = &w;
+      ignore(w);
+      break;
     case 'T':
       ignore(w);
       break;
@@ -294,6 +299,9 @@ void Reader::m_code(const Word& w, Block& b) {
   const std::int64_t m = integer(w);
   if (m == 2 || m == 30) {
     b.end = true;
+  } else if (m == 0 || m == 1) {
+    b.stop = true;  // (M01, the optional stop, as with its switch on)
+    ignore(w);
   } else if ((m >= 0 && m <= 9) || m == 19 || (m >= 48 && m <= 53) || m == 60 || m == 61 || (m >= 62 && m <= 68) ||
              (m >= 100 && m <= 199)) {
     ignore(w);  // stops, spindle, tool change, coolant, overrides, I/O: they do not move the tool
@@ -330,7 +338,22 @@ void Reader::set_group(Block& b, Group g, const Word& w, const char* what) const
 
 // The modal codes take effect before the block's motion (RS274's order).
 void Reader::set_modes(const Block& b) {
-  if (b.group[kFeedMode]) m_.inverse_time = tenths(*b.group[kFeedMode]) == 930;
+  if (b.group[kFeedMode]) {
+    const int g = tenths(*b.group[kFeedMode]);
+    m_.inverse_time = g == 930;
+    m_.per_rev = g == 950 || g == 990;
+  }
+  if (b.spindle) {
+    const Word& w = *b.spindle;
+    const double s = double(w.mantissa) / double(pow10(w.decimals));
+    if (s < 0) fail(w.pos, "the spindle speed S must not be negative");
+    m_.spindle = s;
+  }
+  if (b.group[kSpindle] && tenths(*b.group[kSpindle]) != 500) m_.css = tenths(*b.group[kSpindle]) == 960;
+  if (b.group[kPath]) {
+    m_.exact_stop = tenths(*b.group[kPath]) != 640;
+    m_.path_tolerance = 0;
+  }
   if (b.feed) {
     const Word& w = *b.feed;
     const double f = double(w.mantissa) / double(pow10(w.decimals));
@@ -375,6 +398,10 @@ void Reader::consume(Block& b) {
   if (b.group[kToolLength] && tenths(*b.group[kToolLength]) != 490) take('H');
   if (b.group[kToolLength] && tenths(*b.group[kToolLength]) == 431) take('Z');
   if (b.group[kPath] && tenths(*b.group[kPath]) == 640) {
+    if (const auto p = b.axes.find('P'); p != b.axes.end()) {
+      m_.path_tolerance = length(*p->second);
+      if (m_.path_tolerance < 0) fail(p->second->pos, "G64 P (the path tolerance) must not be negative");
+    }
     take('P');
     take('Q');
   }
@@ -383,15 +410,23 @@ void Reader::consume(Block& b) {
 // G04: P (or, on HNC and Fanuc, X or U) is the dwell time, nothing moves (in LinuxCNC
 // the block's axis words move after the dwell: P is taken out of its words).
 void Reader::dwell(Block& b) {
+  const auto seconds = [&](const Word& w, double per_second) {
+    const double t = double(w.mantissa) / double(pow10(w.decimals)) / per_second;
+    if (t < 0) fail(w.pos, "the dwell time of G04 must not be negative");
+    dwell_ += t;
+  };
   if (dialect_ == Dialect::LinuxCnc) {
     const auto p = b.axes.find('P');
     if (p == b.axes.end()) fail(b.group[kNonModal]->pos, "G04 needs P, the dwell time in seconds");
+    seconds(*p->second, 1);
     ignore(*p->second);
     b.axes.erase(p);
     return;
   }
   for (const auto& [c, w] : b.axes) {
     if (c != 'P' && c != 'X' && c != 'U') fail(w->pos, std::string(1, c) + " in a dwell (G04) block");
+    // (Fanuc's P counts milliseconds, HNC's seconds; X and U are seconds in both.)
+    seconds(*w, c == 'P' && dialect_ == Dialect::Fanuc ? 1000 : 1);
     ignore(*w);
   }
   b.axes.clear();  // (the time, not a move)

@@ -41,6 +41,7 @@ ReadSummary Reader::run() {
   }
   fix_lattice();
   sum_.plane = lattice_;
+  sum_.dwell_after = dwell_;
   return std::move(sum_);
 }
 

@@ -159,6 +159,16 @@ void Reader::emit(Move& mv, const Axes& to) {
   mv.w = pos_[w];
   mv.w_to = to[w];
   mv.plane = move_plane_;
+  mv.feed_mode = m_.inverse_time ? FeedMode::InverseTime : m_.per_rev ? FeedMode::PerRevolution : FeedMode::PerMinute;
+  mv.inch = m_.inch;
+  mv.spindle = m_.spindle;
+  mv.css = m_.css;
+  mv.exact_stop = m_.exact_stop;
+  mv.path_tolerance = m_.path_tolerance;
+  mv.dwell = dwell_;
+  mv.stop = stop_;
+  dwell_ = 0;
+  stop_ = false;
   out_.on_move(mv);
   pos_ = to;
   sync_position();

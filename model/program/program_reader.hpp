@@ -45,6 +45,11 @@ struct Modal {
   bool retract_old_z = false;  // G98: canned cycles retract to where they started; G99 (default): to R
   int cs = 0;                  // the work offset in force: 0 G54 .. 8 G59.3
   double feed = 0;
+  bool per_rev = false;       // G95 (G99 on HNC's and Fanuc's lathes)
+  double spindle = 0;         // S
+  bool css = false;           // G96
+  bool exact_stop = false;    // G61, G61.1
+  Length path_tolerance = 0;  // G64 P
 };
 
 // Where the interpreter's results go besides the summary: each move, and how many
@@ -87,9 +92,11 @@ class Reader {
     std::array<const Word*, kGroups> group{};
     std::map<char, const Word*> axes;
     const Word* feed = nullptr;
-    bool end = false;              // M02 or M30: the program ends after the block
-    bool cancel_cycle = false;     // G80
-    std::optional<SourcePos> m98;  // M98: the block calls a subprogram
+    const Word* spindle = nullptr;  // S
+    bool stop = false;              // M00 or M01
+    bool end = false;               // M02 or M30: the program ends after the block
+    bool cancel_cycle = false;      // G80
+    std::optional<SourcePos> m98;   // M98: the block calls a subprogram
   };
 
  private:
@@ -192,6 +199,9 @@ class Reader {
   Output out_;
   Dialect dialect_ = Dialect::LinuxCnc;
   Modal m_;
+  // A dwell and a program stop read since the last move: the next move carries them.
+  double dwell_ = 0;
+  bool stop_ = false;
   ReadSummary sum_;
   Axes pos_{};          // the tool, in machine coordinates (nm; X a radius)
   int lattice_ = 0;     // the plane of the two axes, fixed by the first block that needs the position

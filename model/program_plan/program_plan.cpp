@@ -18,18 +18,20 @@
 
 namespace dda::program {
 
-namespace {
-
-std::int64_t floor_div(std::int64_t v, std::int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); }
-
 std::string block_name(const Move& mv) {
   return mv.block_number ? fmt::format("block N{} ({})", *mv.block_number, kind_name(mv.kind))
                          : fmt::format("block at line {} ({})", mv.pos.line, kind_name(mv.kind));
 }
 
-[[noreturn]] void fail(const std::string& file, const Move& mv, const std::string& why) {
+void block_error(const std::string& file, const Move& mv, const std::string& why) {
   throw ProgramError(file, mv.pos.line, mv.pos.column, block_name(mv) + ": " + why);
 }
+
+namespace {
+
+std::int64_t floor_div(std::int64_t v, std::int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); }
+
+[[noreturn]] void fail(const std::string& file, const Move& mv, const std::string& why) { block_error(file, mv, why); }
 
 bool is_arc(MoveKind k) { return k == MoveKind::ArcCw || k == MoveKind::ArcCcw; }
 

@@ -146,6 +146,11 @@ class BlockDistance {
 // targeted).
 double block_target(const BlockPlan& b, double from_rounding, Preload preload);
 
+// A block as messages name it ("block N20 (arc cw)", "block at line 7 (line)"), and
+// ProgramError "FILE:LINE:COLUMN: block N20 (arc cw): why".
+std::string block_name(const Move& mv);
+[[noreturn]] void block_error(const std::string& file, const Move& mv, const std::string& why);
+
 // Which block a piece of ProgramPlan::plan belongs to.
 std::size_t block_of_piece(const ProgramPlan& pp, std::size_t piece);
 

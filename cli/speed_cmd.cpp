@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "speed_cmd.hpp"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+#include <cmath>
+
+#include "output.hpp"
+#include "report/speed_report.hpp"
+
+namespace dda::cli {
+
+bool SpeedCli::any_given() const {
+  for (const CLI::Option* o : {accel_opt, jd_opt, rapid_opt, feed_opt, window_opt, config_opt}) {
+    if (o && o->count() > 0) return true;
+  }
+  return false;
+}
+
+void add_speed_options(CLI::App* sub, SpeedCli& s) {
+  sub->add_flag("--speeds", s.speeds,
+                "with --program: plan the feeds (docs/programs.md, \"Feeds and speeds\") and report each block's "
+                "entry, cruise and exit speeds, its time and what limit held it, and the program's time");
+  s.config_opt = sub->add_option("--machine-config", s.machine_config,
+                                 "with --program: the machine's limits (JSON, docs/programs.md) over the defaults of "
+                                 "--machine; implies --speeds");
+  s.accel_opt = sub->add_option("--accel", s.accel,
+                                "with --program: every axis' acceleration, mm/s^2 (over the file); implies --speeds");
+  s.jd_opt = sub->add_option("--junction-deviation", s.junction_deviation,
+                             "with --program: the junction deviation, mm (over the file); implies --speeds");
+  s.rapid_opt =
+      sub->add_option("--rapid", s.rapid, "with --program: the rapid rate, mm/min (over the file); implies --speeds");
+  s.feed_opt = sub->add_option("--default-feed", s.default_feed,
+                               "with --program: the feed, mm/min, of feed moves in a program that gives no F "
+                               "(over the file); implies --speeds");
+  s.window_opt = sub->add_option("--window", s.window,
+                                 "with --program: the pieces the lookahead plans over (default 16; over the file); "
+                                 "implies --speeds");
+}
+
+namespace {
+
+double positive(const char* name, double v) {
+  if (!std::isfinite(v) || v <= 0)
+    throw InputError(fmt::format("{} = {} is out of range: it must be positive", name, v));
+  return v;
+}
+
+}  // namespace
+
+speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m) {
+  speed::MachineLimits l = speed::default_limits(m);
+  if (!s.machine_config.empty()) l = speed::read_machine_config(s.machine_config, l);
+  if (s.accel_opt && s.accel_opt->count()) {
+    for (speed::AxisLimits& a : l.axes) a.accel = positive("accel", s.accel);
+  }
+  if (s.jd_opt && s.jd_opt->count()) l.junction_deviation = positive("junction-deviation", s.junction_deviation);
+  if (s.rapid_opt && s.rapid_opt->count()) l.rapid = positive("rapid", s.rapid);
+  if (s.feed_opt && s.feed_opt->count()) l.default_feed = positive("default-feed", s.default_feed);
+  if (s.window_opt && s.window_opt->count()) l.window = s.window;
+  speed::check(l, m);
+  return l;
+}
+
+void run_speed_report(const ArcOptions& o, const SpeedCli& s) {
+  if (!o.prog.given()) throw InputError("--speeds and the machine's limits go with --program");
+  if (o.engine != "golden")
+    throw InputError("--speeds plans the feeds in the driver: no engine runs (leave --engine out)");
+  if (!o.vcd.empty()) throw InputError("--vcd goes with a run on an engine, not with --speeds");
+  const program::BlockStatsFormat fmt =
+      parse_enum<program::BlockStatsFormat>("format", o.format.empty() ? "text" : o.format,
+                                            {{"text", program::BlockStatsFormat::Text},
+                                             {"csv", program::BlockStatsFormat::Csv},
+                                             {"json", program::BlockStatsFormat::Json}});
+  const ProgramRun run = program_run(o.prog, parse_preload(o.preload), false);
+  const speed::MachineLimits lim = machine_limits(s, run.read.machine);
+  const auto in = program::open_program(o.prog.file);
+  Output out(o.out);
+  speed::SpeedReport report(out.stream(), fmt, lim, run.read.machine);
+  const speed::SpeedTotals t = speed::plan_program_speeds(*in, run.file, run.read, run.lattice, run.window, lim,
+                                                          [&](const speed::BlockSpeeds& b) { report.block(b); });
+  report.finish(t);
+  out.commit();
+}
+
+}  // namespace dda::cli

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: Apache-2.0
+// The speed planner's options on `dda stats --program` (docs/programs.md, "Feeds and
+// speeds"): --speeds, the machine description file and the limits in millimetres that
+// override it, and the report they make.
+#pragma once
+
+#include <string>
+
+#include "arc_options.hpp"
+#include "speed/machine_limits.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace dda::cli {
+
+struct SpeedCli {
+  bool speeds = false;
+  std::string machine_config;
+  double accel = 0, junction_deviation = 0, rapid = 0, default_feed = 0;
+  std::size_t window = 0;
+  CLI::Option *accel_opt = nullptr, *jd_opt = nullptr, *rapid_opt = nullptr, *feed_opt = nullptr, *window_opt = nullptr,
+              *config_opt = nullptr;
+  bool any_given() const;  // a limit option or the file given
+  bool wanted() const { return speeds || any_given(); }
+};
+
+void add_speed_options(CLI::App* sub, SpeedCli& s);
+// The machine's limits: its defaults, the file over them, the options over both
+// (InputError for a bad file or value).
+speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m);
+// dda stats --program FILE --speeds: the speed report into --out (InputError when the
+// options do not go together).
+void run_speed_report(const ArcOptions& o, const SpeedCli& s);
+
+}  // namespace dda::cli
