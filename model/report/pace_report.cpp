@@ -107,7 +107,8 @@ struct Run {
     last_v = pacer.speed();
     if (pacer.speed() == pacer.target(in) && !pacer.ramping_down() && !in.set.hold &&
         in.set.override_ == motion::kOverrideOne && d > 0) {
-      res.worst_cruise_error = std::max(res.worst_cruise_error, std::fabs(path_speed - o.feed) / o.feed);
+      const double want = hooks.entries ? ramp_steps_per_s(pacer.target(in), o.clock_hz) : o.feed;
+      res.worst_cruise_error = std::max(res.worst_cruise_error, std::fabs(path_speed - want) / want);
       ++res.cruise_iterations;
     }
     ++res.iterations;
@@ -191,7 +192,12 @@ PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& ho
   r.set.accel = accel_field(o.accel, o.clock_hz);
   r.set.vmin = speed_field(o.vmin, o.clock_hz);
   const std::uint32_t cruise = speed_field(o.feed, o.clock_hz);
-  r.entries = entries_of(plan, o, cruise, r.set.vmin, r.set.accel);
+  if (hooks.entries) {
+    if (hooks.entries->size() != plan.pieces.size()) throw GuardError("pace: one entry per piece");
+    r.entries = *hooks.entries;
+  } else {
+    r.entries = entries_of(plan, o, cruise, r.set.vmin, r.set.accel);
+  }
   std::uint64_t clock = 0;
   // Far beyond any run at these speeds: a run that stops short of its end is an error.
   const double slowest = o.accel > 0 ? std::min(o.vmin, o.feed) : o.feed;

@@ -14,6 +14,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "motion/pacer.hpp"
 #include "motion/speed_monitor.hpp"
@@ -68,6 +69,10 @@ struct PaceHooks {
   // Every iteration.
   std::function<void(const PaceRow&)> row;
   bool clock_by_clock = false;  // never skip (the skipping is checked against this)
+  // The driver's own entries, one per piece (a program's planned speeds,
+  // speed/pace_plan.hpp), instead of every piece at the feed; the feed is then the
+  // monitor's speed limit, and the cruise error is measured against each entry's speed.
+  const std::vector<motion::PaceEntry>* entries = nullptr;
 };
 
 // The run; the speed monitor checks the feed and the acceleration as limits (GuardError).

@@ -62,28 +62,27 @@ void SpeedRun::finish() {
 SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const program::ReadOptions& read,
                                 const program::LatticeOptions& lattice, std::size_t window, const MachineLimits& lim,
                                 const std::function<void(const BlockSpeeds&)>& on_block,
-                                const std::function<void(const PlannedSegment&)>& on_segment) {
+                                const std::function<void(const PlannedSegment&)>& on_segment,
+                                const std::function<void(const program::BlockPlan&)>& on_pieces) {
   check(lim, read.machine);
   SpeedTotals t;
   SpeedRun run(
       lim, read.machine, lattice.step, file,
       [&](const BlockSpeeds& b) {
-        ++t.blocks;
-        t.pieces += b.pieces;
-        t.length += b.length;
-        t.time += b.time + b.dwell;
-        t.dwell += b.dwell;
+        t.add(b);
         on_block(b);
       },
       on_segment);
   const program::Point2 start = read.start.value_or(program::Point2{});
-  program::BlockPlanner planner(lattice, start, file, window, [&](program::BlockPlan&& b) { run.block(b); });
+  program::BlockPlanner planner(lattice, start, file, window, [&](program::BlockPlan&& b) {
+    run.block(b);
+    if (on_pieces) on_pieces(b);
+  });
   const program::ReadSummary sum =
       program::read_stream(in, file, read, [&](const program::Move& mv) { planner.move(mv); });
   planner.finish();
   run.finish();
-  t.time += sum.dwell_after;
-  t.dwell += sum.dwell_after;
+  t.dwell_at_end(sum.dwell_after);
   return t;
 }
 

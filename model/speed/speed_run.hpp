@@ -60,14 +60,27 @@ class SpeedRun {
 struct SpeedTotals {
   std::size_t blocks = 0, pieces = 0;
   double length = 0, time = 0, dwell = 0;  // mm, s (time includes every dwell)
+  void add(const BlockSpeeds& b) {
+    ++blocks;
+    pieces += b.pieces;
+    length += b.length;
+    time += b.time + b.dwell;
+    dwell += b.dwell;
+  }
+  void dwell_at_end(double s) {
+    time += s;
+    dwell += s;
+  }
 };
 
 // Reads the program from `in` (program::open_program) and plans its speeds, calling
-// on_block for each block with pieces. Throws ProgramError as the reader and the
+// on_block for each block with pieces (on_pieces, if given, sees each block as its
+// pieces are cut, before they are planned). Throws ProgramError as the reader and the
 // planners do.
 SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const program::ReadOptions& read,
                                 const program::LatticeOptions& lattice, std::size_t window, const MachineLimits& lim,
                                 const std::function<void(const BlockSpeeds&)>& on_block,
-                                const std::function<void(const PlannedSegment&)>& on_segment = nullptr);
+                                const std::function<void(const PlannedSegment&)>& on_segment = nullptr,
+                                const std::function<void(const program::BlockPlan&)>& on_pieces = nullptr);
 
 }  // namespace dda::speed

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "speed/pace_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "datapath/errors.hpp"
+#include "motion/pace_params.hpp"
+
+namespace dda::speed {
+
+PaceSetup pace_setup(const PlannerLimits& plim, const MachineLimits& lim, program::Length step, double clock_hz) {
+  if (!(clock_hz > 0)) throw InputError("the clock must be positive");
+  PaceSetup s;
+  s.clock_hz = clock_hz;
+  s.step_mm = double(step) / double(program::kNmPerMm);
+  const double a = std::round(plim.accel / s.step_mm / (clock_hz * clock_hz) * std::ldexp(1.0, motion::kRampFrac));
+  if (!(a >= 1) || a >= std::ldexp(1.0, motion::kAccelWidth)) {
+    throw InputError(fmt::format("the path acceleration {} mm/s^2 does not fit ACCEL at {} Hz with a {} mm step",
+                                 plim.accel, clock_hz, s.step_mm));
+  }
+  s.accel = std::uint64_t(a);
+  s.vmin = speed_word(lim.min_speed / 60, s);
+  if (s.vmin == 0) throw InputError("the minimum speed is below VMIN's unit at this clock");
+  return s;
+}
+
+std::uint32_t speed_word(double mm_s, const PaceSetup& s) {
+  const double f = std::round(mm_s / s.step_mm / s.clock_hz * std::ldexp(1.0, motion::kSpeedFrac));
+  if (!(f >= 0) || f > 4294967295.0) {
+    throw InputError(fmt::format("{} mm/min is not below one step per clock at {} Hz", mm_s * 60, s.clock_hz));
+  }
+  return std::uint32_t(f);
+}
+
+motion::PaceEntry pace_entry(const PlannedSegment& p, const Piece& pc, const PaceSetup& s) {
+  motion::PaceEntry e;
+  e.cruise = e.limit = speed_word(p.cap, s);
+  e.exit = speed_word(p.exit, s);
+  e.length = motion::pace_length(pc.cmd);
+  e.brake_exit = motion::brake_distance(e.exit, s.vmin, s.accel);
+  return e;
+}
+
+PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, const program::ReadOptions& read,
+                                   const program::LatticeOptions& lattice, const MachineLimits& lim) {
+  PlannedProgram out;
+  out.plan.geometry = ProgramGeometry{lattice.preload};
+  out.totals = plan_program_speeds(
+      in, file, read, lattice, program::kDefaultWindow, lim, [&](const BlockSpeeds& b) { out.blocks.push_back(b); },
+      [&](const PlannedSegment& p) { out.segments.push_back(p); },
+      [&](const program::BlockPlan& b) {
+        for (const Piece& pc : b.plan.pieces) {
+          out.plan.pieces.push_back(pc);
+          out.plan.iteration_bound += pc.iteration_bound;
+        }
+      });
+  out.plan.from = out.plan.pieces.front().from;
+  out.plan.to = out.plan.pieces.back().to;
+  return out;
+}
+
+}  // namespace dda::speed

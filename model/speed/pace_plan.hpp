@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: Apache-2.0
+// A program's planned speeds as the motion block's pacing (docs/design.md, "Pacing in
+// the block"): ACCEL the path acceleration, VMIN the machine's minimum speed, and per
+// piece an entry whose cruise speed and limit are the speed the piece may reach, whose
+// exit speed is the plan's (a rest: 0, the pacer ends at VMIN), with the piece's length
+// as the pacer counts it and the exit's braking distance. Speeds in path steps: mm/s
+// over the step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "motion/pacer.hpp"
+#include "planner/plan.hpp"
+#include "speed/lookahead.hpp"
+#include "speed/machine_limits.hpp"
+#include "speed/speed_run.hpp"
+
+namespace dda::speed {
+
+struct PaceSetup {
+  double clock_hz = 0;
+  double step_mm = 0;
+  std::uint64_t accel = 0;  // ACCEL
+  std::uint32_t vmin = 0;   // VMIN
+};
+// The block's settings for the plan at a clock (InputError when a speed or the
+// acceleration does not fit the pacer's fields at that clock).
+PaceSetup pace_setup(const PlannerLimits& plim, const MachineLimits& lim, program::Length step, double clock_hz);
+// A speed in mm/s as an entry's field (x 2^kSpeedFrac path steps per clock).
+std::uint32_t speed_word(double mm_s, const PaceSetup& s);
+motion::PaceEntry pace_entry(const PlannedSegment& p, const Piece& pc, const PaceSetup& s);
+
+// A whole program planned in memory (tests and vector sets): its pieces after the cuts,
+// back to back, and their planned segments in the same order.
+struct PlannedProgram {
+  Plan plan;
+  std::vector<PlannedSegment> segments;
+  std::vector<BlockSpeeds> blocks;
+  SpeedTotals totals;
+};
+PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, const program::ReadOptions& read,
+                                   const program::LatticeOptions& lattice, const MachineLimits& lim);
+
+}  // namespace dda::speed

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: Apache-2.0
+// A program's planned speeds on the motion block's pacer (model/speed/pace_plan.hpp): the
+// examples' pieces, with the entries the driver writes from the plan, run through the
+// pacer's reference model on the golden datapath clock by clock. The speed monitor reads
+// the step pins alone and fails the run on a path acceleration above the plan's (5%
+// for its whole-step quantization) or a speed above the fastest piece's; every piece
+// that cruises does so within 1% of its planned speed; the run ends on the program's
+// end; and its time is the plan's within 2% (the pacer's lengths are the DDA's, its
+// rests at the minimum speed).
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+
+#include "report/pace_report.hpp"
+#include "speed/pace_plan.hpp"
+
+using namespace dda;
+using namespace dda::speed;
+
+namespace {
+
+struct Example {
+  const char* file;
+  program::Machine machine;
+  const char* start;  // X,Z on a lathe, mm (X a diameter); empty: 0,0
+};
+
+PlannedProgram plan_example(const Example& e, const MachineLimits& lim) {
+  std::ifstream in(std::string(DDA_EXAMPLES_DIR) + "/" + e.file);
+  REQUIRE(in);
+  program::ReadOptions read;
+  read.machine = e.machine;
+  if (e.machine == program::Machine::Lathe) read.start = program::start_point(e.machine, 60000000, 5000000);
+  program::LatticeOptions lattice;
+  return plan_program_pieces(in, e.file, read, lattice, lim);
+}
+
+}  // namespace
+
+TEST_CASE("speed pace: the examples at their planned speeds on the pacer's reference model") {
+  const Example examples[] = {{"mill-contour.ngc", program::Machine::Mill, ""},
+                              {"circles.ngc", program::Machine::Mill, ""},
+                              {"lathe-profile.ngc", program::Machine::Lathe, "60,5"},
+                              {"ellipses.ngc", program::Machine::Lathe, "60,5"},
+                              {"lathe-paper-native.ngc", program::Machine::Lathe, "60,5"}};
+  for (const Example& e : examples) {
+    INFO(e.file);
+    MachineLimits lim = default_limits(e.machine);
+    lim.default_feed = 100;
+    const PlannedProgram pp = plan_example(e, lim);
+    const PlannerLimits pl = planner_limits(lim, e.machine);
+    const double clock = 40e6;
+    const PaceSetup setup = pace_setup(pl, lim, 1000, clock);
+    std::vector<motion::PaceEntry> entries;
+    double top = 0;
+    for (std::size_t k = 0; k < pp.segments.size(); ++k) {
+      entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
+      top = std::max(top, pp.segments[k].peak);
+    }
+    PaceOptions o;
+    o.clock_hz = clock;
+    o.feed = top / setup.step_mm;
+    o.accel = pl.accel / setup.step_mm;
+    o.vmin = lim.min_speed / 60 / setup.step_mm;
+    PaceHooks h;
+    h.entries = &entries;
+    const PaceResult r = pace_plan(pp.plan, o, h);  // (the monitor throws over a limit)
+    CHECK(r.end == pp.plan.to);
+    CHECK(r.worst_cruise_error < 0.01);
+    const double planned = pp.totals.time - pp.totals.dwell;
+    WARN(e.file << ": pacer " << r.seconds() << " s, plan " << planned << " s, monitor " << r.monitor.summary());
+    CHECK(r.seconds() == Approx(planned).epsilon(0.02));
+  }
+}
