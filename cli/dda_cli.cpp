@@ -142,6 +142,7 @@ struct Cli {
   std::string plot_speed;  // --speed FILE.svg
   CLI::Option* plot_speed_opt = nullptr;
   PaceCli plot_pace;
+  SpeedCli plot_speed_limits;
   VectorsCli vectors;
   FeedCli feed;
   GenParamsCli gen_params;
@@ -191,6 +192,7 @@ void set_up_plot(CLI::App* sub, Cli& c) {
                       "FILE.svg: the pacer's reference model run on the arc (--feed-rate, --accel, --clock), its speed "
                       "against the path length with the feed and the ideal trapezoid (--out: the path too, optional)");
   add_pace_options(sub, c.plot_pace);
+  add_speed_options(sub, c.plot_speed_limits, false, false);
 }
 
 void set_up_gen_params(CLI::App* sub, Cli& c) { add_gen_params_options(sub, c.gen_params); }
@@ -327,9 +329,19 @@ std::string plot_title(int argc, char** argv) {
 void run_speed_plot(const Cli& c, const std::string& title) {
   const ArcOptions& pl = c.plot;
   check_svg_name("speed", c.plot_speed);
+  if (pl.prog.given()) {
+    if (c.plot_pace.feed_opt->count() || c.plot_pace.vmin_opt->count())
+      throw InputError(
+          "--feed-rate and --vmin are an arc's, in steps: a program's feeds come from its F words "
+          "(the minimum speed from the machine's limits)");
+    if (!pl.out.empty()) throw InputError("--speed with --program draws the speed alone: leave --out out");
+    const double clock = c.plot_pace.clock_opt->count() ? c.plot_pace.clock_hz : 40e6;
+    return run_program_speed_plot(pl, c.plot_speed_limits, c.plot_speed,
+                                  c.plot_pace.accel_opt->count() ? &c.plot_pace.accel : nullptr, clock, title);
+  }
+  if (c.plot_speed_limits.any_given())
+    throw InputError("--machine-config, --junction-deviation, --rapid, --default-feed and --window go with --program");
   if (!c.plot_pace.paced()) throw InputError("--speed runs the pacer: give --feed-rate, --accel, --clock");
-  if (pl.prog.given())
-    throw InputError("--speed draws one arc's or line's run: a program's feeds are not planned yet (use an arc)");
   if (pl.out.empty() && (pl.engine != "golden" || !pl.vcd.empty() || c.plot_view != "xy"))
     throw InputError("--engine, --vcd and --view go with --out (the path's picture): --speed runs the reference model");
   if (!pl.out.empty() && std::filesystem::weakly_canonical(pl.out) == std::filesystem::weakly_canonical(c.plot_speed))
@@ -347,6 +359,8 @@ void run_plot(const Cli& c, int argc, char** argv) {
   const bool speed = c.plot_speed_opt->count() > 0;
   if (!speed && c.plot_pace.any_given())
     throw InputError("--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg");
+  if (!speed && c.plot_speed_limits.any_given())
+    throw InputError("--machine-config, --junction-deviation, --rapid, --default-feed and --window go with --speed");
   if (!speed && (pl.out.empty() || pl.out == "-"))
     throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
   if (!pl.out.empty()) check_svg_name("out", pl.out);

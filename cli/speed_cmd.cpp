@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "output.hpp"
+#include "report/pace_report.hpp"
 #include "report/speed_report.hpp"
+#include "speed/pace_plan.hpp"
 
 namespace dda::cli {
 
@@ -17,15 +19,18 @@ bool SpeedCli::any_given() const {
   return false;
 }
 
-void add_speed_options(CLI::App* sub, SpeedCli& s) {
-  sub->add_flag("--speeds", s.speeds,
-                "with --program: plan the feeds (docs/programs.md, \"Feeds and speeds\") and report each block's "
-                "entry, cruise and exit speeds, its time and what limit held it, and the program's time");
+void add_speed_options(CLI::App* sub, SpeedCli& s, bool accel, bool flag) {
+  if (flag)
+    sub->add_flag("--speeds", s.speeds,
+                  "with --program: plan the feeds (docs/programs.md, \"Feeds and speeds\") and report each block's "
+                  "entry, cruise and exit speeds, its time and what limit held it, and the program's time");
   s.config_opt = sub->add_option("--machine-config", s.machine_config,
                                  "with --program: the machine's limits (JSON, docs/programs.md) over the defaults of "
                                  "--machine; implies --speeds");
-  s.accel_opt = sub->add_option("--accel", s.accel,
-                                "with --program: every axis' acceleration, mm/s^2 (over the file); implies --speeds");
+  if (accel) {
+    s.accel_opt = sub->add_option("--accel", s.accel,
+                                  "with --program: every axis' acceleration, mm/s^2 (over the file); implies --speeds");
+  }
   s.jd_opt = sub->add_option("--junction-deviation", s.junction_deviation,
                              "with --program: the junction deviation, mm (over the file); implies --speeds");
   s.rapid_opt =
@@ -80,6 +85,26 @@ void run_speed_report(const ArcOptions& o, const SpeedCli& s) {
   const speed::SpeedTotals t = speed::plan_program_speeds(*in, run.file, run.read, run.lattice, run.window, lim,
                                                           [&](const speed::BlockSpeeds& b) { report.block(b); });
   report.finish(t);
+  out.commit();
+}
+
+void run_program_speed_plot(const ArcOptions& o, const SpeedCli& s, const std::string& svg, const double* accel,
+                            double clock_hz, const std::string& title) {
+  if (o.engine != "golden" || !o.vcd.empty())
+    throw InputError("--speed runs the pacer's reference model on the plan: leave --engine and --vcd out");
+  if (!(clock_hz > 0 && clock_hz <= 1e10))
+    throw InputError(fmt::format("--clock = {} is out of range: Hz, above 0 and at most 1e10", clock_hz));
+  const ProgramRun run = program_run(o.prog, parse_preload(o.preload), false);
+  speed::MachineLimits lim = machine_limits(s, run.read.machine);
+  if (accel) {
+    for (speed::AxisLimits& a : lim.axes) a.accel = positive("accel", *accel);
+  }
+  const speed::PlannerLimits pl = speed::planner_limits(lim, run.read.machine);
+  const auto in = program::open_program(o.prog.file);
+  const speed::PlannedProgram pp = speed::plan_program_pieces(*in, run.file, run.read, run.lattice, lim);
+  const speed::PaceSetup setup = speed::pace_setup(pl, lim, run.lattice.step, clock_hz);
+  Output out(svg);
+  write_program_speed_svg(out.stream(), pp, setup, pl, lim, title);
   out.commit();
 }
 

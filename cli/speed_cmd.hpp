@@ -27,12 +27,18 @@ struct SpeedCli {
   bool wanted() const { return speeds || any_given(); }
 };
 
-void add_speed_options(CLI::App* sub, SpeedCli& s);
+// The options on `sub`; without `accel` and `flag`, those of `plot --speed`, whose
+// --accel is the pacer's (in mm/s^2 with --program) and which always plans.
+void add_speed_options(CLI::App* sub, SpeedCli& s, bool accel = true, bool flag = true);
 // The machine's limits: its defaults, the file over them, the options over both
 // (InputError for a bad file or value).
 speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m);
 // dda stats --program FILE --speeds: the speed report into --out (InputError when the
 // options do not go together).
 void run_speed_report(const ArcOptions& o, const SpeedCli& s);
+// dda plot --program FILE --speed OUT.svg [--accel MM_PER_S2] [--clock HZ]: the plan on
+// the pacer's reference model, drawn (accel: the option's value when given).
+void run_program_speed_plot(const ArcOptions& o, const SpeedCli& s, const std::string& svg, const double* accel,
+                            double clock_hz, const std::string& title);
 
 }  // namespace dda::cli

@@ -320,7 +320,7 @@ TEST_CASE("cli input: plot --speed draws the pacer's run, under the feed, and re
       {arc + " --vmin -1 --out " + svg, "--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg"},
       {arc + " --feed-rate 0 --accel 2e7 --clock 40e6 --speed " + svg, "--feed-rate = 0 is out of range"},
       {"plot --program " + std::string(DDA_SOURCE_DIR) + "/examples/circles.ngc" + pace + " --speed " + svg,
-       "--speed draws one arc's or line's run"},
+       "--feed-rate and --vmin are an arc's, in steps: a program's feeds come from its F words"},
       {arc + " --feed-rate 2e5 --accel 2e7 --clock 40e6 --vmin 0 --speed " + svg, "--vmin 0 with an acceleration"},
   };
   for (const auto& [args, want] : cases) expect_refused(s, args, want);

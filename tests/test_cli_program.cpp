@@ -219,3 +219,56 @@ TEST_CASE("cli program: the third axis in the reports, and dda plot's views", "[
   // The core's vector set has the third axis.
   CHECK(run_dda(s, "vectors --program " + prog.string() + " --out-dir " + (s.dir / "core").string()).status == 0);
 }
+
+TEST_CASE("cli program: planned speeds, the machine file, the speed picture and their errors", "[cli]") {
+  Scratch s;
+  const fs::path prog = s.dir / "p.ngc", cfg = s.dir / "m.json", svg = s.dir / "v.svg";
+  write_file(prog, "G21 G90\nN1 G1 X20 F1200\nN2 G1 Y20\nG4 P1\nN3 G0 X0 Y0\nM2\n");
+  write_file(cfg, R"({"rapid_mm_per_min": 3000, "axes": {"x": {"vmax_mm_per_min": 3000}}})");
+  const std::string p = " --program " + prog.string();
+  const Result csv = run_dda(s, "stats --speeds --format csv" + p);
+  CHECK(csv.status == 0);
+  CHECK(csv.out.rfind("line,block,kind,pieces,length_mm,feed_mm_min,entry_mm_min,cruise_mm_min,exit_mm_min,time_s,"
+                      "dwell_s,rest,limit\n2,N1,line,1,20.000000,1200.000,0.000,1200.000,",
+                      0) == 0);
+  // (28 mm are too short to reach 6000 mm/min at 250 mm/s^2; the dwell before it, at rest.)
+  CHECK(csv.out.find("\n5,N3,rapid,1,28.284271,6000.000,0.000,5045.378,0.000,0.672717,1.000000,yes,length\n") !=
+        std::string::npos);
+  // The file over the mill's defaults, an option over the file.
+  const Result file = run_dda(s, "stats --format csv --machine-config " + cfg.string() + p);
+  CHECK(file.out.find("\n5,N3,rapid,1,28.284271,3000.000,0.000,3000.000,") != std::string::npos);
+  const Result opt = run_dda(s, "stats --format csv --rapid 1500 --machine-config " + cfg.string() + p);
+  CHECK(opt.out.find("\n5,N3,rapid,1,28.284271,1500.000,0.000,1500.000,") != std::string::npos);
+  const Result json = run_dda(s, "stats --speeds --format json" + p);
+  CHECK(json.out.find("\"time_s\":") != std::string::npos);
+  const Result pic = run_dda(s, "plot --speed " + svg.string() + " --accel 200 --clock 20e6" + p);
+  CHECK(pic.status == 0);
+  CHECK(slurp(svg).find("class=\"commanded\"") != std::string::npos);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"stats --a 5 --b 3 --speeds", "dda: error: --speeds and the machine's limits go with --program\n"},
+      {"stats --speeds --engine rtl" + p,
+       "dda: error: --speeds plans the feeds in the driver: no engine runs (leave --engine out)\n"},
+      {"stats --accel 0" + p, "dda: error: accel = 0 is out of range: it must be positive\n"},
+      {"stats --window 1" + p, "dda: error: machine limits: the window must be 2 to 100000 pieces\n"},
+      {"plot --speed " + svg.string() + " --feed-rate 100" + p,
+       "dda: error: --feed-rate and --vmin are an arc's, in steps: a program's feeds come from its F words (the "
+       "minimum speed from the machine's limits)\n"},
+      {"plot --speed " + svg.string() + " --rapid 100 --a 5 --b 3 --feed-rate 10 --accel 1 --clock 1e6",
+       "dda: error: --machine-config, --junction-deviation, --rapid, --default-feed and --window go with "
+       "--program\n"},
+  };
+  for (const auto& [args, want] : cases) {
+    const Result r = run_dda(s, args);
+    INFO("dda " << args);
+    CHECK(r.status == 2);
+    CHECK(r.err == want);
+  }
+  const Result bad_file = run_dda(s, "stats --machine-config " + prog.string() + p);
+  CHECK(bad_file.status == 2);
+  CHECK(bad_file.err.rfind("dda: error: machine config '" + prog.string() + "': not JSON: ", 0) == 0);
+  // A feed move without F and no default feed: the block and the remedy.
+  write_file(prog, "G1 X10\n");
+  const Result nof = run_dda(s, "stats --speeds --dialect hnc" + p);
+  CHECK(nof.status == 2);
+  CHECK(nof.err.find(":1:1: block at line 1 (line): no feed rate: the program gives no F") != std::string::npos);
+}

@@ -54,20 +54,7 @@ TEST_CASE("speed pace: the examples at their planned speeds on the pacer's refer
     const PlannerLimits pl = planner_limits(lim, e.machine);
     const double clock = 40e6;
     const PaceSetup setup = pace_setup(pl, lim, 1000, clock);
-    std::vector<motion::PaceEntry> entries;
-    double top = 0;
-    for (std::size_t k = 0; k < pp.segments.size(); ++k) {
-      entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
-      top = std::max(top, pp.segments[k].peak);
-    }
-    PaceOptions o;
-    o.clock_hz = clock;
-    o.feed = top / setup.step_mm;
-    o.accel = pl.accel / setup.step_mm;
-    o.vmin = lim.min_speed / 60 / setup.step_mm;
-    PaceHooks h;
-    h.entries = &entries;
-    const PaceResult r = pace_plan(pp.plan, o, h);  // (the monitor throws over a limit)
+    const PaceResult r = pace_program(pp, setup, pl, lim);  // (the monitor throws over a limit)
     CHECK(r.end == pp.plan.to);
     CHECK(r.worst_cruise_error < 0.01);
     const double planned = pp.totals.time - pp.totals.dwell;

@@ -19,6 +19,7 @@
 #include "motion/pacer.hpp"
 #include "motion/speed_monitor.hpp"
 #include "planner/plan.hpp"
+#include "speed/pace_plan.hpp"
 
 namespace dda {
 
@@ -93,5 +94,17 @@ void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, c
 void write_pace_csv(std::ostream& os, const Plan& plan, const PaceOptions& o);
 void write_pace_report(std::ostream& os, const Plan& plan, const PaceOptions& o, bool summary,
                        const std::string& label);
+
+// A program's planned speeds on the pacer's reference model (model/speed/pace_plan.hpp):
+// the entries the driver writes, ACCEL the path acceleration, VMIN the minimum speed;
+// the monitor's speed limit is the fastest piece's peak.
+PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup& setup, const speed::PlannerLimits& pl,
+                        const speed::MachineLimits& lim, PaceHooks hooks = {});
+// `dda plot --program FILE --speed FILE.svg`: that run's commanded and path speeds in
+// mm/min against the path length in mm, over the plan's ramps and cruises, the
+// programmed feed and the speed each piece allows; returns the run.
+PaceResult write_program_speed_svg(std::ostream& os, const speed::PlannedProgram& pp, const speed::PaceSetup& setup,
+                                   const speed::PlannerLimits& pl, const speed::MachineLimits& lim,
+                                   const std::string& title);
 
 }  // namespace dda

@@ -11,6 +11,7 @@
 #include <fmt/ostream.h>
 
 #include "report/pace_report.hpp"
+#include "speed/pace_plan.hpp"
 
 namespace dda {
 
@@ -99,7 +100,8 @@ struct Frame {
   }
 };
 
-void write_frame(std::ostream& os, const Frame& f, const std::string& title) {
+void write_frame(std::ostream& os, const Frame& f, const std::string& title,
+                 const char* x_label = "path length (steps)", const char* y_label = "speed (steps/s)") {
   fmt::print(os,
              "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
              "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"960\" height=\"620\" viewBox=\"0 0 960 620\" "
@@ -122,9 +124,18 @@ void write_frame(std::ostream& os, const Frame& f, const std::string& title) {
   }
   fmt::print(os,
              "<rect x=\"70\" y=\"50\" width=\"830\" height=\"420\" fill=\"none\" stroke=\"#333333\"/>\n"
-             "<text x=\"485\" y=\"512\" text-anchor=\"middle\">path length (steps)</text>\n"
-             "<text x=\"18\" y=\"260\" text-anchor=\"middle\" transform=\"rotate(-90 18 260)\">speed "
-             "(steps/s)</text>\n");
+             "<text x=\"485\" y=\"512\" text-anchor=\"middle\">{}</text>\n"
+             "<text x=\"18\" y=\"260\" text-anchor=\"middle\" transform=\"rotate(-90 18 260)\">{}</text>\n",
+             x_label, y_label);
+}
+
+// The legend below the plot, in two columns of three.
+void legend_item(std::ostream& os, int k, const char* colour, const std::string& text) {
+  const int x = k < 3 ? 70 : 500, y = 538 + 18 * (k % 3);
+  fmt::print(os,
+             "<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"{3}\" stroke-width=\"3\"/>"
+             "<text x=\"{4}\" y=\"{5}\">{6}</text>\n",
+             x, y, x + 30, colour, x + 36, y + 4, text);
 }
 
 }  // namespace
@@ -158,14 +169,8 @@ void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, c
              "<polyline class=\"path-speed\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" points=\"{}\"/>\n"
              "<polyline class=\"commanded\" fill=\"none\" stroke=\"#2c7bb6\" stroke-width=\"1.5\" points=\"{}\"/>\n",
              f.polyline(prof.line(false)), f.polyline(prof.line(true)));
-  // The legend below the plot, in two columns, with the run's figures.
-  const auto item = [&](int k, const char* colour, const std::string& text) {
-    const int x = k < 3 ? 70 : 500, y = 538 + 18 * (k % 3);
-    fmt::print(os,
-               "<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"{3}\" stroke-width=\"3\"/>"
-               "<text x=\"{4}\" y=\"{5}\">{6}</text>\n",
-               x, y, x + 30, colour, x + 36, y + 4, text);
-  };
+  // The legend, with the run's figures.
+  const auto item = [&](int k, const char* colour, const std::string& text) { legend_item(os, k, colour, text); };
   item(0, "#2c7bb6", "commanded speed (the pacer's v)");
   item(1, "#333333", "path speed (v x the DDA's velocity / d)");
   item(2, "#9bd19b", fmt::format("ideal trapezoid, A = {:g} steps/s^2", o.accel));
@@ -175,6 +180,74 @@ void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, c
              "<text x=\"536\" y=\"578\">feed error at cruise {:.2e}; time {:.6f} s (ideal {:.6f} s)</text>\n"
              "</svg>\n",
              res.worst_cruise_error, res.seconds(), res.ideal_seconds);
+}
+
+PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup& setup, const speed::PlannerLimits& pl,
+                        const speed::MachineLimits& lim, PaceHooks hooks) {
+  std::vector<motion::PaceEntry> entries;
+  double top = 0;
+  for (std::size_t k = 0; k < pp.segments.size(); ++k) {
+    entries.push_back(speed::pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
+    top = std::max(top, pp.segments[k].peak);
+  }
+  PaceOptions o;
+  o.clock_hz = setup.clock_hz;
+  o.feed = top / setup.step_mm;
+  o.accel = pl.accel / setup.step_mm;
+  o.vmin = std::min(o.feed, lim.min_speed / 60 / setup.step_mm);
+  hooks.entries = &entries;
+  return pace_plan(pp.plan, o, hooks);
+}
+
+PaceResult write_program_speed_svg(std::ostream& os, const speed::PlannedProgram& pp, const speed::PaceSetup& setup,
+                                   const speed::PlannerLimits& pl, const speed::MachineLimits& lim,
+                                   const std::string& title) {
+  const double mm = setup.step_mm;
+  Profile prof;
+  PaceHooks h;
+  h.row = [&](const PaceRow& r) { prof.add(r.path * mm, r.commanded * mm * 60, r.path_speed * mm * 60); };
+  const PaceResult res = pace_program(pp, setup, pl, lim, h);
+  // The plan: each piece's ramps and cruise; the feed asked and the speed allowed, piece by piece.
+  std::vector<std::pair<double, double>> plan, feed, cap;
+  double s = 0, top = 0;
+  for (const speed::PlannedSegment& g : pp.segments) {
+    const double a = pl.accel, len = g.seg.length;
+    const double up = (g.peak * g.peak - g.entry * g.entry) / (2 * a),
+                 down = (g.peak * g.peak - g.exit * g.exit) / (2 * a);
+    // (Ramps at constant acceleration: v = sqrt(v0^2 + 2 a x), drawn through 9 points each.)
+    for (int k = 0; k <= 8; ++k) {
+      const double x = up * k / 8;
+      plan.emplace_back(s + x, std::sqrt(g.entry * g.entry + 2 * a * x) * 60);
+    }
+    for (int k = 0; k <= 8; ++k) {
+      const double x = down * (8 - k) / 8;
+      plan.emplace_back(s + len - x, std::sqrt(g.exit * g.exit + 2 * a * x) * 60);
+    }
+    feed.insert(feed.end(), {{s, g.seg.feed * 60}, {s + len, g.seg.feed * 60}});
+    cap.insert(cap.end(), {{s, g.cap * 60}, {s + len, g.cap * 60}});
+    top = std::max({top, g.seg.feed * 60, g.cap * 60});
+    s += len;
+  }
+  const Frame f{std::max(s, 1e-3), 1.15 * top};
+  write_frame(os, f, title, "path length (mm)", "speed (mm/min)");
+  // (A cap far above the feed, a piece the curvature does not hold, is drawn at the top.)
+  for (auto& p : cap) p.second = std::min(p.second, 1.1 * top);
+  fmt::print(os,
+             "<polyline class=\"plan\" fill=\"none\" stroke=\"#9bd19b\" stroke-width=\"5\" points=\"{}\"/>\n"
+             "<polyline class=\"feed\" fill=\"none\" stroke=\"#d7191c\" stroke-dasharray=\"6,4\" points=\"{}\"/>\n"
+             "<polyline class=\"limit\" fill=\"none\" stroke=\"#fdae61\" stroke-dasharray=\"2,3\" points=\"{}\"/>\n"
+             "<polyline class=\"path-speed\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" points=\"{}\"/>\n"
+             "<polyline class=\"commanded\" fill=\"none\" stroke=\"#2c7bb6\" stroke-width=\"1.5\" points=\"{}\"/>\n",
+             f.polyline(plan), f.polyline(feed), f.polyline(cap), f.polyline(prof.line(false)),
+             f.polyline(prof.line(true)));
+  legend_item(os, 0, "#2c7bb6", "commanded speed (the pacer's v)");
+  legend_item(os, 1, "#333333", "path speed (v x the DDA's velocity / d)");
+  legend_item(os, 2, "#9bd19b", fmt::format("plan, ramps at {:g} mm/s^2", pl.accel));
+  legend_item(os, 3, "#d7191c", "programmed feed (rapid rate on G00)");
+  legend_item(os, 4, "#fdae61", "speed allowed: axes' vmax, curvature");
+  fmt::print(os, "<text x=\"536\" y=\"578\">{} pieces; pacer {:.4f} s, plan {:.4f} s</text>\n</svg>\n",
+             pp.segments.size(), res.seconds(), pp.totals.time - pp.totals.dwell);
+  return res;
 }
 
 }  // namespace dda

@@ -6,11 +6,19 @@
 // blocks (G01 chords, or the G6.3 block) it measures blocks, core commands, steps,
 // iterations, the lattice path's largest and mean distance from the ideal ellipse, the
 // programmed chords' own largest distance, and the direction reversals; it prints a
-// markdown table and draws both paths in one picture and a close-up.
+// markdown table and draws both paths in one picture and a close-up. At feeds (--feeds),
+// with the lathe's default limits but the acceleration and the junction deviation
+// given, it plans both programs' speeds (docs/programs.md, "Feeds and speeds"), runs
+// the plans on the pacer's reference model at 40 MHz and prints a second table: the
+// contour's planned time, the slowest junction inside it, the whole program's planned
+// and paced time, and how much sooner the native block ends; --speed-svg PREFIX draws
+// each program's speed at one of the feeds (PREFIX-macro.svg, PREFIX-native.svg).
 //   usage: paper_compare --macro FILE --native FILE [--svg FILE --closeup FILE]
+//          [--feeds F,F,.. --accel A --junction-deviation D --speed-svg PREFIX --speed-feed F]
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -22,8 +30,10 @@
 #include "geometry/fixed_trig.hpp"
 #include "geometry/geometry.hpp"
 #include "program_plan/program_plan.hpp"
+#include "report/pace_report.hpp"
 #include "report/report.hpp"
 #include "runner/runner.hpp"
+#include "speed/pace_plan.hpp"
 
 using namespace dda;
 using namespace dda::program;
@@ -53,15 +63,19 @@ bool contour_block(const Move& m) {
   return m.kind == MoveKind::Line || m.kind == MoveKind::EllipseCw || m.kind == MoveKind::EllipseCcw;
 }
 
+ReadOptions lathe_at_start() {
+  ReadOptions ro;
+  ro.machine = Machine::Lathe;
+  ro.start = start_point(Machine::Lathe, 60 * kNmPerMm, 5 * kNmPerMm);  // X60 Z5, as the examples' Run line
+  return ro;
+}
+
 Measure measure(const std::string& file, const std::string& name) {
   std::ifstream in(file);
   if (!in) throw InputError("cannot read " + file);
   std::stringstream text;
   text << in.rdbuf();
-  ReadOptions ro;
-  ro.machine = Machine::Lathe;
-  ro.start = start_point(Machine::Lathe, 60 * kNmPerMm, 5 * kNmPerMm);  // X60 Z5, as the examples' Run line
-  const ProgramPlan pp = plan_program(read(text.str(), file, ro), LatticeOptions{}, file);
+  const ProgramPlan pp = plan_program(read(text.str(), file, lathe_at_start()), LatticeOptions{}, file);
   Measure m;
   m.name = name;
   for (const BlockPlan& b : pp.blocks) {
@@ -121,6 +135,75 @@ void picture(const std::string& path, const Measure& native, const Measure& chor
   if (!out) throw GuardError("cannot write " + path);
 }
 
+// One program at one feed: its plan and the plan's run on the pacer.
+struct Timed {
+  double contour_time = 0, slowest = 0, planned = 0, paced = 0;
+  std::size_t pieces = 0;
+};
+
+Timed timed(const std::string& file, const speed::MachineLimits& lim, const std::string& svg) {
+  std::ifstream in(file);
+  if (!in) throw InputError("cannot read " + file);
+  const speed::PlannedProgram pp = speed::plan_program_pieces(in, file, lathe_at_start(), LatticeOptions{}, lim);
+  const speed::PlannerLimits pl = speed::planner_limits(lim, Machine::Lathe);
+  const speed::PaceSetup setup = speed::pace_setup(pl, lim, LatticeOptions{}.step, 40e6);
+  Timed t;
+  t.slowest = speed::kInfinity;
+  // The junctions inside the contour: the speed each allows (Grbl's, at most the feed),
+  // at every piece of a contour block but the contour's first.
+  bool inside = false;
+  std::size_t seg = 0;
+  for (const speed::BlockSpeeds& b : pp.blocks) {
+    const std::size_t first = seg;
+    seg += b.pieces;
+    if (!contour_block(b.move)) continue;
+    t.contour_time += b.time;
+    t.pieces += b.pieces;
+    for (std::size_t k = first; k < seg; ++k) {
+      if (inside) t.slowest = std::min(t.slowest, pp.segments[k].junction);
+      inside = true;
+    }
+  }
+  t.planned = pp.totals.time;
+  if (svg.empty()) {
+    t.paced = pace_program(pp, setup, pl, lim).seconds();
+  } else {
+    std::ofstream os(svg);
+    t.paced = write_program_speed_svg(os, pp, setup, pl, lim,
+                                      std::filesystem::path(file).filename().string() +
+                                          fmt::format(": the plan at {:g} mm/min on the pacer", lim.default_feed))
+                  .seconds();
+    if (!os) throw GuardError("cannot write " + svg);
+  }
+  return t;
+}
+
+void feed_table(const std::string& macro, const std::string& native, const std::vector<double>& feeds, double accel,
+                double deviation, const std::string& svg, double svg_feed) {
+  fmt::print(
+      "\n| feed (mm/min) | program | contour pieces | contour: planned time (s) | slowest junction inside it "
+      "(mm/min) | program: planned time (s) | program on the pacer (s) | the native block ends sooner by |\n"
+      "|---|---|---|---|---|---|---|---|\n");
+  for (std::size_t k = 0; k < feeds.size(); ++k) {
+    speed::MachineLimits lim = speed::default_limits(Machine::Lathe);
+    for (speed::AxisLimits& a : lim.axes) a.accel = accel;
+    lim.junction_deviation = deviation;
+    lim.default_feed = feeds[k];
+    const bool draw = feeds[k] == svg_feed && !svg.empty();
+    const Timed c = timed(macro, lim, draw ? svg + "-macro.svg" : "");
+    const Timed n = timed(native, lim, draw ? svg + "-native.svg" : "");
+    const auto row = [&](const char* name, const Timed& t, const std::string& gain) {
+      fmt::print("| {:g} | {} | {} | {:.4f} | {} | {:.4f} | {:.4f} | {} |\n", feeds[k], name, t.pieces, t.contour_time,
+                 std::isfinite(t.slowest) ? fmt::format("{:.1f}", t.slowest * 60) : std::string("straight on"),
+                 t.planned, t.paced, gain);
+    };
+    row("macro (G01 chords)", c, "");
+    row("native (G6.3)", n,
+        fmt::format("{:.4f} s ({:.1f}% of the contour's time)", c.contour_time - n.contour_time,
+                    100 * (c.contour_time - n.contour_time) / c.contour_time));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,6 +213,15 @@ int main(int argc, char** argv) {
   app.add_option("--native", native, "the native program (examples/lathe-paper-native.ngc)")->required();
   app.add_option("--svg", svg, "both paths in one picture");
   app.add_option("--closeup", closeup, "a close-up where the chords show");
+  std::vector<double> feeds;
+  double accel = 500, deviation = 0.01;
+  std::string speed_svg;
+  app.add_option("--feeds", feeds, "feeds (mm/min) to plan both programs at")->delimiter(',');
+  app.add_option("--accel", accel, "every axis' acceleration, mm/s^2 (default 500)");
+  app.add_option("--junction-deviation", deviation, "mm (default 0.01)");
+  double speed_feed = 0;
+  app.add_option("--speed-svg", speed_svg, "PREFIX: both programs' speed at --speed-feed (default: the first feed)");
+  app.add_option("--speed-feed", speed_feed, "the feed of the --speed-svg pictures (one of --feeds)");
   CLI11_PARSE(app, argc, argv);
   try {
     const Measure c = measure(macro, "the paper's macro program (G01 chords)");
@@ -152,6 +244,8 @@ int main(int argc, char** argv) {
       const auto [x, y] = ideal_arc(100, 100).front();
       picture(closeup, n, c, {x - 12, y - 12, x + 12, y + 12}, "close-up at the 100-degree point (24 x 24 steps)");
     }
+    if (!feeds.empty())
+      feed_table(macro, native, feeds, accel, deviation, speed_svg, speed_feed > 0 ? speed_feed : feeds[0]);
   } catch (const std::exception& e) {
     std::cerr << "paper_compare: " << e.what() << '\n';
     return 1;
