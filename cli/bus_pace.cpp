@@ -17,8 +17,8 @@ namespace dda::vec {
 
 bool BusCli::scenario() const {
   const auto given = [](const CLI::Option* o) { return o && o->count() > 0; };
-  return given(accel_opt) || given(vmin_opt) || given(override_opt) || override_at || hold_at || resume_at ||
-         soft_stop_at || watchdog;
+  return (given(accel_opt) && !planned) || given(vmin_opt) || given(override_opt) || override_at || hold_at ||
+         resume_at || soft_stop_at || watchdog;
 }
 
 void add_bus_pace_options(CLI::App* vectors, BusCli& c) {
@@ -43,7 +43,7 @@ void add_bus_pace_options(CLI::App* vectors, BusCli& c) {
 
 void bus_pace_options(const BusCli& c, BusOptions& b) {
   const auto given = [](const CLI::Option* o) { return o && o->count() > 0; };
-  if (given(c.accel_opt)) {
+  if (given(c.accel_opt) && !c.planned) {
     if (c.feed_rate == 0) throw InputError("--accel paces the entries at --feed-rate: give --feed-rate and --clock");
     if (!(c.accel >= 0 && c.accel <= 1e12))
       throw InputError(fmt::format("--accel = {} is out of range: steps/s^2, 0 to 1e12", c.accel));
@@ -78,6 +78,7 @@ void bus_pace_options(const BusCli& c, BusOptions& b) {
 }
 
 std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, const BusOptions& b) {
+  if (b.planned) return b.planned_entries;
   if (!b.paced) return {};
   std::vector<Command> cmds;
   for (const auto& p : plans)

@@ -141,7 +141,14 @@ BusOptions bus_options(const BusCli& c) {
   if (!c.timing_z.empty()) b.timing_z = parse_timing("--timing-z", c.timing_z);
   b.polarity = c.polarity;
   if (c.feed && c.feed_rate != 0) throw InputError("--feed-increment and --feed-rate are alternatives: give one");
-  if ((c.feed_rate != 0) != (c.clock_hz != 0)) throw InputError("--feed-rate and --clock go together");
+  if (c.planned) {
+    if (c.feed || c.feed_rate != 0 || (c.vmin_opt && c.vmin_opt->count()))
+      throw InputError("--feed-increment, --feed-rate and --vmin are an arc's: a program's speeds are planned");
+    if (!(c.clock_hz >= 1 && c.clock_hz <= 1e10))
+      throw InputError("--speeds with --bus needs --clock HZ (the block's clock, 1 to 1e10)");
+  } else if ((c.feed_rate != 0) != (c.clock_hz != 0)) {
+    throw InputError("--feed-rate and --clock go together");
+  }
   // (nan and inf fail these comparisons too.)
   if (c.feed_rate != 0 && !(c.feed_rate > 0 && c.feed_rate <= 1e9)) {
     throw InputError(
@@ -153,6 +160,7 @@ BusOptions bus_options(const BusCli& c) {
   b.feed = c.feed;
   b.feed_rate = c.feed_rate;
   b.clock_hz = c.clock_hz;
+  b.planned = c.planned;
   bus_pace_options(c, b);
   return b;
 }
@@ -179,16 +187,17 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
     const PaceOptions& o = bus.pace;
     d.set_pacing(std::uint32_t(accel_field(o.accel, o.clock_hz)), speed_field(o.vmin, o.clock_hz));
   }
+  if (bus.planned) d.set_pacing(std::uint32_t(bus.planned_accel), bus.planned_vmin);
   if (bus.override_ != motion::kOverrideOne && bus.override_at == 0) d.set_override(bus.override_);
   d.preset(plans.front().from);
   const std::vector<motion::PaceEntry> pace = bus_pace_entries(plans, bus);
   std::size_t k = 0;
   for (const auto& p : plans) {
     for (const auto& piece : p.pieces) {
-      const std::uint32_t f = bus.paced || bus.feed_rate == 0
+      const std::uint32_t f = bus.paced || bus.planned || bus.feed_rate == 0
                                   ? bus.feed
                                   : feed::feed_increment(feed::piece_motion(piece.cmd), bus.feed_rate, bus.clock_hz);
-      d.queue(piece.cmd, f, piece.rot, bus.paced ? pace[k++] : motion::PaceEntry{});
+      d.queue(piece.cmd, f, piece.rot, bus.paced || bus.planned ? pace[k++] : motion::PaceEntry{});
     }
   }
   run_bus_scenario(m, d, bus, cycle);
@@ -215,14 +224,18 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
   j["timing_y"] = timing(bus.timing_y);
   j["timing_z"] = timing(bus.timing_z);
   j["polarity"] = bus.polarity;
-  if (bus.feed_rate > 0) {
-    j["feed_rate_steps_per_s"] = bus.feed_rate;
+  if (bus.feed_rate > 0 || bus.planned) {
+    if (bus.feed_rate > 0) j["feed_rate_steps_per_s"] = bus.feed_rate;
     j["clock_hz"] = bus.clock_hz;
   } else {
     j["feed_increment"] = bus.feed;
   }
   if (bus.paced) {
     j["paced"] = {{"accel_steps_per_s2", bus.pace.accel}, {"vmin_steps_per_s", bus.pace.vmin}};
+  }
+  if (bus.planned) {
+    j["planned_speeds"] = {
+        {"accel", bus.planned_accel}, {"vmin", bus.planned_vmin}, {"entries", bus.planned_entries.size()}};
   }
   j["scenario"] = {{"override", bus.override_},  {"override_at", bus.override_at},   {"hold_at", bus.hold_at},
                    {"resume_at", bus.resume_at}, {"soft_stop_at", bus.soft_stop_at}, {"watchdog", bus.watchdog}};

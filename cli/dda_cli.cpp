@@ -45,6 +45,7 @@
 #include "report/pace_report.hpp"
 #include "report/program_report.hpp"
 #include "report/report.hpp"
+#include "speed/pace_plan.hpp"
 #include "speed_cmd.hpp"
 #include "temp_files.hpp"
 #include "vectors.hpp"
@@ -123,6 +124,7 @@ struct VectorsCli {
   std::string out_dir, seed = "1", ce_percent = "100", max_size = "1G";
   std::vector<std::string> then;  // further arcs, each its options in one string
   vec::BusCli bus;
+  SpeedCli speed;  // --program --speeds: the bus set at the planned speeds
 };
 
 // The options of `dda feed` besides the arc's.
@@ -172,6 +174,7 @@ void set_up_vectors(CLI::App* sub, Cli& c) {
                   "refuse a set larger than SIZE bytes (K, M, G, T: binary multiples; default 1G), before it is "
                   "written");
   vec::add_bus_options(sub, v.bus);
+  add_speed_options(sub, v.speed, false, true);
 }
 
 void set_up_feed(CLI::App* sub, Cli& c) {
@@ -267,6 +270,38 @@ std::vector<Plan> vector_plans(const VectorsCli& v) {
   return plans;
 }
 
+// dda vectors --bus --program FILE --speeds --clock HZ: the program's pieces (cut where
+// the planner cuts them) with the entries of its plan.
+void run_planned_vectors(const VectorsCli& v, const vec::Options& vo) {
+  if (!v.arc.prog.given() || !v.bus.bus)
+    throw InputError("--speeds and the machine's limits go with --bus --program: the block paces the plan");
+  if (!v.then.empty()) throw InputError("--then is invalid with --program: one program is one run");
+  check_program_options(v.arc);
+  vec::BusCli bc = v.bus;
+  bc.planned = true;
+  vec::BusOptions bo = vec::bus_options(bc);
+  const ProgramRun run = program_run(v.arc.prog, parse_preload(v.arc.preload), true);
+  speed::MachineLimits lim = machine_limits(v.speed, run.read.machine);
+  if (v.bus.accel_opt && v.bus.accel_opt->count()) {
+    if (!(v.bus.accel > 0))
+      throw InputError("accel = " + std::to_string(v.bus.accel) + " is out of range: mm/s^2, above 0");
+    for (speed::AxisLimits& a : lim.axes) a.accel = v.bus.accel;
+  }
+  const auto in = program::open_program(v.arc.prog.file);
+  const speed::PlannedProgram pp = speed::plan_program_pieces(*in, run.file, run.read, run.lattice, lim);
+  for (const Piece& pc : pp.plan.pieces) hw::pack_command(pc.cmd);  // (refused if too wide for the hardware)
+  const speed::PlannerLimits pl = speed::planner_limits(lim, run.read.machine);
+  const speed::PaceSetup setup = speed::pace_setup(pl, lim, run.lattice.step, bo.clock_hz);
+  bo.planned_accel = setup.accel;
+  bo.planned_vmin = setup.vmin;
+  for (std::size_t k = 0; k < pp.segments.size(); ++k)
+    bo.planned_entries.push_back(speed::pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
+  AtomicFile wave(v.arc.vcd);
+  bo.vcd = wave.write_path();
+  vec::write_bus_vector_set({pp.plan}, vo, bo);
+  wave.commit();
+}
+
 void run_vectors(const Cli& c, int argc, char** argv) {
   const VectorsCli& v = c.vectors;
   parse_enum<int>("format", v.arc.format, {{"hex", 0}});
@@ -275,6 +310,7 @@ void run_vectors(const Cli& c, int argc, char** argv) {
     throw InputError("--vcd goes with --bus in vectors: the RTL's waveform of the bus-level set");
   }
   const vec::Options vo = vector_options(v, argc, argv);
+  if (v.speed.wanted()) return run_planned_vectors(v, vo);
   const std::vector<Plan> plans = vector_plans(v);
   if (v.bus.bus) {
     vec::BusOptions bo = vec::bus_options(v.bus);

@@ -51,6 +51,12 @@ struct BusOptions {
   std::uint32_t override_ = motion::kOverrideOne;
   std::uint64_t override_at = 0, hold_at = 0, resume_at = 0, soft_stop_at = 0;
   std::uint32_t watchdog = 0;
+  // A part program at its planned speeds (--program --speeds): one entry per piece, the
+  // block's ACCEL and VMIN (instead of paced or a feed).
+  bool planned = false;
+  std::vector<motion::PaceEntry> planned_entries;
+  std::uint64_t planned_accel = 0;
+  std::uint32_t planned_vmin = 0;
 };
 // The --bus options of `dda vectors` as given, and their checked values (InputError for
 // a malformed timing, a feed without --bus, ...).
@@ -64,6 +70,9 @@ struct BusCli {
   std::uint64_t override_at = 0, hold_at = 0, resume_at = 0, soft_stop_at = 0;
   std::uint32_t watchdog = 0;
   CLI::Option *accel_opt = nullptr, *vmin_opt = nullptr, *override_opt = nullptr;
+  // The run is a program at its planned speeds: --clock alone, --accel in mm/s^2 (the
+  // planner's), --feed-rate and --vmin refused.
+  bool planned = false;
   bool scenario() const;  // any of the pacing and scenario options given
 };
 // The pacing and scenario options (cli/bus_pace.cpp): added to `dda vectors`, checked

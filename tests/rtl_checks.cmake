@@ -147,6 +147,12 @@ dda_bus_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper
                 --start 60,5 --feed-increment 2621440000 --seed 17)
 set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_paper_macro vectors.bus.paper_macro
              APPEND PROPERTY LABELS program)
+# A program at its planned speeds (docs/programs.md, "Feeds and speeds"): the pacer's
+# entries from the speed plan (corner, arc, ellipse cut for its curvature, dwell,
+# reversal), with drive timings, at 600 kHz (about 400,000 cycles).
+dda_bus_vec_set(feeds --program ${PROJECT_SOURCE_DIR}/examples/feeds.ngc --step 0.01 --speeds --accel 2000
+                --clock 6e5 --timing 2,2,1,1 --seed 31)
+set_property(TEST vectors.bus.gen_feeds vectors.bus.feeds APPEND PROPERTY LABELS "program;speed")
 # The three-axis examples (the third axis through its own step/dir stage): a helix with
 # Z timings and inverted Z outputs, a pocket on pipelined cycles, the drilling cycles at
 # a feed, 3-D lines with ce_i low a tenth of the time, arcs in the three planes (the

@@ -27,6 +27,7 @@ SpeedMonitor::SpeedMonitor(const MotionLimits& limits, std::uint64_t sub_clocks)
   // The machine is at rest when the monitor starts: the windows before it are still.
   at_.assign(std::size_t(kSubs) + 1, pos_);
   speeds_.assign(std::size_t(kSubs) + 1, 0.0);
+  axis_v_.assign(std::size_t(kSubs) + 1, std::array<double, 3>{});
 }
 
 void SpeedMonitor::edge(const std::array<bool, 3>& step, const std::array<bool, 3>& dir) {
@@ -67,6 +68,7 @@ void SpeedMonitor::sample() {
   speeds_.pop_front();
   s.accel = (s.speed - speeds_.front()) / t_win;
   samples_.push_back(s);
+  sample_axes(t_win, s.t);
   peak_speed_ = std::max(peak_speed_, s.speed);
   peak_accel_ = std::max(peak_accel_, std::fabs(s.accel));
   if (lim_.max_speed > 0 && s.speed > lim_.max_speed * (1 + lim_.speed_tolerance)) {
@@ -80,6 +82,32 @@ void SpeedMonitor::sample() {
         fmt::format("speed monitor: {:.4g} steps/s^2 between the windows ending at {:.6f} s and {:.6f} s, "
                     "above the limit {:.4g} steps/s^2 (+{:.0f}%)",
                     s.accel, s.t - t_win, s.t, lim_.max_accel, 100 * lim_.accel_tolerance));
+  }
+}
+
+// Each axis over the same windows: its velocity, and the change from the window before.
+void SpeedMonitor::sample_axes(double t_win, double t) {
+  std::array<double, 3> v{};
+  for (std::size_t a = 0; a < 3; ++a) v[a] = double(at_.back()[a] - at_.front()[a]) / t_win;
+  axis_v_.push_back(v);
+  axis_v_.pop_front();
+  constexpr char kName[] = "XYZ";
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double acc = (v[a] - axis_v_.front()[a]) / t_win;
+    peak_axis_speed_[a] = std::max(peak_axis_speed_[a], std::fabs(v[a]));
+    peak_axis_accel_[a] = std::max(peak_axis_accel_[a], std::fabs(acc));
+    if (lim_.axis_speed[a] > 0 && std::fabs(v[a]) > lim_.axis_speed[a] * (1 + lim_.speed_tolerance)) {
+      throw GuardError(
+          fmt::format("speed monitor: axis {} at {:.1f} steps/s over the window ending at {:.6f} s, above "
+                      "its limit {:.1f} steps/s (+{:.0f}%)",
+                      kName[a], v[a], t, lim_.axis_speed[a], 100 * lim_.speed_tolerance));
+    }
+    if (lim_.axis_accel[a] > 0 && std::fabs(acc) > lim_.axis_accel[a] * (1 + lim_.accel_tolerance)) {
+      throw GuardError(
+          fmt::format("speed monitor: axis {} at {:.4g} steps/s^2 between the windows ending at {:.6f} s "
+                      "and {:.6f} s, above its limit {:.4g} steps/s^2 (+{:.0f}%)",
+                      kName[a], acc, t - t_win, t, lim_.axis_accel[a], 100 * lim_.accel_tolerance));
+    }
   }
 }
 

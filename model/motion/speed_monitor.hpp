@@ -34,6 +34,9 @@ struct MotionLimits {
   double max_accel = 0;  // steps/s^2 along the path; 0: not checked
   // The share over each limit a measured figure may reach before it fails.
   double speed_tolerance = 0.01, accel_tolerance = 0.05;
+  // Each axis' own speed and acceleration (steps/s, steps/s^2; 0: not checked): its
+  // position's change over a window, and that change's change between windows.
+  std::array<double, 3> axis_speed{}, axis_accel{};
 };
 
 class SpeedMonitor {
@@ -63,6 +66,9 @@ class SpeedMonitor {
   const std::vector<Sample>& samples() const { return samples_; }
   double peak_speed() const { return peak_speed_; }
   double peak_accel() const { return peak_accel_; }  // the largest |acceleration|
+  // Each axis' largest |speed| and |acceleration|.
+  const std::array<double, 3>& peak_axis_speed() const { return peak_axis_speed_; }
+  const std::array<double, 3>& peak_axis_accel() const { return peak_axis_accel_; }
   const MotionLimits& limits() const { return lim_; }
   std::uint64_t sub_clocks() const { return sub_; }
   std::array<std::int64_t, 3> position() const { return pos_; }
@@ -71,6 +77,7 @@ class SpeedMonitor {
 
  private:
   void sample();
+  void sample_axes(double t_win, double t);
 
   MotionLimits lim_;
   std::uint64_t sub_ = 1, cycle_ = 0;
@@ -78,8 +85,10 @@ class SpeedMonitor {
   std::array<std::int64_t, 3> pos_{};
   std::deque<std::array<std::int64_t, 3>> at_;  // the last kSubs + 1 sampled positions
   std::deque<double> speeds_;                   // the last kSubs + 1 windows' speeds
+  std::deque<std::array<double, 3>> axis_v_;    // and each axis' velocity
   std::vector<Sample> samples_;
   double peak_speed_ = 0, peak_accel_ = 0;
+  std::array<double, 3> peak_axis_speed_{}, peak_axis_accel_{};
 };
 
 }  // namespace dda::motion
