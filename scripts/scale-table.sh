@@ -6,7 +6,9 @@
 # and the peak resident memory (GNU time) of `dda stats --program` and `dda path
 # --program` on the golden model, and stats' iterations per second beside the golden
 # datapath's bare rate (golden_bench: Datapath::step with records off, measured in the
-# same run, next to each row). Then one arc at the largest semi-axis `dda stats` takes
+# same run, next to each row), and the speed planner's run (`dda stats --program --speeds`
+# at a default feed of 1000 mm/min: reader, block planner, lookahead; no datapath but
+# the curved pieces it cuts) with its time per block. Then one arc at the largest semi-axis `dda stats` takes
 # (2^30 steps). A benchmark: it prints figures and asserts nothing.
 #   usage: scripts/scale-table.sh [--write] [--max-exp N]   (--write: into docs/results.md)
 set -euo pipefail
@@ -61,8 +63,8 @@ bare_rate() {
   "$build/bin/golden_bench" --reps 5 --radius 200000 | awk '{print $3 / $6}' | sort -g | awk 'NR == 3'
 }
 bares=""
-table="| blocks | program size | iterations | \`stats\`: time | peak memory | iterations/s | of the bare rate | \`path\`: time | peak memory |
-|---|---|---|---|---|---|---|---|---|"
+table="| blocks | program size | iterations | \`stats\`: time | peak memory | iterations/s | of the bare rate | \`path\`: time | peak memory | \`stats --speeds\`: time | peak memory | per block |
+|---|---|---|---|---|---|---|---|---|---|---|---|"
 for e in $(seq 3 "$max_exp"); do
   n=$((10 ** e))
   gen "$n" > "$work/p.ngc"
@@ -75,11 +77,12 @@ for e in $(seq 3 "$max_exp"); do
   iters=$(awk '$1 == "iterations:" {print $2}' "$work/out")
   blocks=$(awk '$1 == "blocks:" {print $2}' "$work/out")
   read -r pa_s pa_kb < <(measure "$dda" path --program "$work/p.ngc")
+  read -r sp_s sp_kb < <(measure "$dda" stats --program "$work/p.ngc" --speeds --default-feed 1000)
   rate=$(awk -v i="$iters" -v s="$st_s" 'BEGIN {printf "%.0f", (s > 0 ? i / s : 0)}')
   table+=$'\n'"$(awk -v b="$blocks" -v sz="$size" -v i="$iters" -v ss="$st_s" -v sk="$st_kb" -v r="$rate" \
-    -v bare="$bare" -v ps="$pa_s" -v pk="$pa_kb" 'BEGIN {
-      printf "| %d | %s | %.0f | %.2f s | %.1f MB | %.3g | %.2f | %.2f s | %.1f MB |", b, sz, i, ss, sk / 1024, r,
-        r / bare, ps, pk / 1024 }')"
+    -v bare="$bare" -v ps="$pa_s" -v pk="$pa_kb" -v qs="$sp_s" -v qk="$sp_kb" 'BEGIN {
+      printf "| %d | %s | %.0f | %.2f s | %.1f MB | %.3g | %.2f | %.2f s | %.1f MB | %.2f s | %.1f MB | %.1f us |", b, sz, i,
+        ss, sk / 1024, r, r / bare, ps, pk / 1024, qs, qk / 1024, 1e6 * qs / b }')"
 done
 read -r arc_s arc_kb < <(measure "$dda" stats --a 1073741824 --b 1)
 arc_iters=$(awk '$1 == "iterations:" {print $2}' "$work/out")

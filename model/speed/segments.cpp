@@ -256,8 +256,13 @@ void SegmentBuilder::cut(const program::BlockPlan& b, const Piece& pc, const Seg
   const Curve c = curve_of(b.move);
   const Point f = to_plane_axes(pc.from, b.rot), t = to_plane_axes(pc.to, b.rot);
   const auto [t0, sweep] = piece_sweep(c, double(f.x) * mm, double(f.y) * mm, double(t.x) * mm, double(t.y) * mm);
-  for (const Piece& part :
-       cut_piece(pc, b.rot, c, t0, sweep, cut_fractions(c, t0, sweep, cap, plim_.normal_accel), mm)) {
+  const std::vector<double> cuts = cut_fractions(c, t0, sweep, cap, plim_.normal_accel);
+  if (cuts.empty()) {  // (a circle: the same limit all along)
+    pieces.push_back(pc);
+    segs.push_back(seg);
+    return;
+  }
+  for (const Piece& part : cut_piece(pc, b.rot, c, t0, sweep, cuts, mm)) {
     pieces.push_back(part);
     segs.push_back(piece_segment(b, part, step_));
   }
