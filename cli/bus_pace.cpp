@@ -25,7 +25,7 @@ void add_bus_pace_options(CLI::App* vectors, BusCli& c) {
   c.accel_opt = vectors->add_option(
       "--accel", c.accel,
       "with --bus --feed-rate --clock: pace the entries by the pacer, ramping at this acceleration (steps/s^2; 0: "
-      "no ramp)");
+      "no ramp); with --program --speeds: every axis' acceleration, mm/s^2");
   c.vmin_opt = vectors->add_option("--vmin", c.vmin,
                                    "with --accel: the minimum speed, steps/s (default sqrt(2 x accel x 1 step))");
   c.override_opt = vectors->add_option("--override", c.override_pct,

@@ -283,9 +283,7 @@ void run_planned_vectors(const VectorsCli& v, const vec::Options& vo) {
   const ProgramRun run = program_run(v.arc.prog, parse_preload(v.arc.preload), true);
   speed::MachineLimits lim = machine_limits(v.speed, run.read.machine);
   if (v.bus.accel_opt && v.bus.accel_opt->count()) {
-    if (!(v.bus.accel > 0))
-      throw InputError("accel = " + std::to_string(v.bus.accel) + " is out of range: mm/s^2, above 0");
-    for (speed::AxisLimits& a : lim.axes) a.accel = v.bus.accel;
+    for (speed::AxisLimits& a : lim.axes) a.accel = positive("accel", v.bus.accel);
   }
   const auto in = program::open_program(v.arc.prog.file);
   const speed::PlannedProgram pp = speed::plan_program_pieces(*in, run.file, run.read, run.lattice, lim);
@@ -370,7 +368,8 @@ void run_speed_plot(const Cli& c, const std::string& title) {
       throw InputError(
           "--feed-rate and --vmin are an arc's, in steps: a program's feeds come from its F words "
           "(the minimum speed from the machine's limits)");
-    if (!pl.out.empty()) throw InputError("--speed with --program draws the speed alone: leave --out out");
+    if (!pl.out.empty() || c.plot_view != "xy")
+      throw InputError("--speed with --program draws the speed alone: leave --out and --view out");
     const double clock = c.plot_pace.clock_opt->count() ? c.plot_pace.clock_hz : 40e6;
     return run_program_speed_plot(pl, c.plot_speed_limits, c.plot_speed,
                                   c.plot_pace.accel_opt->count() ? &c.plot_pace.accel : nullptr, clock, title);

@@ -25,8 +25,9 @@ void add_pace_options(CLI::App* sub, PaceCli& p) {
   p.feed_opt =
       sub->add_option("--feed-rate", p.feed_rate,
                       "run the pacer's reference model at this feed, steps/s along the path (needs --accel, --clock)");
-  p.accel_opt =
-      sub->add_option("--accel", p.accel, "with --feed-rate: the acceleration along the path, steps/s^2 (0: none)");
+  p.accel_opt = sub->add_option("--accel", p.accel,
+                                "with --feed-rate: the acceleration along the path, steps/s^2 (0: none); for a part "
+                                "program's speed picture: every axis' acceleration, mm/s^2");
   p.clock_opt = sub->add_option("--clock", p.clock_hz, "with --feed-rate: the block's clock in Hz");
   p.vmin_opt =
       sub->add_option("--vmin", p.vmin,

@@ -43,15 +43,11 @@ void add_speed_options(CLI::App* sub, SpeedCli& s, bool accel, bool flag) {
                                  "implies --speeds");
 }
 
-namespace {
-
 double positive(const char* name, double v) {
   if (!std::isfinite(v) || v <= 0)
     throw InputError(fmt::format("{} = {} is out of range: it must be positive", name, v));
   return v;
 }
-
-}  // namespace
 
 speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m) {
   speed::MachineLimits l = speed::default_limits(m);
@@ -72,6 +68,7 @@ void run_speed_report(const ArcOptions& o, const SpeedCli& s) {
   if (o.engine != "golden")
     throw InputError("--speeds plans the feeds in the driver: no engine runs (leave --engine out)");
   if (!o.vcd.empty()) throw InputError("--vcd goes with a run on an engine, not with --speeds");
+  check_program_options(o);
   const program::BlockStatsFormat fmt =
       parse_enum<program::BlockStatsFormat>("format", o.format.empty() ? "text" : o.format,
                                             {{"text", program::BlockStatsFormat::Text},
@@ -94,6 +91,7 @@ void run_program_speed_plot(const ArcOptions& o, const SpeedCli& s, const std::s
     throw InputError("--speed runs the pacer's reference model on the plan: leave --engine and --vcd out");
   if (!(clock_hz > 0 && clock_hz <= 1e10))
     throw InputError(fmt::format("--clock = {} is out of range: Hz, above 0 and at most 1e10", clock_hz));
+  check_program_options(o);
   const ProgramRun run = program_run(o.prog, parse_preload(o.preload), false);
   speed::MachineLimits lim = machine_limits(s, run.read.machine);
   if (accel) {

@@ -27,6 +27,8 @@ struct SpeedCli {
   bool wanted() const { return speeds || any_given(); }
 };
 
+// A limit's value, refused (InputError naming it) unless finite and above 0.
+double positive(const char* name, double v);
 // The options on `sub`; without `accel` and `flag`, those of `plot --speed`, whose
 // --accel is the pacer's (in mm/s^2 with --program) and which always plans.
 void add_speed_options(CLI::App* sub, SpeedCli& s, bool accel = true, bool flag = true);

@@ -105,6 +105,9 @@ TEST_CASE("speed: a dwell rests the tool and adds its time, in each dialect's un
                             Machine::Mill, program::Dialect::Fanuc);
   CHECK(fanuc.blocks[1].dwell == Approx(1.5));
   CHECK(fanuc.totals.dwell == Approx(3.5));
+  // A dwell before a last move shorter than a step still counts.
+  const Result tail = plan("G21 G90 G1 X10 F600\nG4 P2\nG1 X10.0001\nM2\n");
+  CHECK(tail.totals.dwell == Approx(2));
   const Result stop = plan("G21 G90 G1 X10 F600\nM0\nG1 X20\nM2\n");
   CHECK(stop.blocks[0].exit == 0);
   CHECK(stop.blocks[1].stop);
@@ -179,6 +182,17 @@ TEST_CASE("speed: feed errors name the block and the rule") {
   CHECK_THAT(error_of("G21 G95 G96 S100 G1 X10 F0.1\nM2\n"), Catch::Contains("constant surface speed"));
   CHECK(error_of("G21 G95 S1000 G1 X10 F0.1\nM2\n").empty());
   CHECK(plan("G21 G95 S1000 G1 X50 F0.1\nM2\n").blocks[0].cruise == Approx(100.0 / 60));
+  // F given per minute, then the mode changed: F must be given again.
+  CHECK_THAT(error_of("G21 G94 G1 X10 F300\nG95 S1000 G1 X20\nM2\n"),
+             Catch::Contains("the feed mode changed to per revolution (G95, G99) since F was given"));
+  CHECK(error_of("G21 G94 G1 X10 F300\nG95 S1000 G1 X20 F0.1\nM2\n").empty());
+  // Below the minimum speed (1 mm/min by default) the block would pace faster than asked.
+  CHECK_THAT(error_of("G21 G1 X1 F0.5\nM2\n"), Catch::Contains("below the machine's minimum speed"));
+  // On a Fanuc lathe S with G50 is the spindle's clamp, not its speed.
+  const Result clamp = plan("O1\nG21 G97 S800 G99\nG50 S3000\nG1 Z-50 F0.1\nM30\n", default_limits(Machine::Lathe),
+                            Machine::Lathe, program::Dialect::Fanuc);
+  CHECK(mm_min(clamp.blocks[0].feed) == Approx(80));
+  CHECK_THAT(error_of("G21 G96 S200 G95\nG97 G1 X10 F0.1\nM2\n"), Catch::Contains("no spindle speed"));
   MachineLimits bad = default_limits(Machine::Mill);
   bad.tangential_share = 1;
   CHECK_THAT(error_of("G21 G1 X1 F1\nM2\n", bad), Catch::Contains("tangential_share"));

@@ -5,7 +5,7 @@
 // the step pins alone and fails the run on a path acceleration above the plan's (5%
 // for its whole-step quantization) or a speed above the fastest piece's; every piece
 // that cruises does so within 1% of its planned speed; the run ends on the program's
-// end; and its time is the plan's within 2% (the pacer's lengths are the DDA's, its
+// end; and its time is the plan's within 0.5% (the pacer's lengths are the DDA's, its
 // rests at the minimum speed).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
@@ -59,6 +59,6 @@ TEST_CASE("speed pace: the examples at their planned speeds on the pacer's refer
     CHECK(r.worst_cruise_error < 0.01);
     const double planned = pp.totals.time - pp.totals.dwell;
     WARN(e.file << ": pacer " << r.seconds() << " s, plan " << planned << " s, monitor " << r.monitor.summary());
-    CHECK(r.seconds() == Approx(planned).epsilon(0.02));
+    CHECK(r.seconds() == Approx(planned).epsilon(0.005));
   }
 }

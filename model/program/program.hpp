@@ -98,6 +98,7 @@ struct Move {
   double feed = 0;
   FeedMode feed_mode = FeedMode::PerMinute;
   bool inch = false;
+  bool feed_stale = false;  // F was given under another feed mode (and not since)
   // The spindle: S in force (0 if none yet), in rpm under G97 or, under G96 (css),
   // the surface speed in m/min (ft/min in inches).
   double spindle = 0;

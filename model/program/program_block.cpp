@@ -343,13 +343,22 @@ void Reader::set_modes(const Block& b) {
     m_.inverse_time = g == 930;
     m_.per_rev = g == 950 || g == 990;
   }
-  if (b.spindle) {
+  const int feed_mode = m_.inverse_time ? 2 : m_.per_rev ? 1 : 0;
+  // S is the spindle speed (rpm under G97, the surface speed under G96), except with G50,
+  // where it is the spindle's clamp on HNC's and Fanuc's lathes. A change between G96
+  // and G97 without S leaves the speed unknown (a control keeps the rpm it turns at).
+  const int spindle_code = b.group[kSpindle] ? tenths(*b.group[kSpindle]) : 0;
+  if (spindle_code == 960 || spindle_code == 970) {
+    const bool css = spindle_code == 960;
+    if (css != m_.css && !b.spindle) m_.spindle = 0;
+    m_.css = css;
+  }
+  if (b.spindle && spindle_code != 500) {
     const Word& w = *b.spindle;
     const double s = double(w.mantissa) / double(pow10(w.decimals));
     if (s < 0) fail(w.pos, "the spindle speed S must not be negative");
     m_.spindle = s;
   }
-  if (b.group[kSpindle] && tenths(*b.group[kSpindle]) != 500) m_.css = tenths(*b.group[kSpindle]) == 960;
   if (b.group[kPath]) {
     m_.exact_stop = tenths(*b.group[kPath]) != 640;
     m_.path_tolerance = 0;
@@ -359,6 +368,7 @@ void Reader::set_modes(const Block& b) {
     const double f = double(w.mantissa) / double(pow10(w.decimals));
     if (f <= 0) fail(w.pos, "the feed F must be positive");
     m_.feed = f;
+    m_.feed_mode_of_f = feed_mode;
   }
   if (b.group[kPlane]) m_.plane = tenths(*b.group[kPlane]);
   if (b.group[kUnits]) m_.inch = tenths(*b.group[kUnits]) == 200;

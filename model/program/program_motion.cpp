@@ -161,6 +161,7 @@ void Reader::emit(Move& mv, const Axes& to) {
   mv.plane = move_plane_;
   mv.feed_mode = m_.inverse_time ? FeedMode::InverseTime : m_.per_rev ? FeedMode::PerRevolution : FeedMode::PerMinute;
   mv.inch = m_.inch;
+  mv.feed_stale = m_.feed_mode_of_f != (m_.inverse_time ? 2 : m_.per_rev ? 1 : 0);
   mv.spindle = m_.spindle;
   mv.css = m_.css;
   mv.exact_stop = m_.exact_stop;

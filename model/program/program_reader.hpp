@@ -46,6 +46,7 @@ struct Modal {
   int cs = 0;                  // the work offset in force: 0 G54 .. 8 G59.3
   double feed = 0;
   bool per_rev = false;       // G95 (G99 on HNC's and Fanuc's lathes)
+  int feed_mode_of_f = 0;     // the feed mode F was given in: 0 per minute, 1 per revolution, 2 inverse time
   double spindle = 0;         // S
   bool css = false;           // G96
   bool exact_stop = false;    // G61, G61.1

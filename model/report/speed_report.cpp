@@ -83,7 +83,7 @@ void SpeedReport::block(const BlockSpeeds& b) {
                "| {:>5} | {:>6} | {:<11} | {:>10.4f} | {:>9.2f} | {:>9.2f} | {:>9.2f} | {:>9.2f} | {:>9.4f} | {:>4} | "
                "{:<9} |\n",
                mv.pos.line, block_no(mv), program::kind_name(mv.kind), b.length, per_min(b.feed), per_min(b.entry),
-               per_min(b.cruise), per_min(b.exit), b.time + b.dwell, rest, to_string(b.limit));
+               per_min(b.cruise), per_min(b.exit), b.time, rest, to_string(b.limit));
   }
   ++rows_;
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The speed plan of a part program (dda stats --program --speeds): one row per block as
 // the lookahead passes it (its length, the feed asked, its entry, cruise and exit
-// speeds in mm/min, its time and dwell, whether it starts at rest, what limit held it
-// below the feed), then the totals; text, CSV or JSON.
+// speeds in mm/min, its time (ramps and cruise) and the dwell before it, whether it
+// starts at rest, what limit held it below the feed), then the totals (the time with
+// every dwell); text (no dwell column), CSV or JSON.
 #pragma once
 
 #include <ostream>

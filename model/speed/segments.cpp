@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "datapath/datapath.hpp"
 
 namespace dda::speed {
@@ -176,6 +178,7 @@ std::vector<Piece> cut_piece(const Piece& pc, int rot, const Curve& c, double t0
     cur.iteration_bound = pc.iteration_bound - it;
     start_it = it;
     sx = sy = sz = 0;
+    if (next == cuts.size()) break;  // (the rest is the last part, as it stands)
   }
   parts.push_back(cur);
   return parts;
@@ -183,13 +186,25 @@ std::vector<Piece> cut_piece(const Piece& pc, int rot, const Curve& c, double t0
 
 }  // namespace
 
-double block_feed(const Move& mv, double length_mm, const MachineLimits& lim, const std::string& file) {
-  if (mv.kind == MoveKind::Rapid) return lim.rapid / 60;
+namespace {
+
+const char* mode_name(program::FeedMode m) {
+  return m == program::FeedMode::PerMinute       ? "per minute (G94)"
+         : m == program::FeedMode::PerRevolution ? "per revolution (G95, G99)"
+                                                 : "in inverse time (G93)";
+}
+
+double asked_feed(const Move& mv, double length_mm, const MachineLimits& lim, const std::string& file) {
   if (mv.feed <= 0) {
     if (lim.default_feed > 0) return lim.default_feed / 60;
     program::block_error(file, mv,
                          "no feed rate: the program gives no F (give one, or a default feed: --default-feed "
                          "MM_PER_MIN or default_feed_mm_per_min in the machine config)");
+  }
+  if (mv.feed_stale) {
+    program::block_error(file, mv,
+                         std::string("the feed mode changed to ") + mode_name(mv.feed_mode) +
+                             " since F was given: give F again in the new mode");
   }
   const double unit = mv.inch ? 25.4 : 1.0;
   switch (mv.feed_mode) {
@@ -210,6 +225,21 @@ double block_feed(const Move& mv, double length_mm, const MachineLimits& lim, co
       return mv.feed * unit * mv.spindle / 60;
   }
   return 0;
+}
+
+}  // namespace
+
+double block_feed(const Move& mv, double length_mm, const MachineLimits& lim, const std::string& file) {
+  if (mv.kind == MoveKind::Rapid) return lim.rapid / 60;
+  const double f = asked_feed(mv, length_mm, lim, file);
+  // The block paces no piece below its minimum speed (VMIN): such a feed would run faster.
+  if (f * 60 < lim.min_speed) {
+    program::block_error(file, mv,
+                         fmt::format("a feed of {:.6g} mm/min is below the machine's minimum speed {:.6g} mm/min "
+                                     "(min_speed_mm_per_min), at which its drives start and stop",
+                                     f * 60, lim.min_speed));
+  }
+  return f;
 }
 
 PlannerLimits planner_limits(const MachineLimits& lim, program::Machine m) {

@@ -82,7 +82,7 @@ SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const
       program::read_stream(in, file, read, [&](const program::Move& mv) { planner.move(mv); });
   planner.finish();
   run.finish();
-  t.dwell_at_end(sum.dwell_after);
+  t.dwell_at_end(sum.dwell_after + run.dwell_left());
   return t;
 }
 

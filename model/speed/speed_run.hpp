@@ -42,6 +42,8 @@ class SpeedRun {
   void block(program::BlockPlan& b);
   void finish();
   const PlannerLimits& limits() const { return plim_; }
+  // A dwell after the last block with pieces (in blocks shorter than a step), s.
+  double dwell_left() const { return dwell_; }
 
  private:
   void segment(const PlannedSegment& p);
@@ -74,8 +76,8 @@ struct SpeedTotals {
 };
 
 // Reads the program from `in` (program::open_program) and plans its speeds, calling
-// on_block for each block with pieces (on_pieces, if given, sees each block as its
-// pieces are cut, before they are planned). Throws ProgramError as the reader and the
+// on_block for each block with pieces (on_pieces, if given, sees each block with its
+// pieces as cut, right after they entered the lookahead). Throws ProgramError as the reader and the
 // planners do.
 SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const program::ReadOptions& read,
                                 const program::LatticeOptions& lattice, std::size_t window, const MachineLimits& lim,
