@@ -267,7 +267,8 @@ void run_speed_plot(const Cli& c, const std::string& title) {
                                   c.plot_pace.accel_opt->count() ? &c.plot_pace.accel : nullptr, clock, title);
   }
   if (c.plot_speed_limits.any_given())
-    throw InputError("--machine-config, --junction-deviation, --rapid, --default-feed and --window go with --program");
+    throw InputError(
+        "--machine-config, --junction-deviation, --rapid, --default-feed, --min-speed and --window go with --program");
   if (!c.plot_pace.paced()) throw InputError("--speed runs the pacer: give --feed-rate, --accel, --clock");
   if (pl.out.empty() && (pl.engine != "golden" || !pl.vcd.empty() || c.plot_view != "xy"))
     throw InputError("--engine, --vcd and --view go with --out (the path's picture): --speed runs the reference model");
@@ -287,7 +288,8 @@ void run_plot(const Cli& c, int argc, char** argv) {
   if (!speed && c.plot_pace.any_given())
     throw InputError("--feed-rate, --accel, --clock and --vmin go with --speed FILE.svg");
   if (!speed && c.plot_speed_limits.any_given())
-    throw InputError("--machine-config, --junction-deviation, --rapid, --default-feed and --window go with --speed");
+    throw InputError(
+        "--machine-config, --junction-deviation, --rapid, --default-feed, --min-speed and --window go with --speed");
   if (!speed && (pl.out.empty() || pl.out == "-"))
     throw InputError("plot needs --out FILE.svg: it writes a picture, not text");
   if (!pl.out.empty()) check_svg_name("out", pl.out);

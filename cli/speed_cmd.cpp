@@ -13,7 +13,7 @@
 namespace dda::cli {
 
 bool SpeedCli::any_given() const {
-  for (const CLI::Option* o : {accel_opt, jd_opt, rapid_opt, feed_opt, window_opt, config_opt}) {
+  for (const CLI::Option* o : {accel_opt, jd_opt, rapid_opt, feed_opt, window_opt, config_opt, min_speed_opt}) {
     if (o && o->count() > 0) return true;
   }
   return false;
@@ -38,6 +38,9 @@ void add_speed_options(CLI::App* sub, SpeedCli& s, bool accel, bool flag) {
   s.feed_opt = sub->add_option("--default-feed", s.default_feed,
                                "with --program: the feed, mm/min, of feed moves in a program that gives no F "
                                "(over the file); implies --speeds");
+  s.min_speed_opt = sub->add_option("--min-speed", s.min_speed,
+                                    "with --program: the speed a drive starts and stops at, mm/min (the block's "
+                                    "VMIN; over the file); implies --speeds");
   s.window_opt = sub->add_option("--window", s.window,
                                  "with --program: the pieces the lookahead plans over (default 16; over the file); "
                                  "implies --speeds");
@@ -58,6 +61,7 @@ speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m) {
   if (s.jd_opt && s.jd_opt->count()) l.junction_deviation = positive("junction-deviation", s.junction_deviation);
   if (s.rapid_opt && s.rapid_opt->count()) l.rapid = positive("rapid", s.rapid);
   if (s.feed_opt && s.feed_opt->count()) l.default_feed = positive("default-feed", s.default_feed);
+  if (s.min_speed_opt && s.min_speed_opt->count()) l.min_speed = positive("min-speed", s.min_speed);
   if (s.window_opt && s.window_opt->count()) l.window = s.window;
   speed::check(l, m);
   return l;
@@ -78,7 +82,8 @@ void run_speed_report(const ArcOptions& o, const SpeedCli& s) {
   const speed::MachineLimits lim = machine_limits(s, run.read.machine);
   const auto in = program::open_program(o.prog.file);
   Output out(o.out);
-  speed::SpeedReport report(out.stream(), fmt, lim, run.read.machine);
+  speed::SpeedReport report(out.stream(), fmt, lim, run.read.machine,
+                            double(run.lattice.step) / double(program::kNmPerMm));
   const speed::SpeedTotals t = speed::plan_program_speeds(*in, run.file, run.read, run.lattice, run.window, lim,
                                                           [&](const speed::BlockSpeeds& b) { report.block(b); });
   report.finish(t);

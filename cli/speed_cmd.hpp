@@ -19,10 +19,10 @@ namespace dda::cli {
 struct SpeedCli {
   bool speeds = false;
   std::string machine_config;
-  double accel = 0, junction_deviation = 0, rapid = 0, default_feed = 0;
+  double accel = 0, junction_deviation = 0, rapid = 0, default_feed = 0, min_speed = 0;
   std::size_t window = 0;
   CLI::Option *accel_opt = nullptr, *jd_opt = nullptr, *rapid_opt = nullptr, *feed_opt = nullptr, *window_opt = nullptr,
-              *config_opt = nullptr;
+              *config_opt = nullptr, *min_speed_opt = nullptr;
   bool any_given() const;  // a limit option or the file given
   bool wanted() const { return speeds || any_given(); }
 };

@@ -2,6 +2,7 @@
 #include "vectors_cmd.hpp"
 
 #include <CLI/CLI.hpp>
+#include <utility>
 
 #include "datapath/hw_command.hpp"
 #include "output.hpp"
@@ -65,11 +66,10 @@ void run_planned_vectors(const VectorsCli& v, const vec::Options& vo) {
   const speed::PlannedProgram pp = speed::plan_program_pieces(*in, run.file, run.read, run.lattice, lim);
   for (const Piece& pc : pp.plan.pieces) hw::pack_command(pc.cmd);  // (refused if too wide for the hardware)
   const speed::PlannerLimits pl = speed::planner_limits(lim, run.read.machine);
-  const speed::PaceSetup setup = speed::pace_setup(pl, lim, run.lattice.step, bo.clock_hz);
-  bo.planned_accel = setup.accel;
-  bo.planned_vmin = setup.vmin;
-  for (std::size_t k = 0; k < pp.segments.size(); ++k)
-    bo.planned_entries.push_back(speed::pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
+  speed::ProgramPacing pace = speed::program_pacing(pp, pl, lim, run.lattice.step, bo.clock_hz);
+  bo.planned_accel = pace.setup.accel;
+  bo.planned_vmin = pace.setup.vmin;
+  bo.planned_entries = std::move(pace.entries);
   AtomicFile wave(v.arc.vcd);
   bo.vcd = wave.write_path();
   vec::write_bus_vector_set({pp.plan}, vo, bo);

@@ -5,7 +5,9 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -254,7 +256,8 @@ TEST_CASE("cli program: planned speeds, the machine file, the speed picture and 
        "dda: error: --feed-rate and --vmin are an arc's, in steps: a program's feeds come from its F words (the "
        "minimum speed from the machine's limits)\n"},
       {"plot --speed " + svg.string() + " --rapid 100 --a 5 --b 3 --feed-rate 10 --accel 1 --clock 1e6",
-       "dda: error: --machine-config, --junction-deviation, --rapid, --default-feed and --window go with "
+       "dda: error: --machine-config, --junction-deviation, --rapid, --default-feed, --min-speed and --window go "
+       "with "
        "--program\n"},
   };
   for (const auto& [args, want] : cases) {
@@ -266,6 +269,24 @@ TEST_CASE("cli program: planned speeds, the machine file, the speed picture and 
   const Result bad_file = run_dda(s, "stats --machine-config " + prog.string() + p);
   CHECK(bad_file.status == 2);
   CHECK(bad_file.err.rfind("dda: error: machine config '" + prog.string() + "': not JSON: ", 0) == 0);
+  // The slowest clock the block follows the plan at: a diagonal of 2 x 2 mm at 600 mm/min
+  // (10 mm/s, reached at 250 mm/s^2) steps X and Y at 10 / sqrt(2) mm/s each, 283 steps/s
+  // together at 0.05 mm, one stepping iteration at most every 107 clocks.
+  write_file(prog, "G21 G1 X2 Y2 F600\nM2\n");
+  const double slowest = std::ceil(10 * std::sqrt(2.0) / 0.05 * 107);
+  const Result clk = run_dda(s, "stats --speeds --step 0.05 --min-speed 30" + p);
+  CHECK(clk.out.find(fmt::format("\nslowest_clock_hz: {:.0f}\n", slowest)) != std::string::npos);
+  const std::string set = " --out-dir " + (s.dir / "set").string();
+  const Result slow = run_dda(s, "vectors --bus --speeds --step 0.05 --min-speed 30 --clock 30000" + set + p);
+  CHECK(slow.status == 2);
+  CHECK(slow.err.rfind(fmt::format("dda: error: the planned speeds need a clock of at least {:.0f} Hz with a 0.05 mm "
+                                   "step, not 30000 Hz: the core takes a stepping iteration at most every 107 clocks",
+                                   slowest),
+                       0) == 0);
+  CHECK(!fs::exists(s.dir / "set"));
+  const Result fast = run_dda(s, "vectors --bus --speeds --step 0.05 --min-speed 30 --clock 31000" + set + p);
+  CHECK(fast.status == 0);
+  CHECK(fs::exists(s.dir / "set" / "counts.hex"));
   // A feed move without F and no default feed: the block and the remedy.
   write_file(prog, "G1 X10\n");
   const Result nof = run_dda(s, "stats --speeds --dialect hnc" + p);

@@ -12,6 +12,7 @@
 #include "dda_random.hpp"
 #include "motion_cosim.hpp"
 #include "motion_mix.hpp"
+#include "paced_program.hpp"
 #include "planner/planner.hpp"
 #include "report/pace_report.hpp"
 #include "speed/pace_plan.hpp"
@@ -83,44 +84,29 @@ TEST_CASE("motion cosim: a paced line with a feed hold, SystemC model and RTL eq
 TEST_CASE("motion cosim: a program at its planned speeds, SystemC model and RTL equal, the speed at the pins",
           "[motion][cosim][pacer][speed]") {
   // examples/feeds.ngc (a corner, an arc, an ellipse cut for its curvature, a dwell, a
-  // reversal) at 0.01 mm steps, 2000 mm/s^2 on each axis, on a 600 kHz block.
+  // reversal) at 0.02 mm steps, 2000 mm/s^2 on each axis, on a 600 kHz block (the
+  // slowest clock that follows the plan at that step is 374,767 Hz).
   std::ifstream in(std::string(DDA_EXAMPLES_DIR) + "/feeds.ngc");
   REQUIRE(in);
   program::ReadOptions read;
   program::LatticeOptions lattice;
-  lattice.step = 10000;
+  lattice.step = 20000;
   speed::MachineLimits lim = speed::default_limits(program::Machine::Mill);
   for (speed::AxisLimits& a : lim.axes) a.accel = 2000;
   const speed::PlannedProgram pp = speed::plan_program_pieces(in, "feeds.ngc", read, lattice, lim);
   const speed::PlannerLimits pl = speed::planner_limits(lim, program::Machine::Mill);
   const double clock = 6e5;
-  const speed::PaceSetup setup = speed::pace_setup(pl, lim, lattice.step, clock);
-  double top = 0;
-  for (const auto& s : pp.segments) top = std::max(top, s.peak);
-  MotionCosim h;
+  const speed::ProgramPacing pace = speed::program_pacing(pp, pl, lim, lattice.step, clock);
   // The pins' monitor: the path's speed and acceleration, and each axis' against its own
   // limits (vmax, and the axis' acceleration: the ramps' and the curves' together).
-  MotionLimits ml{clock, top / 0.01, pl.accel / 0.01};
-  for (std::size_t a = 0; a < 3; ++a) {
-    ml.axis_speed[a] = lim.axes[a].vmax / 60 / 0.01;
-    ml.axis_accel[a] = lim.axes[a].accel / 0.01;
-  }
-  SpeedWatch watch(h, ml);
-  WishboneMaster m(watch, 5, true, 10);
-  MotionDriver d(m, 6);
-  watch.set_reset(false);
-  m.idle(2);
-  watch.set_reset(true);
-  d.set_pacing(std::uint32_t(setup.accel), setup.vmin);
-  d.preset(pp.plan.from);
-  for (std::size_t i = 0; i < pp.plan.pieces.size(); ++i) {
-    const Piece& pc = pp.plan.pieces[i];
-    d.queue(pc.cmd, 0, pc.rot, speed::pace_entry(pp.segments[i], pc, setup));
-  }
-  d.drain();
-  CHECK(d.position() == pp.plan.to);
-  INFO(watch.monitor().summary());
-  CHECK(watch.monitor().peak_speed() > 0.9 * top / 0.01);
-  WARN(watch.monitor().summary() << "; per axis: peak acceleration X " << watch.monitor().peak_axis_accel()[0] << ", Y "
-                                 << watch.monitor().peak_axis_accel()[1] << " steps/s^2");
+  const MotionLimits ml = pin_limits(pp, pl, lim, 0.02, clock);
+  MotionCosim h;
+  PacedRunOptions opt;
+  opt.seed = 5;
+  const PacedRun run = run_paced_program(h, pp, pace, ml, opt);
+  CHECK(run.position == pp.plan.to);
+  INFO(run.monitor.summary());
+  CHECK(run.monitor.peak_speed() > 0.9 * ml.max_speed);
+  WARN(run.monitor.summary() << "; per axis: peak acceleration X " << run.monitor.peak_axis_accel()[0] << ", Y "
+                             << run.monitor.peak_axis_accel()[1] << " steps/s^2");
 }

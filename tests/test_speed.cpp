@@ -5,7 +5,8 @@
 // its curvature, a window too short to reach the feed), and on random programs the
 // plan's consistency (no ramp steeper than the acceleration, every junction at or
 // below its speed, rest at the end) and its time against a time-optimal profile
-// computed here, independently, by integrating the speed limit along the path densely.
+// computed here, independently, by integrating the speed limit along the path densely
+// (the programs and their geometry from tb/random/random_program.hpp).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
@@ -15,11 +16,16 @@
 #include <string>
 #include <vector>
 
+#include "random_program.hpp"
 #include "speed/speed_run.hpp"
 
 using namespace dda;
 using namespace dda::speed;
 using program::Machine;
+using randgen::Curve;
+using randgen::curve_block;
+using randgen::random_program;
+using randgen::RandomProgram;
 
 namespace {
 
@@ -220,124 +226,6 @@ TEST_CASE("speed: the machine description file, and what it refuses") {
   CHECK_THAT(refused(R"({"junction_deviation_mm": -1})"), Catch::Contains("must be positive"));
   CHECK_THAT(refused(R"({"window": 1})"), Catch::Contains("window"));
 }
-
-namespace {
-
-// Random programs of lines, rapids, circular arcs and elliptical arcs at random angles,
-// written as G-code, with their geometry kept here: the reference for the time-optimal
-// profile, independent of the planner's pieces and segments.
-struct Curve {
-  bool line = true;
-  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;       // line ends
-  double cx = 0, cy = 0, a = 0, b = 0, q = 0;  // ellipse (a circle: a = b)
-  double t0 = 0, sweep = 0;                    // parameter at the start, signed sweep
-  double feed = 0;                             // mm/s
-  double length() const { return line ? std::hypot(x1 - x0, y1 - y0) : arc_length(); }
-  double arc_length() const {
-    double s = 0;
-    const int n = 4000;
-    for (int k = 0; k < n; ++k) s += speed(t0 + sweep * (k + 0.5) / n) * std::abs(sweep) / n;
-    return s;
-  }
-  double speed(double t) const { return std::hypot(a * std::sin(t), b * std::cos(t)); }
-  // The unit tangent (in the direction of travel) and the radius of curvature at the
-  // parameter t (a line: infinite).
-  std::array<double, 2> tangent(double t) const {
-    if (line) {
-      const double l = length();
-      return {(x1 - x0) / l, (y1 - y0) / l};
-    }
-    const double dx = -a * std::sin(t) * (sweep > 0 ? 1 : -1), dy = b * std::cos(t) * (sweep > 0 ? 1 : -1);
-    const double c = std::cos(q), s = std::sin(q), n = std::hypot(dx, dy);
-    return {(c * dx - s * dy) / n, (s * dx + c * dy) / n};
-  }
-  double radius(double t) const {
-    if (line) return kInfinity;
-    return std::pow(std::pow(a * std::sin(t), 2) + std::pow(b * std::cos(t), 2), 1.5) / (a * b);
-  }
-};
-
-struct RandomProgram {
-  std::string text;
-  std::vector<Curve> curves;
-};
-
-double mm6(double v) { return std::round(v * 1e6) / 1e6; }
-
-std::string words(const char* a, double x, const char* b, double y) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, " %s%.6f %s%.6f", a, x, b, y);
-  return buf;
-}
-
-// A circle (a = b) or an ellipse from (x, y) at parameter t0: its centre, semi-axes and
-// end rounded as a program writes them, the curve kept with the rounded values.
-std::string curve_block(Curve& c, double& x, double& y, bool circle, bool ccw) {
-  const double cq = std::cos(c.q), sq = std::sin(c.q);
-  const double px = c.a * std::cos(c.t0), py = c.b * std::sin(c.t0);
-  const double i = mm6(-(cq * px - sq * py)), j = mm6(-(sq * px + cq * py));
-  c.cx = x + i, c.cy = y + j;
-  if (circle) c.a = c.b = std::hypot(i, j);
-  c.t0 = std::atan2(((-sq) * -i + cq * -j) / c.b, (cq * -i + sq * -j) / c.a);
-  const double t1 = c.t0 + c.sweep, ex = c.a * std::cos(t1), ey = c.b * std::sin(t1);
-  const double x1 = mm6(c.cx + cq * ex - sq * ey), y1 = mm6(c.cy + sq * ex + cq * ey);
-  std::string code = circle ? (ccw ? "G3" : "G2") : (ccw ? "G6.3" : "G6.2");
-  code += words("X", x1, "Y", y1) + words("I", i, "J", j);
-  if (!circle) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, " A%.6f B%.6f Q%d", c.a, c.b,
-                  int(std::lround(c.q * 180 / 3.14159265358979323846 * 1000)));
-    code += buf;
-  }
-  x = x1, y = y1;
-  return code;
-}
-
-RandomProgram random_program(std::mt19937_64& rng, int blocks, bool ellipses) {
-  std::uniform_real_distribution<double> u(0, 1);
-  constexpr double kPi = 3.14159265358979323846;
-  RandomProgram p;
-  p.text = "G21 G90 G64\n";
-  double x = 0, y = 0, heading = 0;
-  const int feeds[] = {300, 1000, 3000, 6000};
-  for (int k = 0; k < blocks; ++k) {
-    Curve c;
-    const double r = u(rng);
-    const int feed = feeds[rng() % 4];
-    c.feed = feed / 60.0;
-    const double dir = u(rng) < 0.5 ? heading : u(rng) * 2 * kPi;  // tangent on, or a corner
-    std::string line;
-    if (r < 0.4 || (!ellipses && r < 0.6)) {
-      const bool rapid = u(rng) < 0.15;
-      const double len = 0.5 + 20 * u(rng);
-      c.x0 = x, c.y0 = y;
-      c.x1 = mm6(x + len * std::cos(dir));
-      c.y1 = mm6(y + len * std::sin(dir));
-      if (rapid) c.feed = 6000.0 / 60;
-      line = std::string(rapid ? "G0" : "G1") + words("X", c.x1, "Y", c.y1);
-      x = c.x1, y = c.y1, heading = dir;
-    } else {
-      c.line = false;
-      const bool circle = !ellipses || r < 0.75, ccw = u(rng) < 0.5;
-      c.a = circle ? 0.2 + 20 * u(rng) : mm6(1 + 15 * u(rng));
-      c.b = circle ? c.a : mm6(c.a * (0.15 + 0.85 * u(rng)));
-      c.q = circle ? 0 : std::round(u(rng) * 360000) / 1000 * kPi / 180;
-      c.sweep = (ccw ? 1 : -1) * (circle ? 20 + 250 * u(rng) : 20 + 150 * u(rng)) * kPi / 180;
-      // A circle starts tangent to `dir`, an ellipse at a random parameter.
-      c.t0 = circle ? dir - (ccw ? kPi / 2 : -kPi / 2) : u(rng) * 2 * kPi;
-      line = curve_block(c, x, y, circle, ccw);
-      const auto t = c.tangent(c.t0 + c.sweep);
-      heading = std::atan2(t[1], t[0]);
-    }
-    if (line[1] != '0') line += " F" + std::to_string(feed);
-    p.text += line + "\n";
-    p.curves.push_back(c);
-  }
-  p.text += "M2\n";
-  return p;
-}
-
-}  // namespace
 
 namespace {
 

@@ -97,7 +97,8 @@ void write_pace_report(std::ostream& os, const Plan& plan, const PaceOptions& o,
 
 // A program's planned speeds on the pacer's reference model (model/speed/pace_plan.hpp):
 // the entries the driver writes, ACCEL the path acceleration, VMIN the minimum speed;
-// the monitor's speed limit is the fastest piece's peak.
+// the monitor's speed limit is the fastest piece's peak (InputError for a clock the
+// core cannot follow: speed::check_clock).
 PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup& setup, const speed::PlannerLimits& pl,
                         const speed::MachineLimits& lim, PaceHooks hooks = {});
 // `dda plot --program FILE --speed FILE.svg`: that run's commanded and path speeds in

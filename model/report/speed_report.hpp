@@ -3,7 +3,8 @@
 // the lookahead passes it (its length, the feed asked, its entry, cruise and exit
 // speeds in mm/min, its time (ramps and cruise) and the dwell before it, whether it
 // starts at rest, what limit held it below the feed), then the totals (the time with
-// every dwell); text (no dwell column), CSV or JSON.
+// every dwell, and the slowest block clock that follows the plan at the step:
+// speed::slowest_clock); text (no dwell column), CSV or JSON.
 #pragma once
 
 #include <ostream>
@@ -16,7 +17,9 @@ namespace dda::speed {
 
 class SpeedReport {
  public:
-  SpeedReport(std::ostream& os, program::BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m);
+  // step_mm: the lattice step, for the slowest block clock that follows the plan.
+  SpeedReport(std::ostream& os, program::BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m,
+              double step_mm);
   void block(const BlockSpeeds& b);
   void finish(const SpeedTotals& t);
 
@@ -26,6 +29,7 @@ class SpeedReport {
   program::BlockStatsFormat fmt_;
   MachineLimits lim_;
   program::Machine machine_;
+  double step_mm_;
   bool started_ = false;
   std::size_t rows_ = 0;
 };

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "datapath/errors.hpp"
@@ -58,6 +59,39 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
       });
   out.plan.from = out.plan.pieces.front().from;
   out.plan.to = out.plan.pieces.back().to;
+  return out;
+}
+
+namespace {
+// The clocks per stepping iteration at most: the norm unit's latency and the iteration.
+constexpr int kStepClocks = motion::kNormLatency + 1;
+}  // namespace
+
+double slowest_clock(const SpeedTotals& t, const PlannerLimits& pl, double step_mm) {
+  const double stepping = t.axis_rate / step_mm * kStepClocks;
+  const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
+  return std::max(stepping, ramp);
+}
+
+void check_clock(const PlannedProgram& pp, const PaceSetup& s) {
+  const double need = pp.totals.axis_rate / s.step_mm * kStepClocks;
+  if (need > s.clock_hz) {
+    throw InputError(fmt::format(
+        "the planned speeds need a clock of at least {:.0f} Hz with a {} mm step, not {} Hz: the core takes a "
+        "stepping iteration at most every {} clocks (docs/design.md, \"Pacer\"); raise --clock, or lower the "
+        "machine's speeds (--rapid, the axes' vmax_mm_per_min) or coarsen the step",
+        std::ceil(need), s.step_mm, s.clock_hz, kStepClocks));
+  }
+}
+
+ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
+                             program::Length step, double clock_hz) {
+  ProgramPacing out;
+  out.setup = pace_setup(plim, lim, step, clock_hz);
+  check_clock(pp, out.setup);
+  out.entries.reserve(pp.segments.size());
+  for (std::size_t k = 0; k < pp.segments.size(); ++k)
+    out.entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], out.setup));
   return out;
 }
 

@@ -2,6 +2,7 @@
 #include "speed/speed_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace dda::speed {
@@ -59,6 +60,16 @@ void SpeedRun::finish() {
   for (; !pending_.empty(); pending_.pop_front()) on_block_(pending_.front().second);
 }
 
+double axes_factor(const Segment& s) {
+  double sum = 0;
+  int moving = 0;
+  for (const double share : s.share) {
+    sum += share;
+    moving += share > 0 ? 1 : 0;
+  }
+  return std::min(sum, std::sqrt(double(moving)));
+}
+
 SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const program::ReadOptions& read,
                                 const program::LatticeOptions& lattice, std::size_t window, const MachineLimits& lim,
                                 const std::function<void(const BlockSpeeds&)>& on_block,
@@ -72,7 +83,10 @@ SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const
         t.add(b);
         on_block(b);
       },
-      on_segment);
+      [&](const PlannedSegment& p) {
+        t.axis_rate = std::max(t.axis_rate, p.peak * axes_factor(p.seg));
+        if (on_segment) on_segment(p);
+      });
   const program::Point2 start = read.start.value_or(program::Point2{});
   program::BlockPlanner planner(lattice, start, file, window, [&](program::BlockPlan&& b) {
     run.block(b);

@@ -59,9 +59,16 @@ class SpeedRun {
   double dwell_ = 0;  // dwell of blocks without a piece, for the next one
 };
 
+// A bound on |t_x| + |t_y| + |t_z| along a piece (t its unit tangent): the sum of its
+// axes' largest tangent shares, and at most the square root of the axes it moves.
+double axes_factor(const Segment& s);
+
 struct SpeedTotals {
   std::size_t blocks = 0, pieces = 0;
   double length = 0, time = 0, dwell = 0;  // mm, s (time includes every dwell)
+  // The fastest any piece moves its axes together, mm/s: its peak speed times
+  // axes_factor (over the step: at most the steps per second it asks).
+  double axis_rate = 0;
   void add(const BlockSpeeds& b) {
     ++blocks;
     pieces += b.pieces;
