@@ -82,8 +82,7 @@ void run_speed_report(const ArcOptions& o, const SpeedCli& s) {
   const speed::MachineLimits lim = machine_limits(s, run.read.machine);
   const auto in = program::open_program(o.prog.file);
   Output out(o.out);
-  speed::SpeedReport report(out.stream(), fmt, lim, run.read.machine,
-                            double(run.lattice.step) / double(program::kNmPerMm));
+  speed::SpeedReport report(out.stream(), fmt, lim, run.read.machine);
   const speed::SpeedTotals t = speed::plan_program_speeds(*in, run.file, run.read, run.lattice, run.window, lim,
                                                           [&](const speed::BlockSpeeds& b) { report.block(b); });
   report.finish(t);

@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # The part programs of examples/ at their planned speeds on the three engines, each with
 # the machine and start of its "; Run:" line and the machine's options given (--step,
-# --accel, --rapid, --default-feed: ctest speeds.examples_engines gives one slow machine
-# that keeps every set near a million cycles), on a block clocked 5% over the slowest
-# clock that follows the plan.
+# --accel, --rapid, --default-feed, --min-speed: ctest speeds.examples_engines gives one
+# slow machine that keeps every set near a million cycles), on a block clocked 5% over
+# the slowest clock that follows the plan (program_cosim's choice).
 # Per program:
 #  - program_cosim (tb/cosim/program_cosim.cpp): the block's SystemC model, RTL and
 #    reference model equal at every edge, the block at the program's end point, and the
@@ -25,13 +25,12 @@ n=0
 for prog in "$dir"/*.ngc; do
   name=$(basename "$prog" .ngc)
   mapfile -t opts < <("$here/../scripts/example-options.sh" "$prog")
-  # The block's clock: the slowest that follows the plan (`dda stats --speeds`), 5% over,
-  # in whole kHz.
-  slowest=$("$dda" stats "${opts[@]}" --speeds "${speeds[@]}" --format json |
-    sed -n 's/^  "slowest_clock_hz": \([0-9.]*\)$/\1/p')
-  [ -n "$slowest" ] || { echo "examples at speeds: no slowest clock for $name" >&2; exit 1; }
-  clock=$(awk -v c="$slowest" 'BEGIN { k = int(c * 1.05 / 1000); if (k * 1000 < c * 1.05) k++; print k * 1000 }')
-  "$cosim" "${opts[@]}" "${speeds[@]}" --clock "$clock" --seed 3
+  # program_cosim picks the block's clock: the slowest that follows the plan, 5% over,
+  # in whole kHz; the bus set runs at the same.
+  line=$("$cosim" "${opts[@]}" "${speeds[@]}" --seed 3 | grep '^program_cosim: ')
+  echo "$line"
+  clock=$(sed -n 's/^.* cycles at \([0-9]*\) Hz .*$/\1/p' <<<"$line")
+  [ -n "$clock" ] || { echo "examples at speeds: no clock for $name" >&2; exit 1; }
   rm -rf "${out:?}/$name"
   "$dda" vectors --bus "${opts[@]}" --speeds "${speeds[@]}" --clock "$clock" --seed 3 --max-size 1G --out-dir "$out/$name"
   "$here/../scripts/vector-bench.sh" --bus "$out/$name"

@@ -270,19 +270,19 @@ TEST_CASE("cli program: planned speeds, the machine file, the speed picture and 
   CHECK(bad_file.status == 2);
   CHECK(bad_file.err.rfind("dda: error: machine config '" + prog.string() + "': not JSON: ", 0) == 0);
   // The slowest clock the block follows the plan at: a diagonal of 2 x 2 mm at 600 mm/min
-  // (10 mm/s, reached at 250 mm/s^2) steps X and Y at 10 / sqrt(2) mm/s each, 283 steps/s
-  // together at 0.05 mm, one stepping iteration at most every 107 clocks.
+  // (10 mm/s, reached at 250 mm/s^2: 200 path steps/s at 0.05 mm) steps X and Y at
+  // 141 steps/s each, a stepping iteration every 107 clocks at most, and iterates
+  // (sqrt(2) steps of path each) at most every other clock.
   write_file(prog, "G21 G1 X2 Y2 F600\nM2\n");
-  const double slowest = std::ceil(10 * std::sqrt(2.0) / 0.05 * 107);
-  const Result clk = run_dda(s, "stats --speeds --step 0.05 --min-speed 30" + p);
-  CHECK(clk.out.find(fmt::format("\nslowest_clock_hz: {:.0f}\n", slowest)) != std::string::npos);
+  const double slowest = 200 * (107 * std::sqrt(2.0) + 2 / std::sqrt(2.0));
   const std::string set = " --out-dir " + (s.dir / "set").string();
   const Result slow = run_dda(s, "vectors --bus --speeds --step 0.05 --min-speed 30 --clock 30000" + set + p);
   CHECK(slow.status == 2);
-  CHECK(slow.err.rfind(fmt::format("dda: error: the planned speeds need a clock of at least {:.0f} Hz with a 0.05 mm "
-                                   "step, not 30000 Hz: the core takes a stepping iteration at most every 107 clocks",
-                                   slowest),
-                       0) == 0);
+  const std::string lead = "dda: error: the planned speeds need a clock of at least ";
+  REQUIRE(slow.err.rfind(lead, 0) == 0);
+  CHECK(std::stod(slow.err.substr(lead.size())) == Approx(slowest).epsilon(1e-4));
+  CHECK(slow.err.find(" Hz with a 0.05 mm step, not 30000 Hz: the core takes a stepping iteration at most every "
+                      "107 clocks and any iteration at most every 2") != std::string::npos);
   CHECK(!fs::exists(s.dir / "set"));
   const Result fast = run_dda(s, "vectors --bus --speeds --step 0.05 --min-speed 30 --clock 31000" + set + p);
   CHECK(fast.status == 0);

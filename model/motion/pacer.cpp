@@ -75,6 +75,19 @@ std::uint32_t pace_length(const Command& c) {
   return std::uint32_t(l);
 }
 
+std::uint64_t min_iteration_distance(const Command& c) {
+  Datapath d(c, Point{});
+  std::uint64_t least = 0;
+  const std::uint64_t bound = std::uint64_t{1} << 40;
+  while (!d.done()) {
+    if (d.stalled() || d.iterations() > bound) throw GuardError("pacer: a piece that does not end");
+    const std::uint64_t x = iteration_distance(c, d.regs());
+    if (x > 0 && (least == 0 || x < least)) least = x;
+    d.iterate();
+  }
+  return least;
+}
+
 std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uint32_t cruise, std::uint32_t vmin,
                                     std::uint64_t accel, double feed, double accel_rate, double unit) {
   std::vector<PaceEntry> entries(pieces.size());

@@ -75,6 +75,10 @@ std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t 
 // iterations, x 2^kLenFrac steps, rounded up. Throws GuardError for a piece that does
 // not end or is longer than the field holds.
 std::uint32_t pace_length(const Command& c);
+// The shortest positive iteration_distance over a piece's iterations (x 2^kNormFrac
+// steps; 0 when none moves): the core iterates at most every other clock, so a piece
+// at v steps/s asks up to v / d iterations per second.
+std::uint64_t min_iteration_distance(const Command& c);
 // The entries a driver writes for pieces run back to back at one cruise speed (x
 // 2^kSpeedFrac, also their limit): their lengths, and exit speeds from a backward pass
 // (the last one's 0: it ends at vmin; before it the fastest speed from which the pieces

@@ -4,10 +4,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include <cmath>
 #include <nlohmann/json.hpp>
-
-#include "speed/pace_plan.hpp"
 
 #include "json_stream.hpp"
 
@@ -25,9 +22,8 @@ double per_min(double mm_s) { return mm_s * 60; }
 
 }  // namespace
 
-SpeedReport::SpeedReport(std::ostream& os, BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m,
-                         double step_mm)
-    : os_(os), fmt_(fmt), lim_(lim), machine_(m), step_mm_(step_mm) {}
+SpeedReport::SpeedReport(std::ostream& os, BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m)
+    : os_(os), fmt_(fmt), lim_(lim), machine_(m) {}
 
 void SpeedReport::header() {
   if (started_) return;
@@ -101,13 +97,10 @@ void SpeedReport::finish(const SpeedTotals& t) {
     j["length_mm"] = t.length;
     j["time_s"] = t.time;
     j["dwell_s"] = t.dwell;
-    j["slowest_clock_hz"] = std::ceil(slowest_clock(t, planner_limits(lim_, machine_), step_mm_));
     os_ << (rows_ == 0 ? "]" : "\n ]") << ",\n \"totals\": " << json_stream::nested(j, 1) << "\n}\n";
   } else if (fmt_ == BlockStatsFormat::Text) {
-    fmt::print(os_,
-               "blocks: {}\npieces: {}\nlength_mm: {:.4f}\ntime_s: {:.4f}\ndwell_s: {:.4f}\nslowest_clock_hz: {:.0f}\n",
-               t.blocks, t.pieces, t.length, t.time, t.dwell,
-               std::ceil(slowest_clock(t, planner_limits(lim_, machine_), step_mm_)));
+    fmt::print(os_, "blocks: {}\npieces: {}\nlength_mm: {:.4f}\ntime_s: {:.4f}\ndwell_s: {:.4f}\n", t.blocks, t.pieces,
+               t.length, t.time, t.dwell);
   }
 }
 

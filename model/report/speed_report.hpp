@@ -3,8 +3,7 @@
 // the lookahead passes it (its length, the feed asked, its entry, cruise and exit
 // speeds in mm/min, its time (ramps and cruise) and the dwell before it, whether it
 // starts at rest, what limit held it below the feed), then the totals (the time with
-// every dwell, and the slowest block clock that follows the plan at the step:
-// speed::slowest_clock); text (no dwell column), CSV or JSON.
+// every dwell); text (no dwell column), CSV or JSON.
 #pragma once
 
 #include <ostream>
@@ -17,9 +16,7 @@ namespace dda::speed {
 
 class SpeedReport {
  public:
-  // step_mm: the lattice step, for the slowest block clock that follows the plan.
-  SpeedReport(std::ostream& os, program::BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m,
-              double step_mm);
+  SpeedReport(std::ostream& os, program::BlockStatsFormat fmt, const MachineLimits& lim, program::Machine m);
   void block(const BlockSpeeds& b);
   void finish(const SpeedTotals& t);
 
@@ -29,7 +26,6 @@ class SpeedReport {
   program::BlockStatsFormat fmt_;
   MachineLimits lim_;
   program::Machine machine_;
-  double step_mm_;
   bool started_ = false;
   std::size_t rows_ = 0;
 };

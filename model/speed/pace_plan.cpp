@@ -63,24 +63,34 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
 }
 
 namespace {
-// The clocks per stepping iteration at most: the norm unit's latency and the iteration.
+// The clocks a stepping iteration takes at most (the norm unit's latency and the
+// iteration), and any iteration (the core iterates at most every other clock).
 constexpr int kStepClocks = motion::kNormLatency + 1;
+constexpr int kIterationClocks = 2;
 }  // namespace
 
-double slowest_clock(const SpeedTotals& t, const PlannerLimits& pl, double step_mm) {
-  const double stepping = t.axis_rate / step_mm * kStepClocks;
+double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm) {
+  double need = 0;
+  for (std::size_t k = 0; k < pp.segments.size(); ++k) {
+    const PlannedSegment& p = pp.segments[k];
+    const double v = p.peak / step_mm;  // path steps per second at its fastest
+    const std::uint64_t d = motion::min_iteration_distance(pp.plan.pieces[k].cmd);
+    const double per_iteration = d > 0 ? std::ldexp(1.0, motion::kNormFrac) / double(d) : 0;
+    need = std::max(need, v * (kStepClocks * axes_factor(p.seg) + kIterationClocks * per_iteration));
+  }
   const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
-  return std::max(stepping, ramp);
+  return std::max(need, ramp);
 }
 
-void check_clock(const PlannedProgram& pp, const PaceSetup& s) {
-  const double need = pp.totals.axis_rate / s.step_mm * kStepClocks;
+void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, const PaceSetup& s) {
+  const double need = slowest_clock(pp, pl, s.step_mm);
   if (need > s.clock_hz) {
     throw InputError(fmt::format(
         "the planned speeds need a clock of at least {:.0f} Hz with a {} mm step, not {} Hz: the core takes a "
-        "stepping iteration at most every {} clocks (docs/design.md, \"Pacer\"); raise --clock, or lower the "
-        "machine's speeds (--rapid, the axes' vmax_mm_per_min) or coarsen the step",
-        std::ceil(need), s.step_mm, s.clock_hz, kStepClocks));
+        "stepping iteration at most every {} clocks and any iteration at most every {} (docs/design.md, "
+        "\"Pacer\"); raise --clock, or lower the machine's speeds (--rapid, the axes' vmax_mm_per_min) or "
+        "coarsen the step",
+        std::ceil(need), s.step_mm, s.clock_hz, kStepClocks, kIterationClocks));
   }
 }
 
@@ -88,7 +98,7 @@ ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim
                              program::Length step, double clock_hz) {
   ProgramPacing out;
   out.setup = pace_setup(plim, lim, step, clock_hz);
-  check_clock(pp, out.setup);
+  check_clock(pp, plim, out.setup);
   out.entries.reserve(pp.segments.size());
   for (std::size_t k = 0; k < pp.segments.size(); ++k)
     out.entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], out.setup));

@@ -42,15 +42,16 @@ struct PlannedProgram {
 PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, const program::ReadOptions& read,
                                    const program::LatticeOptions& lattice, const MachineLimits& lim);
 
-// The slowest clock that follows a plan at a step, Hz: the core takes a stepping
-// iteration at most every kNormLatency + 1 clocks (the norm unit recomputes the path
-// length per iteration after each), and the fastest piece asks totals.axis_rate / step steps per
-// second (a faster pace leaves a backlog the core then works off above the commanded
-// speed); and the path acceleration must fit ACCEL (pace_setup).
-double slowest_clock(const SpeedTotals& t, const PlannerLimits& pl, double step_mm);
-// InputError, with the clock needed, for a setup's clock below the stepping bound of
-// slowest_clock.
-void check_clock(const PlannedProgram& pp, const PaceSetup& s);
+// The slowest block clock that follows a plan at a step, Hz. Each piece at its peak
+// speed v (path steps/s) asks v * axes_factor stepping iterations per second, each
+// taking kNormLatency + 1 clocks (the norm unit recomputes the path length per
+// iteration after it), and up to v / d iterations, each at least 2 clocks, d the
+// piece's shortest path per iteration (min_iteration_distance: this runs each piece
+// through the datapath once); the path acceleration must also fit ACCEL (pace_setup).
+// A slower clock leaves a backlog the core then works off above the commanded speed.
+double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm);
+// InputError, with the clock needed, for a setup's clock below slowest_clock.
+void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, const PaceSetup& s);
 
 // The block's pacing of a planned program at a clock: ACCEL, VMIN and one entry per
 // piece, in the plan's order (InputError as pace_setup and check_clock).

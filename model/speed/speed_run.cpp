@@ -83,10 +83,7 @@ SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const
         t.add(b);
         on_block(b);
       },
-      [&](const PlannedSegment& p) {
-        t.axis_rate = std::max(t.axis_rate, p.peak * axes_factor(p.seg));
-        if (on_segment) on_segment(p);
-      });
+      on_segment);
   const program::Point2 start = read.start.value_or(program::Point2{});
   program::BlockPlanner planner(lattice, start, file, window, [&](program::BlockPlan&& b) {
     run.block(b);

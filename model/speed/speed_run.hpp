@@ -66,9 +66,6 @@ double axes_factor(const Segment& s);
 struct SpeedTotals {
   std::size_t blocks = 0, pieces = 0;
   double length = 0, time = 0, dwell = 0;  // mm, s (time includes every dwell)
-  // The fastest any piece moves its axes together, mm/s: its peak speed times
-  // axes_factor (over the step: at most the steps per second it asks).
-  double axis_rate = 0;
   void add(const BlockSpeeds& b) {
     ++blocks;
     pieces += b.pieces;

@@ -50,8 +50,7 @@ void run_one(motion::MotionCosim& h, std::istream& in, const std::string& name, 
   const speed::PlannerLimits pl = speed::planner_limits(s.lim, s.read.machine);
   const double step_mm = double(s.lattice.step) / double(program::kNmPerMm);
   // By default the slowest clock that follows the plan, 5% over, in whole kHz.
-  const double clock =
-      s.clock > 0 ? s.clock : std::ceil(speed::slowest_clock(pp.totals, pl, step_mm) * 1.05 / 1000) * 1000;
+  const double clock = s.clock > 0 ? s.clock : std::ceil(speed::slowest_clock(pp, pl, step_mm) * 1.05 / 1000) * 1000;
   const speed::ProgramPacing pace = speed::program_pacing(pp, pl, s.lim, s.lattice.step, clock);
   const motion::MotionLimits pins = motion::pin_limits(pp, pl, s.lim, step_mm, clock);
   const motion::PacedRun r = motion::run_paced_program(h, pp, pace, pins, s.run);
