@@ -24,17 +24,23 @@ mkdir -p "$out"
 n=0
 for prog in "$dir"/*.ngc; do
   name=$(basename "$prog" .ngc)
-  mapfile -t opts < <("$here/../scripts/example-options.sh" "$prog")
+  listed=$("$here/../scripts/example-options.sh" "$prog")
+  mapfile -t opts <<<"$listed"
   # program_cosim picks the block's clock: the slowest that follows the plan, 5% over,
   # in whole kHz; the bus set runs at the same.
-  line=$("$cosim" "${opts[@]}" "${speeds[@]}" --seed 3 | grep '^program_cosim: ')
+  if ! ran=$("$cosim" "${opts[@]}" "${speeds[@]}" --seed 3 2>&1); then
+    printf '%s\n' "$ran" >&2
+    echo "examples at speeds: $name failed on the co-simulation" >&2
+    exit 1
+  fi
+  line=$(sed -n '/^program_cosim: /p' <<<"$ran")
   echo "$line"
   clock=$(sed -n 's/^.* cycles at \([0-9]*\) Hz .*$/\1/p' <<<"$line")
-  [ -n "$clock" ] || { echo "examples at speeds: no clock for $name" >&2; exit 1; }
+  [ -n "$clock" ] || { printf '%s\n' "$ran" >&2; echo "examples at speeds: no clock for $name" >&2; exit 1; }
   rm -rf "${out:?}/$name"
   "$dda" vectors --bus "${opts[@]}" --speeds "${speeds[@]}" --clock "$clock" --seed 3 --max-size 1G --out-dir "$out/$name"
   "$here/../scripts/vector-bench.sh" --bus "$out/$name"
-  echo "examples at speeds: $name: $((16#$(cat "$out/$name/counts.hex"))) cycles at $clock Hz, the same on the three engines"
+  echo "examples at speeds: $name: $((16#$(cat "$out/$name/counts.hex"))) cycles at $clock Hz: the bus set on Icarus and Verilator, the co-simulation with the reference model"
   rm -rf "${out:?}/$name"
   n=$((n + 1))
 done

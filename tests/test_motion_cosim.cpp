@@ -103,6 +103,7 @@ TEST_CASE("motion cosim: a program at its planned speeds, SystemC model and RTL 
   MotionCosim h;
   PacedRunOptions opt;
   opt.seed = 5;
+  opt.pipelined = true;
   const PacedRun run = run_paced_program(h, pp, pace, ml, opt);
   CHECK(run.position == pp.plan.to);
   INFO(run.monitor.summary());

@@ -184,7 +184,7 @@ void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, c
 
 PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup& setup, const speed::PlannerLimits& pl,
                         const speed::MachineLimits& lim, PaceHooks hooks) {
-  speed::check_clock(pp, pl, setup);
+  speed::check_clock(pp, pl, setup.step_mm, setup.clock_hz);
   std::vector<motion::PaceEntry> entries;
   double top = 0;
   for (std::size_t k = 0; k < pp.segments.size(); ++k) {

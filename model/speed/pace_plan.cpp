@@ -76,29 +76,32 @@ double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double s
     const double v = p.peak / step_mm;  // path steps per second at its fastest
     const std::uint64_t d = motion::min_iteration_distance(pp.plan.pieces[k].cmd);
     const double per_iteration = d > 0 ? std::ldexp(1.0, motion::kNormFrac) / double(d) : 0;
-    need = std::max(need, v * (kStepClocks * axes_factor(p.seg) + kIterationClocks * per_iteration));
+    // Stepping iterations per path step: at most the steps (axes_factor) and at most
+    // the iterations (1 / d); each costs kStepClocks, its own 2 counted with the rest.
+    const double stepping = d > 0 ? std::min(axes_factor(p.seg), per_iteration) : axes_factor(p.seg);
+    need = std::max(need, v * ((kStepClocks - kIterationClocks) * stepping + kIterationClocks * per_iteration));
   }
   const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
   return std::max(need, ramp);
 }
 
-void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, const PaceSetup& s) {
-  const double need = slowest_clock(pp, pl, s.step_mm);
-  if (need > s.clock_hz) {
+void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz) {
+  const double need = slowest_clock(pp, pl, step_mm);
+  if (need > clock_hz) {
     throw InputError(fmt::format(
         "the planned speeds need a clock of at least {:.0f} Hz with a {} mm step, not {} Hz: the core takes a "
-        "stepping iteration at most every {} clocks and any iteration at most every {} (docs/design.md, "
-        "\"Pacer\"); raise --clock, or lower the machine's speeds (--rapid, the axes' vmax_mm_per_min) or "
-        "coarsen the step",
-        std::ceil(need), s.step_mm, s.clock_hz, kStepClocks, kIterationClocks));
+        "stepping iteration at most every {} clocks and any iteration at most every {}, and ACCEL holds the "
+        "path acceleration (docs/design.md, \"Pacer\"); raise the clock, or lower the machine's speeds or "
+        "acceleration or coarsen the step",
+        std::ceil(need), step_mm, clock_hz, kStepClocks, kIterationClocks));
   }
 }
 
 ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
                              program::Length step, double clock_hz) {
   ProgramPacing out;
+  check_clock(pp, plim, double(step) / double(program::kNmPerMm), clock_hz);
   out.setup = pace_setup(plim, lim, step, clock_hz);
-  check_clock(pp, plim, out.setup);
   out.entries.reserve(pp.segments.size());
   for (std::size_t k = 0; k < pp.segments.size(); ++k)
     out.entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], out.setup));

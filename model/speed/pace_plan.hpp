@@ -43,15 +43,17 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
                                    const program::LatticeOptions& lattice, const MachineLimits& lim);
 
 // The slowest block clock that follows a plan at a step, Hz. Each piece at its peak
-// speed v (path steps/s) asks v * axes_factor stepping iterations per second, each
-// taking kNormLatency + 1 clocks (the norm unit recomputes the path length per
-// iteration after it), and up to v / d iterations, each at least 2 clocks, d the
-// piece's shortest path per iteration (min_iteration_distance: this runs each piece
-// through the datapath once); the path acceleration must also fit ACCEL (pace_setup).
-// A slower clock leaves a backlog the core then works off above the commanded speed.
+// speed v (path steps/s) asks up to v / d iterations per second, each at least 2
+// clocks, d the piece's shortest path per iteration (min_iteration_distance: this runs
+// each piece through the datapath once), and among them up to v * min(axes_factor,
+// 1 / d) stepping ones, each taking kNormLatency + 1 clocks (the norm unit recomputes
+// the path length per iteration after it); the path acceleration must also fit ACCEL
+// (pace_setup). A slower clock leaves a backlog the core then works off above the
+// commanded speed. At 100% override: an override above it needs the clock raised as
+// much; step/dir timings longer than 107 clocks a step are not counted.
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm);
 // InputError, with the clock needed, for a setup's clock below slowest_clock.
-void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, const PaceSetup& s);
+void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz);
 
 // The block's pacing of a planned program at a clock: ACCEL, VMIN and one entry per
 // piece, in the plan's order (InputError as pace_setup and check_clock).

@@ -94,6 +94,7 @@ SpeedTotals plan_program_speeds(std::istream& in, const std::string& file, const
   planner.finish();
   run.finish();
   t.dwell_at_end(sum.dwell_after + run.dwell_left());
+  t.plane = sum.plane;
   return t;
 }
 

@@ -66,6 +66,7 @@ double axes_factor(const Segment& s);
 struct SpeedTotals {
   std::size_t blocks = 0, pieces = 0;
   double length = 0, time = 0, dwell = 0;  // mm, s (time includes every dwell)
+  int plane = 170;                         // the run's plane (G17 170, G18 180, G19 190): the block's axes are its
   void add(const BlockSpeeds& b) {
     ++blocks;
     pieces += b.pieces;

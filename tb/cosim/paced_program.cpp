@@ -13,9 +13,13 @@ MotionLimits pin_limits(const speed::PlannedProgram& pp, const speed::PlannerLim
   ml.clock_hz = clock_hz;
   ml.max_speed = top / step_mm;
   ml.max_accel = pl.accel / step_mm;
+  // The block's axes are the run's plane's (u, v, normal): G18 (Z, X, Y), G19 (Y, Z, X).
+  const std::array<std::size_t, 3> machine = pp.totals.plane == 180   ? std::array<std::size_t, 3>{2, 0, 1}
+                                             : pp.totals.plane == 190 ? std::array<std::size_t, 3>{1, 2, 0}
+                                                                      : std::array<std::size_t, 3>{0, 1, 2};
   for (std::size_t a = 0; a < 3; ++a) {
-    ml.axis_speed[a] = lim.axes[a].vmax / 60 / step_mm;
-    ml.axis_accel[a] = lim.axes[a].accel / step_mm;
+    ml.axis_speed[a] = lim.axes[machine[a]].vmax / 60 / step_mm;
+    ml.axis_accel[a] = lim.axes[machine[a]].accel / step_mm;
   }
   return ml;
 }

@@ -16,8 +16,10 @@
 namespace dda::motion {
 
 // The pins' limits for a planned program (steps/s and steps/s^2): the path's speed the
-// fastest planned segment's peak and its acceleration the planner's; each axis' speed
-// its vmax and its acceleration its limit (the ramps' and the curves' together).
+// fastest planned segment's peak and its acceleration the planner's; each pin's speed
+// the vmax of the machine axis it drives (the block's X, Y, Z are the run's plane's u,
+// v and normal: a lathe's G18 drives Z, X, Y) and its acceleration that axis' limit
+// (the ramps' and the curves' together). An absent axis (vmax 0) is not checked.
 MotionLimits pin_limits(const speed::PlannedProgram& pp, const speed::PlannerLimits& pl,
                         const speed::MachineLimits& lim, double step_mm, double clock_hz);
 

@@ -60,15 +60,15 @@ void run_one(motion::MotionCosim& h, std::istream& in, const std::string& name, 
   }
   const auto& m = r.monitor;
   std::printf(
-      "program_cosim: %s: %zu pieces, %llu cycles at %.0f Hz (%.3f s; planned %.3f s), SystemC model, RTL and "
+      "program_cosim: %s: %zu pieces, %llu cycles at %.0f Hz (%.3f s; planned motion %.3f s), SystemC model, RTL and "
       "reference model equal at every edge, at its end point; at the RTL's pins: path speed %.0f of %.0f steps/s, "
       "acceleration %.4g of %.4g steps/s^2; per axis speed X %.0f Y %.0f Z %.0f of %.0f %.0f %.0f steps/s, "
       "acceleration X %.4g Y %.4g Z %.4g of %.4g %.4g %.4g steps/s^2; 0 violations\n",
       name.c_str(), pp.plan.pieces.size(), (unsigned long long)r.cycles, clock, double(r.cycles) / clock,
-      pp.totals.time, m.peak_speed(), pins.max_speed, m.peak_accel(), pins.max_accel, m.peak_axis_speed()[0],
-      m.peak_axis_speed()[1], m.peak_axis_speed()[2], pins.axis_speed[0], pins.axis_speed[1], pins.axis_speed[2],
-      m.peak_axis_accel()[0], m.peak_axis_accel()[1], m.peak_axis_accel()[2], pins.axis_accel[0], pins.axis_accel[1],
-      pins.axis_accel[2]);
+      pp.totals.time - pp.totals.dwell, m.peak_speed(), pins.max_speed, m.peak_accel(), pins.max_accel,
+      m.peak_axis_speed()[0], m.peak_axis_speed()[1], m.peak_axis_speed()[2], pins.axis_speed[0], pins.axis_speed[1],
+      pins.axis_speed[2], m.peak_axis_accel()[0], m.peak_axis_accel()[1], m.peak_axis_accel()[2], pins.axis_accel[0],
+      pins.axis_accel[1], pins.axis_accel[2]);
   std::fflush(stdout);
 }
 
@@ -89,17 +89,22 @@ int sc_main(int argc, char* argv[]) {
   int random = 0, blocks = 10;
   Settings s;
   app.add_option("--program", file, "the part program");
-  app.add_option("--random", random, "N generated programs instead (lines, arcs and ellipses at random angles)");
-  app.add_option("--blocks", blocks, "blocks of each generated program (default 10)");
+  app.add_option("--random", random, "N generated programs instead (lines, arcs and ellipses at random angles)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--blocks", blocks, "blocks of each generated program (default 10)")->check(CLI::PositiveNumber);
   app.add_option("--machine", machine, "mill (default) or lathe");
   app.add_option("--start", start, "the tool's start X,Y (lathe X,Z, X a diameter), mm")->delimiter(',')->expected(2);
   app.add_option("--step", step, "the lattice step, mm (default 0.01)");
-  app.add_option("--accel", accel, "every axis' acceleration, mm/s^2 (default: the machine's)");
-  app.add_option("--default-feed", default_feed, "the feed of a program that gives no F, mm/min");
-  app.add_option("--rapid", rapid, "the rapid rate, mm/min (default: the machine's)");
-  app.add_option("--min-speed", min_speed, "where a drive starts and stops, mm/min (default: the machine's)");
-  app.add_option("--vmax", vmax, "every axis' velocity, mm/min (default: the machine's)");
-  app.add_option("--clock", clock, "the block's clock, Hz (default: the slowest that follows the plan, 5% over)");
+  app.add_option("--accel", accel, "every axis' acceleration, mm/s^2 (default: the machine's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--default-feed", default_feed, "the feed of a program that gives no F, mm/min")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--rapid", rapid, "the rapid rate, mm/min (default: the machine's)")->check(CLI::PositiveNumber);
+  app.add_option("--min-speed", min_speed, "where a drive starts and stops, mm/min (default: the machine's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--vmax", vmax, "every axis' velocity, mm/min (default: the machine's)")->check(CLI::PositiveNumber);
+  app.add_option("--clock", clock, "the block's clock, Hz (default: the slowest that follows the plan, 5% over)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--timing", timing, "every axis' STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD, clocks")->delimiter(',');
   app.add_flag("--pipelined", s.run.pipelined, "pipelined Wishbone cycles (default classic)");
   app.add_option("--seed", s.run.seed, "the bus's seed, and the generated programs' (default 1)");
@@ -107,6 +112,9 @@ int sc_main(int argc, char* argv[]) {
   std::string current = file;
   try {
     if (file.empty() == (random == 0)) throw InputError("give --program FILE or --random N");
+    if (random > 0 && (!start.empty() || machine != "mill"))
+      throw InputError("--random draws mill programs from the origin: leave --start and --machine out");
+    if (random == 0 && app.count("--blocks") > 0) throw InputError("--blocks goes with --random");
     if (machine != "mill" && machine != "lathe") throw InputError("--machine is mill or lathe");
     s.read.machine = machine == "lathe" ? program::Machine::Lathe : program::Machine::Mill;
     if (!start.empty()) {
@@ -142,7 +150,7 @@ int sc_main(int argc, char* argv[]) {
     }
   } catch (const std::exception& e) {
     std::cerr << "program_cosim: " << e.what() << '\n';
-    if (random > 0) std::cerr << "the program:\n" << current;
+    if (random > 0 && !current.empty()) std::cerr << "the program:\n" << current;
     return 1;
   }
   return 0;
