@@ -60,15 +60,23 @@ std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t 
   return std::uint32_t(l);
 }
 
-std::uint32_t pace_length(const Command& c) {
+namespace {
+// Calls f(d) with iteration_distance of each of the piece's iterations, in order.
+template <typename F>
+void each_iteration_distance(const Command& c, F f) {
   Datapath d(c, Point{});
-  u128 sum = 0;
   const std::uint64_t bound = std::uint64_t{1} << 40;
   while (!d.done()) {
     if (d.stalled() || d.iterations() > bound) throw GuardError("pacer: a piece that does not end");
-    sum += iteration_distance(c, d.regs());
+    f(iteration_distance(c, d.regs()));
     d.iterate();
   }
+}
+}  // namespace
+
+std::uint32_t pace_length(const Command& c) {
+  u128 sum = 0;
+  each_iteration_distance(c, [&](std::uint64_t x) { sum += x; });
   const u128 unit = u128(1) << (kNormFrac - kLenFrac);
   const u128 l = (sum + unit - 1) / unit;
   if (l > 0xFFFFFFFFu) throw GuardError("pacer: a piece longer than an entry's length field holds");
@@ -76,15 +84,10 @@ std::uint32_t pace_length(const Command& c) {
 }
 
 std::uint64_t min_iteration_distance(const Command& c) {
-  Datapath d(c, Point{});
   std::uint64_t least = 0;
-  const std::uint64_t bound = std::uint64_t{1} << 40;
-  while (!d.done()) {
-    if (d.stalled() || d.iterations() > bound) throw GuardError("pacer: a piece that does not end");
-    const std::uint64_t x = iteration_distance(c, d.regs());
+  each_iteration_distance(c, [&](std::uint64_t x) {
     if (x > 0 && (least == 0 || x < least)) least = x;
-    d.iterate();
-  }
+  });
   return least;
 }
 

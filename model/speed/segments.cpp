@@ -11,6 +11,12 @@
 
 namespace dda::speed {
 
+std::array<std::size_t, 3> machine_axes(int plane) {
+  if (plane == 180) return {2, 0, 1};
+  if (plane == 190) return {1, 2, 0};
+  return {0, 1, 2};
+}
+
 namespace {
 
 using program::Move;
@@ -18,13 +24,6 @@ using program::MoveKind;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 16;  // intervals along a curved piece (Simpson's rule: even)
-
-// The machine axis (0 X, 1 Y, 2 Z) of a plane's u, v and normal w.
-std::array<std::size_t, 3> machine_axes(int plane) {
-  if (plane == 180) return {2, 0, 1};
-  if (plane == 190) return {1, 2, 0};
-  return {0, 1, 2};
-}
 
 Vec3 unit(Vec3 v) {
   const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

@@ -7,6 +7,7 @@
 // and a block in exact stop (G61).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ double block_feed(const program::Move& mv, double length_mm, const MachineLimits
 // The planner's limits from a machine's (mm/min to mm/s; the path and normal
 // accelerations of machine_limits.hpp).
 PlannerLimits planner_limits(const MachineLimits& lim, program::Machine m);
+// The machine axis (0 X, 1 Y, 2 Z) of a plane's u, v and normal w (G17 170, G18 180,
+// G19 190): the block's X, Y and Z in a run on that plane.
+std::array<std::size_t, 3> machine_axes(int plane);
 
 // A piece's geometry from its block: length (mm), tangents, axis shares and smallest
 // radius of curvature; feed, rests and deviation left to the caller.

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "speed/segments.hpp"
+
 namespace dda::motion {
 
 MotionLimits pin_limits(const speed::PlannedProgram& pp, const speed::PlannerLimits& pl,
@@ -14,9 +16,7 @@ MotionLimits pin_limits(const speed::PlannedProgram& pp, const speed::PlannerLim
   ml.max_speed = top / step_mm;
   ml.max_accel = pl.accel / step_mm;
   // The block's axes are the run's plane's (u, v, normal): G18 (Z, X, Y), G19 (Y, Z, X).
-  const std::array<std::size_t, 3> machine = pp.totals.plane == 180   ? std::array<std::size_t, 3>{2, 0, 1}
-                                             : pp.totals.plane == 190 ? std::array<std::size_t, 3>{1, 2, 0}
-                                                                      : std::array<std::size_t, 3>{0, 1, 2};
+  const std::array<std::size_t, 3> machine = speed::machine_axes(pp.totals.plane);
   for (std::size_t a = 0; a < 3; ++a) {
     ml.axis_speed[a] = lim.axes[machine[a]].vmax / 60 / step_mm;
     ml.axis_accel[a] = lim.axes[machine[a]].accel / step_mm;
