@@ -4,15 +4,18 @@
 // pacer's reference model on the golden datapath clock by clock. The speed monitor reads
 // the step pins alone and fails the run on a path acceleration above the plan's (5%
 // for its whole-step quantization) or a speed above the fastest piece's; every piece
-// that cruises does so within 1% of its planned speed; the run ends on the program's
+// that cruises does so within 1% of its planned speed and ends (a junction, an exact
+// stop, the program's end) within 1% of its planned exit speed; the run ends on the program's
 // end; and its time is the plan's within 0.5% (the pacer's lengths are the DDA's, its
 // rests at the minimum speed).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "report/pace_report.hpp"
 #include "speed/pace_plan.hpp"
@@ -58,8 +61,12 @@ TEST_CASE("speed pace: the examples at their planned speeds on the pacer's refer
     const PaceResult r = pace_program(pp, setup, pl, lim);  // (the monitor throws over a limit)
     CHECK(r.end == pp.plan.to);
     CHECK(r.worst_cruise_error < 0.01);
+    CHECK(r.junctions == pp.plan.pieces.size());
+    CHECK(r.worst_junction_excess < 0.01);
     const double planned = pp.totals.time - pp.totals.dwell;
-    WARN(e.file << ": pacer " << r.seconds() << " s, plan " << planned << " s, monitor " << r.monitor.summary());
+    WARN(e.file << ": pacer " << r.seconds() << " s, plan " << planned << " s, cruise within " << r.worst_cruise_error
+                << ", piece ends at most " << r.worst_junction_excess << " over their exit speeds, monitor "
+                << r.monitor.summary());
     CHECK(r.seconds() == Approx(planned).epsilon(0.005));
   }
 }
@@ -87,8 +94,34 @@ TEST_CASE("speed pace: at a coarse step on just over the slowest clock, the pace
     const PaceSetup setup = pace_setup(pl, lim, 50000, 1.05 * slowest);
     const PaceResult r = pace_program(pp, setup, pl, lim);  // (the monitor throws over a limit)
     CHECK(r.end == pp.plan.to);
+    CHECK(r.worst_junction_excess < 0.01);
     const double planned = pp.totals.time - pp.totals.dwell;
-    WARN(e.file << ": slowest clock " << slowest << " Hz, pacer " << r.seconds() << " s, plan " << planned << " s");
+    WARN(e.file << ": slowest clock " << slowest << " Hz, pacer " << r.seconds() << " s, plan " << planned
+                << " s, piece ends at most " << r.worst_junction_excess << " over their exit speeds");
     CHECK(r.seconds() == Approx(planned).epsilon(0.01));
   }
+}
+
+TEST_CASE("speed pace: exit speeds lowered to what the pacer's own lengths can slow down from") {
+  // Three one-step pieces planned at 100 steps/s exits on a longer programmed path: the
+  // pacer's lengths leave room to slow from less, down to VMIN at the end.
+  PaceSetup s;
+  s.clock_hz = 1e5;
+  s.step_mm = 0.05;
+  s.accel = std::uint64_t(std::ldexp(1000.0 / (1e5 * 1e5), motion::kRampFrac));  // 1000 steps/s^2
+  s.vmin = speed_word(0.5, s);                                                   // 10 steps/s
+  std::vector<motion::PaceEntry> entries(4);
+  for (motion::PaceEntry& e : entries) {
+    e.cruise = e.limit = e.exit = speed_word(5, s);  // 100 steps/s
+    e.length = 1u << motion::kLenFrac;               // one step
+  }
+  entries[1].exit = speed_word(1, s);  // 20 steps/s: below what the rest allows
+  limit_exits(entries, s);
+  const auto steps_per_s = [&](std::uint32_t w) { return double(w) / std::ldexp(1.0, motion::kSpeedFrac) * 1e5; };
+  // Backward from 10 steps/s: sqrt(10^2 + 2 * 1000 * 1) = 45.8 steps/s; before the piece
+  // that ends at 20, sqrt(20^2 + 2000) = 49.0.
+  CHECK(steps_per_s(entries[2].exit) == Approx(std::sqrt(100.0 + 2000)).epsilon(1e-6));
+  CHECK(steps_per_s(entries[1].exit) == Approx(20).epsilon(1e-6));  // already lower: kept
+  CHECK(steps_per_s(entries[0].exit) == Approx(std::sqrt(400.0 + 2000)).epsilon(1e-6));
+  CHECK(entries[0].brake_exit == motion::brake_distance(entries[0].exit, s.vmin, s.accel));
 }

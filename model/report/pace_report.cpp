@@ -115,6 +115,18 @@ struct Run {
     row = PaceRow{res.iterations, clock, v, path_speed, res.path, Point{}};
   }
 
+  // The piece has ended: its last iteration's speed against the speed it may leave at.
+  void note_junction(const Pacer::In& in) {
+    if (in.set.override_ != motion::kOverrideOne || in.set.hold) return;
+    const bool follows = cur + 1 < plan.pieces.size();
+    // (The pacer never goes below the minimum speed: a rest ends at it.)
+    const std::uint32_t exit = std::max(follows ? entries[cur].exit : 0, set.vmin);  // x 2^kSpeedFrac
+    const double allowed = ramp_steps_per_s(std::uint64_t(exit) << (kRampFrac - kSpeedFrac), o.clock_hz);
+    if (!(allowed > 0)) return;
+    res.worst_junction_excess = std::max(res.worst_junction_excess, res.last_speed / allowed - 1);
+    ++res.junctions;
+  }
+
   // The core's iteration on the edge: the steps, in the run's axes.
   std::array<bool, 3> iterate(std::array<bool, 3>& dir) {
     const Command& c = plan.pieces[cur].cmd;
@@ -150,6 +162,7 @@ struct Run {
     std::array<bool, 3> step{}, dir{};
     if (it) {
       step = iterate(dir);
+      if (dp->done()) note_junction(in);
       row.at = res.end;
       if (hooks.row) hooks.row(row);
     }
@@ -178,7 +191,7 @@ PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& ho
         o,
         hooks,
         PaceResult{0, 0, 0, 0, 0, 0, 0, 0, 0, o.clock_hz, plan.from,
-                   motion::SpeedMonitor(motion::MotionLimits{o.clock_hz, o.feed, o.accel})},
+                   motion::SpeedMonitor(motion::MotionLimits{o.clock_hz, o.feed, o.accel}), 0, 0},
         {},
         {},
         {},

@@ -56,6 +56,11 @@ struct PaceResult {
   double clock_hz = 0;
   Point end;
   motion::SpeedMonitor monitor;
+  // At each piece's end (at 100% override, no hold): the commanded speed of its last
+  // iteration over the speed it may leave at (its entry's exit, the minimum speed at the
+  // program's end), less one: the largest (0 if none is above), and how many ends were seen.
+  double worst_junction_excess = 0;
+  std::uint64_t junctions = 0;
 };
 
 struct PaceHooks {

@@ -191,6 +191,7 @@ PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup&
     entries.push_back(speed::pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
     top = std::max(top, pp.segments[k].peak);
   }
+  speed::limit_exits(entries, setup);
   PaceOptions o;
   o.clock_hz = setup.clock_hz;
   o.feed = top / setup.step_mm;

@@ -105,7 +105,28 @@ ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim
   out.entries.reserve(pp.segments.size());
   for (std::size_t k = 0; k < pp.segments.size(); ++k)
     out.entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], out.setup));
+  limit_exits(out.entries, out.setup);
   return out;
+}
+
+void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {
+  // In steps and steps per clock: the pacer ends a piece at its exit speed, or at VMIN
+  // if that is higher; the last one at VMIN.
+  const double unit = std::ldexp(1.0, motion::kSpeedFrac);
+  const double accel = double(s.accel) / std::ldexp(1.0, motion::kRampFrac);  // steps/clock^2
+  double after = double(s.vmin) / unit;  // the end speed of the piece after the one at hand
+  for (std::size_t k = entries.size(); k-- > 0;) {
+    motion::PaceEntry& e = entries[k];
+    if (k + 1 < entries.size()) {
+      const double reach = std::floor(after * unit);
+      if (reach < double(e.exit)) {
+        e.exit = std::uint32_t(reach);
+        e.brake_exit = motion::brake_distance(e.exit, s.vmin, s.accel);
+      }
+    }
+    const double end = double(std::max(k + 1 < entries.size() ? e.exit : 0, s.vmin)) / unit;
+    after = std::sqrt(end * end + 2 * accel * double(e.length) / std::ldexp(1.0, motion::kLenFrac));
+  }
 }
 
 }  // namespace dda::speed

@@ -61,6 +61,11 @@ struct ProgramPacing {
   PaceSetup setup;
   std::vector<motion::PaceEntry> entries;
 };
+// The entries' exit speeds lowered where the pacer's own lengths (the DDA's path, which
+// at a coarse step can be shorter than the programmed one a piece was planned on) leave
+// too little room to slow down to the next pieces' exits: a backward pass from VMIN at
+// the end, as the plan's own but over the entries' lengths.
+void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
 ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
                              program::Length step, double clock_hz);
 

@@ -12,7 +12,7 @@
 //                        [--step MM] [--accel MM_PER_S2] [--rapid MM_PER_MIN] [--vmax MM_PER_MIN] [--min-speed
 //                        MM_PER_MIN]
 //                        [--default-feed MM_PER_MIN] [--clock HZ] [--timing A,B,C,D] [--pipelined]
-//                        [--seed S]
+//                        [--seed S] [--row]
 // The machine is the default mill or lathe with the options' changes; the clock by
 // default the slowest that follows the plan (speed::slowest_clock), 5% over.
 #include <fmt/format.h>
@@ -31,6 +31,7 @@
 #include "paced_program.hpp"
 #include "program_plan/program_plan.hpp"
 #include "random_program.hpp"
+#include "report/pace_report.hpp"
 
 using namespace dda;
 
@@ -42,6 +43,7 @@ struct Settings {
   speed::MachineLimits lim;
   double clock = 0;
   motion::PacedRunOptions run;
+  bool row = false;  // a table row instead of the sentence
 };
 
 // One program through the co-simulation; prints its line.
@@ -58,17 +60,36 @@ void run_one(motion::MotionCosim& h, std::istream& in, const std::string& name, 
     throw GuardError(fmt::format("{}: the block ends at ({}, {}, {}), the program at ({}, {}, {})", name, r.position.x,
                                  r.position.y, r.position.z, pp.plan.to.x, pp.plan.to.y, pp.plan.to.z));
   }
+  // The pacer's reference model on the golden datapath at the same clock (the block's
+  // pacer, without the bus): every cruise against the plan (a failure over 1%), every
+  // piece's end against its exit speed (reported: pieces of a step or two, at coarse
+  // steps, end above it; docs/results.md, "Programs at their planned speeds").
+  const PaceResult ref = pace_program(pp, pace.setup, pl, s.lim);
+  if (ref.worst_cruise_error >= 0.01) {
+    throw GuardError(fmt::format("{}: the pacer cruises up to {:.4f} off the planned speeds (at most 0.01)", name,
+                                 ref.worst_cruise_error));
+  }
   const auto& m = r.monitor;
-  std::printf(
-      "program_cosim: %s: %zu pieces, %llu cycles at %.0f Hz (%.3f s; planned motion %.3f s), SystemC model, RTL and "
-      "reference model equal at every edge, at its end point; at the RTL's pins: path speed %.0f of %.0f steps/s, "
-      "acceleration %.4g of %.4g steps/s^2; per axis speed X %.0f Y %.0f Z %.0f of %.0f %.0f %.0f steps/s, "
-      "acceleration X %.4g Y %.4g Z %.4g of %.4g %.4g %.4g steps/s^2; 0 violations\n",
-      name.c_str(), pp.plan.pieces.size(), (unsigned long long)r.cycles, clock, double(r.cycles) / clock,
-      pp.totals.time - pp.totals.dwell, m.peak_speed(), pins.max_speed, m.peak_accel(), pins.max_accel,
-      m.peak_axis_speed()[0], m.peak_axis_speed()[1], m.peak_axis_speed()[2], pins.axis_speed[0], pins.axis_speed[1],
-      pins.axis_speed[2], m.peak_axis_accel()[0], m.peak_axis_accel()[1], m.peak_axis_accel()[2], pins.axis_accel[0],
-      pins.axis_accel[1], pins.axis_accel[2]);
+  const auto share = [&](double peak, double limit) { return limit > 0 ? fmt::format("{:.3f}", peak / limit) : "-"; };
+  const auto axes = [&](const std::array<double, 3>& peak, const std::array<double, 3>& limit) {
+    return fmt::format("X {} Y {} Z {}", share(peak[0], limit[0]), share(peak[1], limit[1]), share(peak[2], limit[2]));
+  };
+  const double seconds = double(r.cycles) / clock, planned = pp.totals.time - pp.totals.dwell;
+  if (s.row) {
+    fmt::print("| {} | {} | {:.0f} | {} | {:.3f} | {:.3f} | {} | {} | {} | {} | {:.4f} | {:.4f} |\n", name,
+               pp.plan.pieces.size(), clock, r.cycles, seconds, planned, share(m.peak_speed(), pins.max_speed),
+               share(m.peak_accel(), pins.max_accel), axes(m.peak_axis_speed(), pins.axis_speed),
+               axes(m.peak_axis_accel(), pins.axis_accel), ref.worst_cruise_error, ref.worst_junction_excess);
+  } else {
+    fmt::print(
+        "program_cosim: {}: {} pieces, {} cycles at {:.0f} Hz ({:.3f} s; planned motion {:.3f} s), SystemC model, RTL "
+        "and reference model equal at every edge, at its end point; at the RTL's pins (of the limits): path speed {}, "
+        "acceleration {}; per axis speed {}, acceleration {}; the pacer cruising within {:.4f} of the planned speeds, "
+        "ending its {} pieces at most {:.4f} over their exit speeds; 0 violations\n",
+        name, pp.plan.pieces.size(), r.cycles, clock, seconds, planned, share(m.peak_speed(), pins.max_speed),
+        share(m.peak_accel(), pins.max_accel), axes(m.peak_axis_speed(), pins.axis_speed),
+        axes(m.peak_axis_accel(), pins.axis_accel), ref.worst_cruise_error, ref.junctions, ref.worst_junction_excess);
+  }
   std::fflush(stdout);
 }
 
@@ -108,6 +129,7 @@ int sc_main(int argc, char* argv[]) {
   app.add_option("--timing", timing, "every axis' STEPLEN,STEPSPACE,DIRSETUP,DIRHOLD, clocks")->delimiter(',');
   app.add_flag("--pipelined", s.run.pipelined, "pipelined Wishbone cycles (default classic)");
   app.add_option("--seed", s.run.seed, "the bus's seed, and the generated programs' (default 1)");
+  app.add_flag("--row", s.row, "print each program's figures as a row of docs/results.md's table");
   CLI11_PARSE(app, argc, argv);
   std::string current = file;
   try {
