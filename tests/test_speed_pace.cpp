@@ -103,8 +103,9 @@ TEST_CASE("speed pace: at a coarse step on just over the slowest clock, the pace
 }
 
 TEST_CASE("speed pace: exit speeds lowered to what the pacer's own lengths can slow down from") {
-  // Three one-step pieces planned at 100 steps/s exits on a longer programmed path: the
-  // pacer's lengths leave room to slow from less, down to VMIN at the end.
+  // Four one-step pieces planned with exits of 100 steps/s (the second 20) on a longer
+  // programmed path: the pacer's lengths leave room to slow from less, down to VMIN at
+  // the end.
   PaceSetup s;
   s.clock_hz = 1e5;
   s.step_mm = 0.05;

@@ -185,13 +185,9 @@ void write_speed_svg(std::ostream& os, const Plan& plan, const PaceOptions& o, c
 PaceResult pace_program(const speed::PlannedProgram& pp, const speed::PaceSetup& setup, const speed::PlannerLimits& pl,
                         const speed::MachineLimits& lim, PaceHooks hooks) {
   speed::check_clock(pp, pl, setup.step_mm, setup.clock_hz);
-  std::vector<motion::PaceEntry> entries;
+  const std::vector<motion::PaceEntry> entries = speed::program_entries(pp, setup);
   double top = 0;
-  for (std::size_t k = 0; k < pp.segments.size(); ++k) {
-    entries.push_back(speed::pace_entry(pp.segments[k], pp.plan.pieces[k], setup));
-    top = std::max(top, pp.segments[k].peak);
-  }
-  speed::limit_exits(entries, setup);
+  for (const speed::PlannedSegment& p : pp.segments) top = std::max(top, p.peak);
   PaceOptions o;
   o.clock_hz = setup.clock_hz;
   o.feed = top / setup.step_mm;

@@ -102,11 +102,17 @@ ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim
   ProgramPacing out;
   check_clock(pp, plim, double(step) / double(program::kNmPerMm), clock_hz);
   out.setup = pace_setup(plim, lim, step, clock_hz);
-  out.entries.reserve(pp.segments.size());
-  for (std::size_t k = 0; k < pp.segments.size(); ++k)
-    out.entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], out.setup));
-  limit_exits(out.entries, out.setup);
+  out.entries = program_entries(pp, out.setup);
   return out;
+}
+
+std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const PaceSetup& s) {
+  std::vector<motion::PaceEntry> entries;
+  entries.reserve(pp.segments.size());
+  for (std::size_t k = 0; k < pp.segments.size(); ++k)
+    entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], s));
+  limit_exits(entries, s);
+  return entries;
 }
 
 void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {

@@ -66,6 +66,8 @@ struct ProgramPacing {
 // too little room to slow down to the next pieces' exits: a backward pass from VMIN at
 // the end, as the plan's own but over the entries' lengths.
 void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
+// Every piece's entry (pace_entry), the exits so lowered.
+std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const PaceSetup& s);
 ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
                              program::Length step, double clock_hz);
 
