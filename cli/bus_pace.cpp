@@ -85,7 +85,7 @@ std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, 
     for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
   const PaceOptions& o = b.pace;
   return motion::pace_entries(cmds, speed_field(o.feed, o.clock_hz), speed_field(o.vmin, o.clock_hz),
-                              accel_field(o.accel, o.clock_hz), o.feed, o.accel, o.clock_hz);
+                              accel_field(o.accel, o.clock_hz));
 }
 
 void run_bus_scenario(motion::WishboneMaster& m, motion::MotionDriver& d, const BusOptions& b,

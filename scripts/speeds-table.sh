@@ -6,11 +6,12 @@
 # velocity 600 mm/min), on the slow machine of tests/slow-machine.options, through
 # program_cosim (tb/cosim/program_cosim.cpp): the block's SystemC model and RTL
 # co-simulated with the reference model, clocked 5% over the slowest clock that follows
-# each plan, the speed monitor on the RTL's pins (path and per axis, each figure the
-# share of its limit), and the pacer's reference model at the same clock (its worst
-# error at cruise against the planned speed, its worst piece end over the planned exit
-# speed). A run over a limit fails and stops the script. Two programs at a time (GNU
-# parallel, one job per core).
+# each plan; the block's time, the planned one, and the plan's profile on the DDA's path
+# (the pacer's lengths, the drives starting and stopping at VMIN); the speed monitor on
+# the RTL's pins (path and per axis, each figure the share of its limit), and the
+# pacer's reference model at the same clock (its worst error at cruise against the
+# planned speed, its worst piece end over the planned exit speed). A run over a limit
+# fails and stops the script. Two programs at a time (GNU parallel, one job per core).
 #   usage: scripts/speeds-table.sh [--write]   (--write puts it into docs/results.md)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,8 +30,8 @@ run_one() {
 export -f run_one
 export COSIM=$cosim MACHINE="${machine[*]}"
 table=$(
-  echo "| program | pieces | clock (Hz) | cycles | time (s) | planned (s) | pins: path speed (of its limit) | path acceleration | each axis' speed | each axis' acceleration | pacer: cruise error | piece ends over the exit speed |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| program | pieces | clock (Hz) | cycles | time (s) | planned (s) | DDA path (of programmed) | plan on the DDA path (s) | pins: path speed (of its limit) | path acceleration | each axis' speed | each axis' acceleration | pacer: cruise error | piece ends over the exit speed |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${jobs[@]}" | parallel --halt now,fail=1 --keep-order -j "$(nproc)" run_one {} |
     sed "s|$root/||"
 )

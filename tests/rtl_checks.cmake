@@ -149,7 +149,7 @@ set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_pa
              APPEND PROPERTY LABELS program)
 # A program at its planned speeds (docs/programs.md, "Feeds and speeds"): the pacer's
 # entries from the speed plan (corner, arc, ellipse cut for its curvature, dwell,
-# reversal), with drive timings, at 600 kHz (about 500,000 cycles).
+# reversal), with drive timings, at 600 kHz (about 580,000 cycles).
 dda_bus_vec_set(feeds --program ${PROJECT_SOURCE_DIR}/examples/feeds.ngc --step 0.02 --speeds --accel 2000
                 --clock 6e5 --timing 2,2,1,1 --seed 31)
 set_property(TEST vectors.bus.gen_feeds vectors.bus.feeds APPEND PROPERTY LABELS "program;speed")

@@ -66,8 +66,7 @@ TEST_CASE("motion cosim: a paced line with a feed hold, SystemC model and RTL eq
   const Plan line = plan_line(Point{}, Point{2000, 800, 0}, Preload::Half);
   std::vector<Command> cmds;
   for (const auto& p : line.pieces) cmds.push_back(p.cmd);
-  const auto e = pace_entries(cmds, speed_field(feed, clock), speed_field(vmin, clock), accel_field(accel, clock), feed,
-                              accel, clock);
+  const auto e = pace_entries(cmds, speed_field(feed, clock), speed_field(vmin, clock), accel_field(accel, clock));
   d.preset(line.from);
   for (std::size_t i = 0; i < line.pieces.size(); ++i) d.queue(line.pieces[i].cmd, 0, 0, e[i]);
   m.idle(120000);

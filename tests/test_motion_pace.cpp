@@ -47,8 +47,7 @@ struct Bench {
   void queue(const Plan& plan) {
     std::vector<Command> cmds;
     for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
-    const std::vector<PaceEntry> e =
-        pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel), kFeed, kAccel, kClock);
+    const std::vector<PaceEntry> e = pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel));
     d.preset(plan.from);
     start = h.cycle();
     for (std::size_t i = 0; i < plan.pieces.size(); ++i) d.queue(plan.pieces[i].cmd, 0, plan.pieces[i].rot, e[i]);
@@ -195,7 +194,7 @@ TEST_CASE("pace block: a hard stop stops on its edge with an error, and the paci
   const Plan l = line();
   std::vector<Command> cmds;
   for (const auto& p : l.pieces) cmds.push_back(p.cmd);
-  const auto e = pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel), kFeed, kAccel, kClock);
+  const auto e = pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel));
   for (std::size_t i = 0; i < l.pieces.size(); ++i) d.queue(l.pieces[i].cmd, 0, 0, e[i]);
   m.idle(150000);
   m.write(reg_offset("CTRL"), field_bit("CTRL", "hard_stop"));

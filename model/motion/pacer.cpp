@@ -91,21 +91,46 @@ std::uint64_t min_iteration_distance(const Command& c) {
   return least;
 }
 
+std::uint32_t fastest_within(std::uint32_t cap, std::uint64_t budget, std::uint32_t vmin, std::uint64_t accel) {
+  // brake_distance does not fall as the speed rises: bisect for the highest speed.
+  if (brake_distance(cap, vmin, accel) <= budget) return cap;
+  std::uint32_t lo = std::min(vmin, cap), hi = cap;
+  while (hi - lo > 1) {
+    const std::uint32_t mid = lo + (hi - lo) / 2;
+    (brake_distance(mid, vmin, accel) <= budget ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+void limit_exits(std::vector<PaceEntry>& entries, std::uint32_t vmin, std::uint64_t accel) {
+  if (accel == 0) return;  // no ramp: the speed jumps
+  const std::uint64_t margin = std::uint64_t{1} << (kLenFrac - kMarginShift);
+  for (std::size_t k = entries.size(); k-- > 1;) {
+    // The pacer enters piece k at its predecessor's exit and ramps down once its braking
+    // distance and the margin reach what is left of the piece and the braking from its
+    // own exit (none for the last: it ends at VMIN).
+    const PaceEntry& next = entries[k];
+    const std::uint64_t room = std::uint64_t(next.length) + (k + 1 < entries.size() ? next.brake_exit : 0);
+    PaceEntry& e = entries[k - 1];
+    const std::uint32_t exit = room >= margin ? fastest_within(e.exit, room - margin, vmin, accel) : vmin;
+    if (exit < e.exit) {
+      e.exit = exit;
+      e.brake_exit = brake_distance(e.exit, vmin, accel);
+    }
+  }
+}
+
 std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uint32_t cruise, std::uint32_t vmin,
-                                    std::uint64_t accel, double feed, double accel_rate, double unit) {
+                                    std::uint64_t accel) {
   std::vector<PaceEntry> entries(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    entries[i].cruise = entries[i].limit = cruise;
-    entries[i].length = pace_length(pieces[i]);
-  }
-  double exit = 0;  // of the piece after the one at hand
-  for (std::size_t i = pieces.size(); i-- > 0;) {
     PaceEntry& e = entries[i];
-    e.exit = std::min(cruise, std::uint32_t(std::floor(exit / unit * std::ldexp(1.0, kSpeedFrac))));
+    e.cruise = e.limit = cruise;
+    e.length = pace_length(pieces[i]);
+    e.exit = i + 1 < pieces.size() ? cruise : 0;
     e.brake_exit = brake_distance(e.exit, vmin, accel);
-    const double len = double(e.length) / std::ldexp(1.0, kLenFrac);
-    exit = accel_rate > 0 ? std::sqrt(exit * exit + 2 * accel_rate * len) : feed;
   }
+  limit_exits(entries, vmin, accel);
   return entries;
 }
 

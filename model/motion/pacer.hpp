@@ -79,15 +79,21 @@ std::uint32_t pace_length(const Command& c);
 // steps; 0 when none moves): the core iterates at most every other clock, so a piece
 // at v steps/s asks up to v / d iterations per second.
 std::uint64_t min_iteration_distance(const Command& c);
+// The highest speed up to cap (x 2^kSpeedFrac) whose brake_distance is within budget
+// (x 2^kLenFrac steps): at least min(vmin, cap), which brakes in no distance.
+std::uint32_t fastest_within(std::uint32_t cap, std::uint64_t budget, std::uint32_t vmin, std::uint64_t accel);
+// Lowers exit speeds, backward from the last entry, to what the pacer can slow down from
+// in the piece after: the fastest speed whose brake_distance and the pacer's margin
+// (2^-kMarginShift step) fit the next piece's length and the braking from its own exit
+// (none after the last piece: it ends at vmin); each lowered exit's brake_exit with it.
+// Exits and lengths as the pacer reads them, so the pacer never enters a piece too fast
+// to leave it at its exit. Nothing for accel 0 (the speed jumps).
+void limit_exits(std::vector<PaceEntry>& entries, std::uint32_t vmin, std::uint64_t accel);
 // The entries a driver writes for pieces run back to back at one cruise speed (x
-// 2^kSpeedFrac, also their limit): their lengths, and exit speeds from a backward pass
-// (the last one's 0: it ends at vmin; before it the fastest speed from which the pieces
-// after it can still brake to their exits, sqrt(exit'^2 + 2 A L'), at most the cruise
-// speed) with their braking distances. feed and accel_rate are the cruise speed and the
-// acceleration in the caller's units (steps per `unit` clocks: per second with unit the
-// clock in Hz, per clock with unit 1); accel the ACCEL register's value.
+// 2^kSpeedFrac, also their limit): their lengths, and exits at the cruise speed (the
+// last one's 0: it ends at vmin) lowered by limit_exits.
 std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uint32_t cruise, std::uint32_t vmin,
-                                    std::uint64_t accel, double feed, double accel_rate, double unit);
+                                    std::uint64_t accel);
 
 class Pacer {
  public:

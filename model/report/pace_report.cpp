@@ -51,11 +51,10 @@ double trapezoid_seconds(double length, double feed, double accel, double vmin) 
 namespace {
 
 // The entries the driver writes: the feed as cruise speed and limit (motion::pace_entries).
-std::vector<PaceEntry> entries_of(const Plan& plan, const PaceOptions& o, std::uint32_t cruise, std::uint32_t vmin,
-                                  std::uint64_t accel) {
+std::vector<PaceEntry> entries_of(const Plan& plan, std::uint32_t cruise, std::uint32_t vmin, std::uint64_t accel) {
   std::vector<Command> cmds;
   for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
-  return motion::pace_entries(cmds, cruise, vmin, accel, o.feed, o.accel, o.clock_hz);
+  return motion::pace_entries(cmds, cruise, vmin, accel);
 }
 
 // The run's state between clocks.
@@ -209,7 +208,7 @@ PaceResult pace_plan(const Plan& plan, const PaceOptions& o, const PaceHooks& ho
     if (hooks.entries->size() != plan.pieces.size()) throw GuardError("pace: one entry per piece");
     r.entries = *hooks.entries;
   } else {
-    r.entries = entries_of(plan, o, cruise, r.set.vmin, r.set.accel);
+    r.entries = entries_of(plan, cruise, r.set.vmin, r.set.accel);
   }
   std::uint64_t clock = 0;
   // Far beyond any run at these speeds: a run that stops short of its end is an error.

@@ -111,28 +111,36 @@ std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const P
   entries.reserve(pp.segments.size());
   for (std::size_t k = 0; k < pp.segments.size(); ++k)
     entries.push_back(pace_entry(pp.segments[k], pp.plan.pieces[k], s));
-  limit_exits(entries, s);
+  motion::limit_exits(entries, s.vmin, s.accel);
   return entries;
 }
 
-void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {
-  // In steps and steps per clock: the pacer ends a piece at its exit speed, or at VMIN
-  // if that is higher; the last one at VMIN.
+double entries_seconds(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {
+  // In steps, steps per clock and clocks: each piece a trapezoid (or triangle) between
+  // its predecessor's exit and its own, VMIN at least, at ACCEL under its cruise speed.
   const double unit = std::ldexp(1.0, motion::kSpeedFrac);
-  const double accel = double(s.accel) / std::ldexp(1.0, motion::kRampFrac);  // steps/clock^2
-  double after = double(s.vmin) / unit;  // the end speed of the piece after the one at hand
-  for (std::size_t k = entries.size(); k-- > 0;) {
-    motion::PaceEntry& e = entries[k];
-    if (k + 1 < entries.size()) {
-      const double reach = std::floor(after * unit);
-      if (reach < double(e.exit)) {
-        e.exit = std::uint32_t(reach);
-        e.brake_exit = motion::brake_distance(e.exit, s.vmin, s.accel);
-      }
-    }
-    const double end = double(std::max(k + 1 < entries.size() ? e.exit : 0, s.vmin)) / unit;
-    after = std::sqrt(end * end + 2 * accel * double(e.length) / std::ldexp(1.0, motion::kLenFrac));
+  const double accel = double(s.accel) / std::ldexp(1.0, motion::kRampFrac);
+  const double vmin = double(s.vmin) / unit;
+  double clocks = 0, from = vmin;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const motion::PaceEntry& e = entries[k];
+    const double to = std::max(k + 1 < entries.size() ? double(e.exit) / unit : 0, vmin);
+    const double cruise = std::max(double(e.cruise) / unit, vmin);
+    // The pacer ends a ramp down its margin before the piece's end and runs the rest at
+    // the exit speed.
+    const double len = double(e.length) / std::ldexp(1.0, motion::kLenFrac);
+    const double margin = std::min(len, std::ldexp(1.0, -motion::kMarginShift));
+    clocks += ramp_time(len - margin, std::min(from, cruise), std::min(to, cruise), cruise, accel, nullptr) +
+              margin / std::min(to, cruise);
+    from = to;
   }
+  return clocks / s.clock_hz;
+}
+
+double entries_length(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {
+  double steps = 0;
+  for (const motion::PaceEntry& e : entries) steps += double(e.length) / std::ldexp(1.0, motion::kLenFrac);
+  return steps * s.step_mm;
 }
 
 }  // namespace dda::speed

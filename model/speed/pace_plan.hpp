@@ -61,13 +61,19 @@ struct ProgramPacing {
   PaceSetup setup;
   std::vector<motion::PaceEntry> entries;
 };
-// The entries' exit speeds lowered where the pacer's own lengths (the DDA's path, which
-// at a coarse step can be shorter than the programmed one a piece was planned on) leave
-// too little room to slow down to the next pieces' exits: a backward pass from VMIN at
-// the end, as the plan's own but over the entries' lengths.
-void limit_exits(std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
-// Every piece's entry (pace_entry), the exits so lowered.
+// Every piece's entry (pace_entry), the exits lowered by motion::limit_exits where the
+// pacer's own lengths (the DDA's path, which at a coarse step can be shorter than the
+// programmed one a piece was planned on) leave too little room to slow down to the next
+// pieces' exits.
 std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const PaceSetup& s);
+// The time the entries take on their own terms, s: each piece from its predecessor's
+// exit speed to its own (at least VMIN; the first from VMIN, the last to it) at ACCEL
+// under its cruise speed, over the pacer's length, its ramp down ending the pacer's
+// margin (2^-kMarginShift step) early: the plan's profile on the DDA's path with drives
+// that start and stop at VMIN, as the pacer runs it but for its clocks.
+double entries_seconds(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
+// The pieces' path as the pacer counts it (the DDA's), mm.
+double entries_length(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
 ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
                              program::Length step, double clock_hz);
 

@@ -206,8 +206,7 @@ Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
     std::vector<Command> cmds;
     for (const auto& p : batch)
       for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
-    pace = pace_entries(cmds, pc.cruise, pc.vmin, pc.accel, std::ldexp(pc.cruise, -kSpeedFrac),
-                        std::ldexp(pc.accel, -kRampFrac), 1.0);
+    pace = pace_entries(cmds, pc.cruise, pc.vmin, pc.accel);
     slow_some(pace, pc);
   }
   std::size_t k = 0;
