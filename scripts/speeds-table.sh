@@ -7,11 +7,12 @@
 # program_cosim (tb/cosim/program_cosim.cpp): the block's SystemC model and RTL
 # co-simulated with the reference model, clocked 5% over the slowest clock that follows
 # each plan; the block's time, the planned one, and the plan's profile on the DDA's path
-# (the pacer's lengths, the drives starting and stopping at VMIN); the speed monitor on
+# (the pacer's lengths, every rest reached and left at VMIN); the speed monitor on
 # the RTL's pins (path and per axis, each figure the share of its limit), and the
 # pacer's reference model at the same clock (its worst error at cruise against the
-# planned speed, its worst piece end over the planned exit speed). A run over a limit
-# fails and stops the script. Two programs at a time (GNU parallel, one job per core).
+# planned speed, its worst piece end over the exit speed it was given). A run over a
+# limit fails and stops the script. Two programs at a time (GNU parallel, one job per
+# core).
 #   usage: scripts/speeds-table.sh [--write]   (--write puts it into docs/results.md)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -48,14 +48,21 @@ std::uint64_t iteration_distance(const NormOperands& o) {
   return isqrt(qx * qx + qy * qy + qz * qz);
 }
 
-std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel) {
+namespace {
+// brake_distance, not bounded by the entry's field.
+u128 brake_length(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel) {
   if (accel == 0 || v <= vmin) return 0;
   // Speeds v - a, v - 2a, ... while above vmin, one per clock: n v - a n (n + 1) / 2.
   const u128 V = ramp(v);
   const u128 n = (V - ramp(vmin) - 1) / accel;
   const u128 b = n * V - u128(accel) * n * (n + 1) / 2;  // x 2^kRampFrac steps
   const u128 unit = u128(1) << (kRampFrac - kLenFrac);
-  const u128 l = (b + unit - 1) / unit;
+  return (b + unit - 1) / unit;
+}
+}  // namespace
+
+std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t accel) {
+  const u128 l = brake_length(v, vmin, accel);
   if (l > 0xFFFFFFFFu) throw GuardError("pacer: a braking distance longer than an entry holds");
   return std::uint32_t(l);
 }
@@ -92,31 +99,30 @@ std::uint64_t min_iteration_distance(const Command& c) {
 }
 
 std::uint32_t fastest_within(std::uint32_t cap, std::uint64_t budget, std::uint32_t vmin, std::uint64_t accel) {
-  // brake_distance does not fall as the speed rises: bisect for the highest speed.
-  if (brake_distance(cap, vmin, accel) <= budget) return cap;
+  // brake_length does not fall as the speed rises: bisect for the highest speed.
+  if (brake_length(cap, vmin, accel) <= budget) return cap;
   std::uint32_t lo = std::min(vmin, cap), hi = cap;
   while (hi - lo > 1) {
     const std::uint32_t mid = lo + (hi - lo) / 2;
-    (brake_distance(mid, vmin, accel) <= budget ? lo : hi) = mid;
+    (brake_length(mid, vmin, accel) <= budget ? lo : hi) = mid;
   }
   return lo;
 }
 
 void limit_exits(std::vector<PaceEntry>& entries, std::uint32_t vmin, std::uint64_t accel) {
-  if (accel == 0) return;  // no ramp: the speed jumps
   const std::uint64_t margin = std::uint64_t{1} << (kLenFrac - kMarginShift);
-  for (std::size_t k = entries.size(); k-- > 1;) {
-    // The pacer enters piece k at its predecessor's exit and ramps down once its braking
-    // distance and the margin reach what is left of the piece and the braking from its
-    // own exit (none for the last: it ends at VMIN).
-    const PaceEntry& next = entries[k];
-    const std::uint64_t room = std::uint64_t(next.length) + (k + 1 < entries.size() ? next.brake_exit : 0);
-    PaceEntry& e = entries[k - 1];
-    const std::uint32_t exit = room >= margin ? fastest_within(e.exit, room - margin, vmin, accel) : vmin;
-    if (exit < e.exit) {
-      e.exit = exit;
-      e.brake_exit = brake_distance(e.exit, vmin, accel);
+  for (std::size_t k = entries.size(); k-- > 0;) {
+    PaceEntry& e = entries[k];
+    if (k + 1 < entries.size() && accel != 0) {  // (without a ramp the speed jumps)
+      // The pacer enters the next piece at this exit (its phase 0: it takes an entry
+      // only when none runs) and ramps down once its braking distance and the margin
+      // reach what is left of that piece and the braking from its own exit (none for
+      // the last: it ends at VMIN).
+      const PaceEntry& next = entries[k + 1];
+      const std::uint64_t room = std::uint64_t(next.length) + (k + 2 < entries.size() ? next.brake_exit : 0);
+      e.exit = room >= margin ? fastest_within(e.exit, room - margin, vmin, accel) : std::min(e.exit, vmin);
     }
+    e.brake_exit = brake_distance(e.exit, vmin, accel);
   }
 }
 
@@ -128,7 +134,6 @@ std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uin
     e.cruise = e.limit = cruise;
     e.length = pace_length(pieces[i]);
     e.exit = i + 1 < pieces.size() ? cruise : 0;
-    e.brake_exit = brake_distance(e.exit, vmin, accel);
   }
   limit_exits(entries, vmin, accel);
   return entries;

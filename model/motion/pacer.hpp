@@ -85,9 +85,10 @@ std::uint32_t fastest_within(std::uint32_t cap, std::uint64_t budget, std::uint3
 // Lowers exit speeds, backward from the last entry, to what the pacer can slow down from
 // in the piece after: the fastest speed whose brake_distance and the pacer's margin
 // (2^-kMarginShift step) fit the next piece's length and the braking from its own exit
-// (none after the last piece: it ends at vmin); each lowered exit's brake_exit with it.
-// Exits and lengths as the pacer reads them, so the pacer never enters a piece too fast
-// to leave it at its exit. Nothing for accel 0 (the speed jumps).
+// (none after the last piece: it ends at vmin); and sets every entry's brake_exit from
+// its exit. Exits and lengths as the pacer reads them, so the pacer never enters a
+// piece too fast to leave it at its exit. No exit is lowered for accel 0 (the speed
+// jumps). Throws GuardError for an exit whose braking distance the field cannot hold.
 void limit_exits(std::vector<PaceEntry>& entries, std::uint32_t vmin, std::uint64_t accel);
 // The entries a driver writes for pieces run back to back at one cruise speed (x
 // 2^kSpeedFrac, also their limit): their lengths, and exits at the cruise speed (the

@@ -116,23 +116,35 @@ std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const P
 }
 
 double entries_seconds(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s) {
+  if (s.accel == 0 || s.vmin == 0 || !(s.clock_hz > 0)) {
+    throw GuardError("entries_seconds: a setup without ACCEL, VMIN or clock (pace_setup gives them)");
+  }
   // In steps, steps per clock and clocks: each piece a trapezoid (or triangle) between
-  // its predecessor's exit and its own, VMIN at least, at ACCEL under its cruise speed.
+  // its predecessor's exit and its own, VMIN at least, at ACCEL under its cruise speed;
+  // the first from rest (the pacer ramps from 0).
   const double unit = std::ldexp(1.0, motion::kSpeedFrac);
   const double accel = double(s.accel) / std::ldexp(1.0, motion::kRampFrac);
   const double vmin = double(s.vmin) / unit;
-  double clocks = 0, from = vmin;
+  double clocks = 0, from = 0;
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const motion::PaceEntry& e = entries[k];
-    const double to = std::max(k + 1 < entries.size() ? double(e.exit) / unit : 0, vmin);
-    const double cruise = std::max(double(e.cruise) / unit, vmin);
-    // The pacer ends a ramp down its margin before the piece's end and runs the rest at
-    // the exit speed.
     const double len = double(e.length) / std::ldexp(1.0, motion::kLenFrac);
-    const double margin = std::min(len, std::ldexp(1.0, -motion::kMarginShift));
-    clocks += ramp_time(len - margin, std::min(from, cruise), std::min(to, cruise), cruise, accel, nullptr) +
-              margin / std::min(to, cruise);
-    from = to;
+    const double cruise = std::max(double(e.cruise) / unit, vmin);
+    const double v0 = std::min(from, cruise);
+    // At most what a ramp up over the whole piece reaches.
+    const double v1 = std::min({std::max(k + 1 < entries.size() ? double(e.exit) / unit : 0, vmin), cruise,
+                                std::sqrt(v0 * v0 + 2 * accel * len)});
+    double peak = 0;
+    const double whole = ramp_time(len, v0, v1, cruise, accel, &peak);
+    if (peak > v1 * (1 + 1e-12)) {
+      // A ramp down: the pacer ends it its margin before the piece's end and runs the
+      // rest at the exit speed.
+      const double margin = std::min(len, std::ldexp(1.0, -motion::kMarginShift));
+      clocks += ramp_time(len - margin, v0, v1, cruise, accel, nullptr) + margin / v1;
+    } else {
+      clocks += whole;
+    }
+    from = v1;
   }
   return clocks / s.clock_hz;
 }

@@ -67,10 +67,11 @@ struct ProgramPacing {
 // pieces' exits.
 std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const PaceSetup& s);
 // The time the entries take on their own terms, s: each piece from its predecessor's
-// exit speed to its own (at least VMIN; the first from VMIN, the last to it) at ACCEL
-// under its cruise speed, over the pacer's length, its ramp down ending the pacer's
+// exit speed to its own (at least VMIN; the first from rest, the last to VMIN) at
+// ACCEL under its cruise speed, over the pacer's length, a ramp down ending the pacer's
 // margin (2^-kMarginShift step) early: the plan's profile on the DDA's path with drives
-// that start and stop at VMIN, as the pacer runs it but for its clocks.
+// that stop at VMIN, as the pacer runs it but for its clocks. GuardError for a setup
+// without ACCEL, VMIN or a clock.
 double entries_seconds(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
 // The pieces' path as the pacer counts it (the DDA's), mm.
 double entries_length(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);

@@ -93,10 +93,9 @@ void run_one(motion::MotionCosim& h, std::istream& in, const std::string& name, 
                ref.worst_cruise_error, ref.worst_junction_excess);
   } else {
     fmt::print(
-        "program_cosim: {}: {} pieces, {} cycles at {:.0f} Hz ({:.3f} s; planned motion {:.3f} s, {:.3f} s on the "
-        "DDA's "
-        "path, {:.4f} of the programmed one, from and to VMIN), SystemC model, RTL "
-        "and reference model equal at every edge, at its end point; at the RTL's pins (of the limits): path speed {}, "
+        "program_cosim: {}: {} pieces, {} cycles at {:.0f} Hz ({:.3f} s; planned motion {:.3f} s; {:.3f} s on the "
+        "DDA's path, {:.4f} of the programmed one, rests at VMIN), SystemC model, RTL and reference model equal at "
+        "every edge, at its end point; at the RTL's pins (of the limits): path speed {}, "
         "acceleration {}; per axis speed {}, acceleration {}; the pacer cruising within {:.4f} of the planned speeds, "
         "ending its {} pieces at most {:.4f} over their exit speeds; 0 violations\n",
         name, pp.plan.pieces.size(), r.cycles, clock, seconds, planned, on_dda, dda_path,

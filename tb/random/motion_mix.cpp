@@ -236,11 +236,11 @@ void Mix::slow_some(std::vector<PaceEntry>& pace, const Pacing& pc) {
     const auto c = std::uint32_t(pc.cruise * u(rng_));
     pace[k].cruise = pace[k].limit = c;
     for (const std::size_t j : {k, k - 1}) {
-      if (j >= pace.size() || pace[j].exit <= c) continue;  // (k - 1 wraps for k = 0)
-      pace[j].exit = c;
-      pace[j].brake_exit = brake_distance(c, pc.vmin, pc.accel);
+      if (j < pace.size()) pace[j].exit = std::min(pace[j].exit, c);  // (k - 1 wraps for k = 0)
     }
   }
+  // The exits before a slowed piece, as low as it needs to be met.
+  limit_exits(pace, pc.vmin, pc.accel);
 }
 
 // Ends a quarter of the batches early (an abort, a reset, an overflow, a hard stop, a
