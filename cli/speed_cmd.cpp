@@ -54,7 +54,7 @@ double positive(const char* name, double v) {
 
 speed::MachineLimits machine_limits(const SpeedCli& s, program::Machine m) {
   speed::MachineLimits l = speed::default_limits(m);
-  if (!s.machine_config.empty()) l = speed::read_machine_config(s.machine_config, l);
+  if (!s.machine_config.empty()) l = speed::read_machine_config(s.machine_config, l, m);
   if (s.accel_opt && s.accel_opt->count()) {
     for (speed::AxisLimits& a : l.axes) a.accel = positive("accel", s.accel);
   }

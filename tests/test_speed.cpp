@@ -207,14 +207,14 @@ TEST_CASE("speed: feed errors name the block and the rule") {
 TEST_CASE("speed: the machine description file, and what it refuses") {
   const MachineLimits l =
       parse_machine_config(R"({"axes": {"x": {"accel_mm_per_s2": 1000}}, "rapid_mm_per_min": 9000, "window": 32})",
-                           "m.json", default_limits(Machine::Mill));
+                           "m.json", default_limits(Machine::Mill), Machine::Mill);
   CHECK(l.axes[0].accel == 1000);
   CHECK(l.axes[0].vmax == 6000);  // kept from the base
   CHECK(l.rapid == 9000);
   CHECK(l.window == 32);
-  const auto refused = [](const std::string& text) {
+  const auto refused = [](const std::string& text, Machine m = Machine::Mill) {
     try {
-      parse_machine_config(text, "m.json", default_limits(Machine::Mill));
+      parse_machine_config(text, "m.json", default_limits(m), m);
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -225,6 +225,10 @@ TEST_CASE("speed: the machine description file, and what it refuses") {
   CHECK_THAT(refused(R"({"axes": {"a": {}}})"), Catch::Contains("unknown axis 'a'"));
   CHECK_THAT(refused(R"({"junction_deviation_mm": -1})"), Catch::Contains("must be positive"));
   CHECK_THAT(refused(R"({"window": 1})"), Catch::Contains("window"));
+  // A lathe's file with a Y axis (one written for a mill) is refused, not half read.
+  CHECK_THAT(refused(R"({"axes": {"y": {"accel_mm_per_s2": 800}}})", Machine::Lathe),
+             Catch::Contains("axes.y: a lathe has no Y axis"));
+  CHECK(refused(R"({"axes": {"x": {"accel_mm_per_s2": 800}, "z": {}}})", Machine::Lathe).empty());
 }
 
 namespace {

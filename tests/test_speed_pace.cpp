@@ -146,3 +146,24 @@ TEST_CASE("speed pace: exit speeds lowered to what the pacer's own lengths can s
   motion::limit_exits(entries, s.vmin, s.accel);
   CHECK(entries[2].exit == s.vmin);
 }
+
+TEST_CASE("speed pace: each block's first piece counts the cut pieces before it") {
+  // feeds.ngc's ellipse is cut for its curvature: the blocks after it start later in
+  // the program's pieces than before the cuts.
+  std::ifstream in(std::string(DDA_EXAMPLES_DIR) + "/feeds.ngc");
+  REQUIRE(in);
+  program::LatticeOptions lattice;
+  lattice.step = 1000;
+  std::size_t pieces = 0, blocks = 0, cut = 0;
+  plan_program_speeds(
+      in, "feeds.ngc", program::ReadOptions{}, lattice, program::kDefaultWindow, default_limits(program::Machine::Mill),
+      [](const BlockSpeeds&) {}, nullptr,
+      [&](const program::BlockPlan& b) {
+        CHECK(b.first_piece == pieces);
+        pieces += b.plan.pieces.size();
+        cut += b.plan.pieces.size() > 1;
+        ++blocks;
+      });
+  CHECK(blocks >= 6);
+  CHECK(cut > 0);
+}

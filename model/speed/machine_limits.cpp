@@ -32,13 +32,16 @@ double number(const nlohmann::json& v, const std::string& name, const std::strin
   return x;
 }
 
-void read_axes(const nlohmann::json& axes, const std::string& name, MachineLimits& l) {
+void read_axes(const nlohmann::json& axes, const std::string& name, Machine m, MachineLimits& l) {
   if (!axes.is_object()) bad(name, "axes must be an object of x, y, z");
   for (const auto& [axis, v] : axes.items()) {
     const auto it = std::find(kAxisNames.begin(), kAxisNames.end(), axis);
     if (it == kAxisNames.end()) bad(name, "unknown axis '" + axis + "' (the axes are x, y, z)");
+    const std::size_t i = std::size_t(it - kAxisNames.begin());
+    // An axis the machine has not: its limits would be read and never used.
+    if (!has_axis(m, i)) bad(name, "axes." + axis + ": a lathe has no Y axis (its axes are x and z)");
     if (!v.is_object()) bad(name, "axes." + axis + " must be an object");
-    AxisLimits& a = l.axes[std::size_t(it - kAxisNames.begin())];
+    AxisLimits& a = l.axes[i];
     for (const auto& [key, x] : v.items()) {
       const std::string where = "axes." + axis + "." + key;
       if (key == "vmax_mm_per_min") {
@@ -66,7 +69,7 @@ MachineLimits default_limits(Machine m) {
   return l;
 }
 
-MachineLimits parse_machine_config(const std::string& text, const std::string& name, MachineLimits l) {
+MachineLimits parse_machine_config(const std::string& text, const std::string& name, MachineLimits l, Machine m) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
@@ -76,7 +79,7 @@ MachineLimits parse_machine_config(const std::string& text, const std::string& n
   if (!j.is_object()) bad(name, "the file must hold one JSON object");
   for (const auto& [key, v] : j.items()) {
     if (key == "axes") {
-      read_axes(v, name, l);
+      read_axes(v, name, m, l);
     } else if (key == "rapid_mm_per_min") {
       l.rapid = number(v, name, key);
     } else if (key == "junction_deviation_mm") {
@@ -100,13 +103,13 @@ MachineLimits parse_machine_config(const std::string& text, const std::string& n
   return l;
 }
 
-MachineLimits read_machine_config(const std::string& path, MachineLimits base) {
+MachineLimits read_machine_config(const std::string& path, MachineLimits base, Machine m) {
   std::ifstream in(path);
   if (!in) bad(path, "cannot read it");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) bad(path, "cannot read it");
-  return parse_machine_config(text.str(), path, base);
+  return parse_machine_config(text.str(), path, base, m);
 }
 
 void check(const MachineLimits& l, Machine m) {

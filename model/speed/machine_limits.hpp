@@ -40,12 +40,14 @@ struct MachineLimits {
 // rapids at 4000).
 MachineLimits default_limits(program::Machine m);
 
-// Reads a machine description (JSON, docs/programs.md) over `base`: every key it gives
-// replaces that value. Throws InputError naming the file and the key for an unreadable
-// file, bad JSON, an unknown key or a value out of its range.
-MachineLimits read_machine_config(const std::string& path, MachineLimits base);
+// Reads a machine description (JSON, docs/programs.md) of machine m over `base`: every
+// key it gives replaces that value. Throws InputError naming the file and the key for an
+// unreadable file, bad JSON, an unknown key, an axis m has not (Y on a lathe) or a value
+// out of its range.
+MachineLimits read_machine_config(const std::string& path, MachineLimits base, program::Machine m);
 // The same from the file's text.
-MachineLimits parse_machine_config(const std::string& text, const std::string& name, MachineLimits base);
+MachineLimits parse_machine_config(const std::string& text, const std::string& name, MachineLimits base,
+                                   program::Machine m);
 
 // Refuses (InputError naming the value and the rule) limits the planner cannot use:
 // every axis the machine has with a positive vmax and accel, the rapid rate, the

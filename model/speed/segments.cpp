@@ -299,6 +299,7 @@ void SegmentBuilder::cut(const program::BlockPlan& b, const Piece& pc, const Seg
 
 std::vector<Segment> SegmentBuilder::block(program::BlockPlan& b, std::size_t index) {
   const Move& mv = b.move;
+  b.first_piece = pieces_;
   rest_ = rest_ || mv.stop || mv.dwell > 0;
   std::vector<Segment> whole;
   whole.reserve(b.plan.pieces.size());
@@ -313,6 +314,7 @@ std::vector<Segment> SegmentBuilder::block(program::BlockPlan& b, std::size_t in
   std::vector<Segment> out;
   for (std::size_t k = 0; k < whole.size(); ++k) cut(b, b.plan.pieces[k], whole[k], feed, pieces, out);
   b.plan.pieces = std::move(pieces);
+  pieces_ += b.plan.pieces.size();
   const double tol = double(mv.path_tolerance) / double(program::kNmPerMm);
   for (Segment& s : out) {
     s.feed = feed;

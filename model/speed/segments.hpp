@@ -44,7 +44,8 @@ class SegmentBuilder {
   // A curved piece whose curvature holds its speed below the feed is cut where that
   // limit changes by more than 4%, at steps of its run (the parts' commands are the
   // datapath's registers there: the path is the same, step for step): b's pieces are
-  // replaced by the parts, one segment each.
+  // replaced by the parts, one segment each, and its first_piece counts the parts of the
+  // blocks before it.
   std::vector<Segment> block(program::BlockPlan& b, std::size_t index);
 
  private:
@@ -54,7 +55,8 @@ class SegmentBuilder {
   PlannerLimits plim_;
   program::Length step_;
   std::string file_;
-  bool rest_ = true;  // the next piece starts at rest
+  bool rest_ = true;        // the next piece starts at rest
+  std::size_t pieces_ = 0;  // the pieces of the blocks so far, after the cuts
 };
 
 }  // namespace dda::speed
