@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "motion/feed.hpp"
+#include "motion/io_scenarios.hpp"
 #include "motion/motion_bus.hpp"
 #include "motion_harness.hpp"
 #include "vectors.hpp"
@@ -23,11 +24,19 @@ namespace dda::vec {
 
 namespace {
 
+// The last member: the bench's register the field drives (tb/hdl/dda_bus_tb.v).
 std::vector<Field> bus_input_fields() {
-  return {{"rst_ni", 1, "reset, active low", ""},      {"ce_i", 1, "iteration enable", ""},
-          {"wb_cyc_i", 1, "Wishbone cycle", ""},       {"wb_stb_i", 1, "Wishbone strobe", ""},
-          {"wb_we_i", 1, "Wishbone write enable", ""}, {"wb_adr_i", motion::kAddrWidth, "Wishbone byte address", ""},
-          {"wb_dat_i", 32, "Wishbone write data", ""}};
+  return {{"rst_ni", 1, "reset, active low", "rst_n"},
+          {"ce_i", 1, "iteration enable", "ce"},
+          {"wb_cyc_i", 1, "Wishbone cycle", "cyc"},
+          {"wb_stb_i", 1, "Wishbone strobe", "stb"},
+          {"wb_we_i", 1, "Wishbone write enable", "we"},
+          {"wb_adr_i", motion::kAddrWidth, "Wishbone byte address", "adr"},
+          {"wb_dat_i", 32, "Wishbone write data", "dat_i"},
+          {"estop_ni", 1, "E-stop pin, active low", "estop_n"},
+          {"limit_i", 6, "limit pins {z+, z-, y+, y-, x+, x-}", "limit"},
+          {"home_i", 3, "home pins {z, y, x}", "home"},
+          {"probe_i", 1, "probe pin", "probe"}};
 }
 
 std::vector<Field> bus_expect_fields() {
@@ -60,6 +69,11 @@ std::string bus_verilog_fields() {
        "// per-cycle layout of `dda vectors --bus` (docs/vectors.md). Do not edit: ctest\n"
        "// vectors.bus.fields_in_sync checks it.\n";
   s << "`define DDA_BVEC_IN_WIDTH " << total_width(bus_input_fields()) << "\n";
+  // The bench's registers, in the input word's order (most significant first).
+  const auto inf = bus_input_fields();
+  s << "`define DDA_BVEC_UNPACK(v) {";
+  for (std::size_t i = 0; i < inf.size(); ++i) s << (i ? ", " : "") << inf[i].verilog;
+  s << "} = v\n";
   s << "`define DDA_BVEC_EXP_WIDTH " << w << "\n";
   s << "`define DDA_BVEC_GOT {";
   for (std::size_t i = 0; i < ef.size(); ++i) s << (i ? ", " : "") << ef[i].verilog;
@@ -95,6 +109,11 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
                       "with --bus: feed in steps per second along the path (needs --clock)");
   vectors->add_option("--clock", c.clock_hz, "with --bus --feed-rate: the block's clock in Hz");
   add_bus_pace_options(vectors, c);
+  std::string names;
+  for (const auto& s : motion::kIoScenarios) names += (names.empty() ? "" : ", ") + std::string(s.name);
+  vectors->add_option(
+      "--io-scenario", c.io_scenario,
+      "with --bus, instead of an arc: a scenario of the machine's inputs on a simulated machine (" + names + ")");
 }
 
 namespace {
@@ -133,6 +152,14 @@ BusOptions bus_options(const BusCli& c) {
     return BusOptions{};
   }
   BusOptions b;
+  if (!c.io_scenario.empty()) {
+    if (!motion::find_io_scenario(c.io_scenario))
+      throw InputError("--io-scenario '" + c.io_scenario + "': no such scenario (--help lists them)");
+    if (any || c.planned)
+      throw InputError("--io-scenario runs its own moves and settings: give it with --bus, --out-dir, --vcd alone");
+    b.io_scenario = c.io_scenario;
+    return b;
+  }
   b.pipelined = c.pipelined;
   b.abort_after = c.abort_after;
   if (!c.timing.empty()) b.timing_x = b.timing_y = b.timing_z = parse_timing("--timing", c.timing);
@@ -207,6 +234,16 @@ void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& 
 }
 
 namespace {
+// The set's work: the plans, or the machine-input scenario with every check it makes (a
+// scenario that fails one writes no set).
+void drive_set(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
+  if (bus.io_scenario.empty()) return drive(t, plans, opt, bus);
+  const motion::IoScenario& s = *motion::find_io_scenario(bus.io_scenario);
+  s.run(t, motion::Expect([&](bool ok, const std::string& what) {
+          if (!ok) throw GuardError("the " + std::string(s.name) + " scenario failed a check: " + what);
+        }));
+}
+
 // The manifest's record of how the set was made (docs/vectors.md).
 nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, std::uint64_t ncycles) {
   nlohmann::ordered_json j;
@@ -237,6 +274,10 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
     j["planned_speeds"] = {
         {"accel", bus.planned_accel}, {"vmin", bus.planned_vmin}, {"entries", bus.planned_entries.size()}};
   }
+  if (!bus.io_scenario.empty()) {
+    j["io_scenario"] = bus.io_scenario;
+    return j;
+  }
   j["scenario"] = {{"override", bus.override_},  {"override_at", bus.override_at},   {"hold_at", bus.hold_at},
                    {"resume_at", bus.resume_at}, {"soft_stop_at", bus.soft_stop_at}, {"watchdog", bus.watchdog}};
   return j;
@@ -244,7 +285,7 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
 }  // namespace
 
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
-  if (plans.empty()) throw InputError("vectors need at least one arc");
+  if (plans.empty() && bus.io_scenario.empty()) throw InputError("vectors need at least one arc");
   // The per-cycle files stream into the set's temporary directory; every line of them
   // has the same length, so the count of cycles is the size: past --max-size the run
   // stops, and the temporary directory goes with the error (the target is untouched).
@@ -269,19 +310,21 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
     }
     const motion::BlockOutputs o = m.outputs();
     const auto& r = m.regs();
-    in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat}) << '\n';
+    in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat,
+                             in.pins.estop_n, in.pins.limit, in.pins.home, in.pins.probe})
+           << '\n';
     exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.step_z, o.dir_z, o.busy,
                               o.irq, r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("pos_z_q")],
                               r[motion::breg("level_q")], r[motion::breg("done_count_q")]})
             << '\n';
     ++ncycles;
   };
-  drive(t, plans, opt, bus);
+  drive_set(t, plans, opt, bus);
   if (!bus.vcd.empty()) {
     // The RTL through the same cycles (the master decides from the outputs, equal to the
     // model's edge by edge: the harness checks every edge), writing its waveform.
     motion::MotionHarness h(bus.vcd);
-    drive(h, plans, opt, bus);
+    drive_set(h, plans, opt, bus);
   }
 
   nlohmann::ordered_json j = bus_manifest(opt, bus, ncycles);

@@ -35,10 +35,11 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt);
 
 // dda vectors --bus: the motion block's per-cycle set (cli/bus_vectors.cpp).
 struct BusOptions {
-  bool pipelined = false;  // Wishbone cycles: classic or pipelined
-  int idle_percent = 20;   // chance of an idle cycle before each request (seeded)
-  int abort_after = 0;     // > 0: abort that many cycles after the last commit
-  std::string vcd;         // non-empty: also run the RTL through the same cycles, this waveform
+  bool pipelined = false;   // Wishbone cycles: classic or pipelined
+  int idle_percent = 20;    // chance of an idle cycle before each request (seeded)
+  int abort_after = 0;      // > 0: abort that many cycles after the last commit
+  std::string vcd;          // non-empty: also run the RTL through the same cycles, this waveform
+  std::string io_scenario;  // non-empty: this machine-input scenario (motion::kIoScenarios), not the plans
   motion::StageTimings timing_x, timing_y, timing_z;  // the step/dir stages' timings (cycles)
   std::uint32_t polarity = 0;                         // POLARITY
   std::uint32_t feed = 0;                             // every piece's feed increment (0: full rate) ...
@@ -73,6 +74,8 @@ struct BusCli {
   // The run is a program at its planned speeds: --clock alone, --accel in mm/s^2 (the
   // planner's), --feed-rate and --vmin refused.
   bool planned = false;
+  // A machine-input scenario (motion::kIoScenarios) instead of the arc.
+  std::string io_scenario;
   bool scenario() const;  // any of the pacing and scenario options given
 };
 // The pacing and scenario options (cli/bus_pace.cpp): added to `dda vectors`, checked

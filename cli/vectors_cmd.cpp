@@ -102,7 +102,12 @@ void run_vectors(const VectorsCli& v, int argc, char** argv) {
   }
   const vec::Options vo = vector_options(v, argc, argv);
   if (v.speed.wanted()) return run_planned_vectors(v, vo);
-  const std::vector<Plan> plans = vector_plans(v);
+  if (!v.bus.io_scenario.empty()) {
+    if (!v.bus.bus) throw InputError("--io-scenario goes with --bus");
+    if (!v.arc.a.empty() || !v.arc.b.empty() || v.arc.line || !v.then.empty() || !v.arc.prog.file.empty())
+      throw InputError("--io-scenario runs its own moves: give no arc, --line, --then or --program");
+  }
+  const std::vector<Plan> plans = v.bus.io_scenario.empty() ? vector_plans(v) : std::vector<Plan>{};
   if (v.bus.bus) {
     vec::BusOptions bo = vec::bus_options(v.bus);
     AtomicFile wave(v.arc.vcd);  // the RTL run beside the set: written only on success

@@ -38,8 +38,8 @@ VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& s
   const VerilatedScope* s = ctx.scopeFind(scope.c_str());
   if (!s) throw GuardError("motion sampler: no scope " + scope);
   for (const auto& r : kBlockRegs) {
-    // "u_sx.step_q": a register of a submodule, in the submodule's scope.
-    const std::size_t dot = r.name.find('.');
+    // "u_sx.step_q", "u_io.u_estop.s1_q": a register of a submodule, in its scope.
+    const std::size_t dot = r.name.rfind('.');
     const VerilatedScope* rs = s;
     if (dot != std::string_view::npos) {
       const std::string sub = scope + "." + std::string(r.name.substr(0, dot));
@@ -98,6 +98,7 @@ MotionHarness::MotionHarness(const std::string& vcd)
   top_->clk_i = 0;
   top_->rst_ni = 0;
   top_->ce_i = 0;
+  top_->estop_ni = 1;
   top_->wb_cyc_i = top_->wb_stb_i = top_->wb_we_i = 0;
   top_->eval();
   sampler_ = std::make_unique<VlBlockSampler>(*ctx_, kTop, kHarnessDepthLog2);
@@ -112,9 +113,13 @@ MotionHarness::~MotionHarness() {
 }
 
 void MotionHarness::tick(const BusIn& bus) {
-  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus, pins_);
   top_->rst_ni = rst_n_;
   top_->ce_i = ce_;
+  top_->estop_ni = pins_.estop_n;
+  top_->limit_i = pins_.limit;
+  top_->home_i = pins_.home;
+  top_->probe_i = pins_.probe;
   top_->wb_cyc_i = bus.cyc;
   top_->wb_stb_i = bus.stb;
   top_->wb_we_i = bus.we;

@@ -56,6 +56,8 @@ class MotionHarness : public BusTarget {
   // Inputs of the next edge besides the bus (which the master drives).
   void set_reset(bool rst_n) override { rst_n_ = rst_n; }
   void set_ce(bool ce) override { ce_ = ce; }
+  void set_pins(const MachinePins& pins) override { pins_ = pins; }
+  const MachinePins& pins() const override { return pins_; }
   // One edge of both: the RTL and the model; then compares them and throws GuardError
   // naming the cycle and the first signal that differs.
   void tick(const BusIn& bus) override;
@@ -72,6 +74,7 @@ class MotionHarness : public BusTarget {
   MotionModel model_;
   StepDirChecker timing_;
   BlockOutputs out_;
+  MachinePins pins_;
   bool rst_n_ = true, ce_ = true;
   std::uint64_t cycle_ = 0;
 };

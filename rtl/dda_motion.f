@@ -5,4 +5,6 @@
 $(DDA_RTL)/dda_stepdir.v
 $(DDA_RTL)/dda_norm.v
 $(DDA_RTL)/dda_pace.v
+$(DDA_RTL)/dda_input.v
+$(DDA_RTL)/dda_motion_io.v
 $(DDA_RTL)/dda_motion.v

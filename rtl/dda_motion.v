@@ -34,6 +34,12 @@
 // pieces ramp to rest, others stop) and, once at rest with no step on its way to the
 // pins, flushes as an abort does. The watchdog (WATCHDOG: a timeout in clocks, 0 off)
 // restarts on every write to it.
+// Machine inputs (docs/design.md, "Machine inputs"; rtl/dda_motion_io.v, u_io): the
+// E-stop stops as a hard stop does, and keeps stopping every edge until CTRL.clear once
+// released; a step toward an active limit stops as a hard or a soft stop (IN_MODE); a
+// home input in homing mode and the armed probe (with IN_MODE.probe_stop) stop as a soft
+// stop. CTRL.snapshot latches the positions, the queue level, DONE_COUNT and the cycle
+// counter of one clock.
 // Axes (docs/design.md, "Step and direction timing"): each core step goes through a
 // step/dir stage (rtl/dda_stepdir.v) with the axis' four timings; the position counters
 // count the pulses the stages start. Pace: an entry with a cruise speed (its pacing
@@ -63,6 +69,11 @@ module dda_motion #(
   output wire                              wb_stall_o,
   // iteration enable of the core (high: one iteration per clock)
   input  wire                              ce_i,
+  // the machine's inputs (asynchronous: each is synchronized and filtered)
+  input  wire                              estop_ni,  // E-stop, active low (IN_POLARITY inverts)
+  input  wire [5:0]                        limit_i,   // limits {z+, z-, y+, y-, x+, x-}
+  input  wire [2:0]                        home_i,    // home switches {z, y, x}
+  input  wire                              probe_i,   // touch probe
   // the axes
   output wire                              step_x_o,
   output wire                              step_y_o,
@@ -104,7 +115,10 @@ module dda_motion #(
   wire hard_stop = wr_ctrl & wsel[`DDA_MOTION_CTRL_HARD_STOP_LSB];
   wire soft_stop = wr_ctrl & wsel[`DDA_MOTION_CTRL_SOFT_STOP_LSB];
   wire soft_flush;  // a soft stop at rest with no step on its way: its flush
-  wire abort     = (wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB]) | hard_stop | soft_flush;
+  // The machine's inputs (u_io): stop on this edge (E-stop, a limit), start a soft stop
+  // (a limit, a home input, the probe), an error cause, the probe latched, a home stop.
+  wire io_hard, io_soft, io_err, io_probe, io_home;
+  wire abort     = (wr_ctrl & wsel[`DDA_MOTION_CTRL_ABORT_LSB]) | hard_stop | soft_flush | io_hard;
   wire clear     = wr_ctrl & wsel[`DDA_MOTION_CTRL_CLEAR_LSB];
   wire hold_set  = wr_ctrl & wsel[`DDA_MOTION_CTRL_HOLD_LSB];
   wire hold_clr  = wr_ctrl & wsel[`DDA_MOTION_CTRL_RESUME_LSB];
@@ -112,7 +126,7 @@ module dda_motion #(
   wire in_entry  = adr >= `DDA_MOTION_ENTRY_ADDR && {1'b0, adr} < EntryEnd;
   wire [`DDA_MOTION_ADDR_WIDTH-1:0] entry_off = adr - `DDA_MOTION_ENTRY_ADDR;
   wire [4:0] word = entry_off[6:2];  // the window holds at most 32 words
-  wire unused_off = &{1'b0, entry_off[`DDA_MOTION_ADDR_WIDTH-1], entry_off[1:0]};
+  wire unused_off = &{1'b0, entry_off[`DDA_MOTION_ADDR_WIDTH-1:7], entry_off[1:0]};
 
   // ---- queue ----
   reg  [DepthLog2-1:0] head_q  /* verilator public_flat_rd */;
@@ -307,7 +321,7 @@ module dda_motion #(
       wd_q       <= '0;
       wd_cnt_q   <= '0;
     end else begin
-      stopping_q <= ~abort & (stopping_q | soft_stop | bite);
+      stopping_q <= ~abort & (stopping_q | soft_stop | bite | io_soft);
       if (wr_wd) begin
         wd_q     <= wdat;
         wd_cnt_q <= wdat;
@@ -353,26 +367,26 @@ module dda_motion #(
   reg [TW-1:0] dirsetup_z_q  /* verilator public_flat_rd */;
   reg [TW-1:0] dirhold_z_q   /* verilator public_flat_rd */;
   reg [5:0]    polarity_q    /* verilator public_flat_rd */;  // {dir_z, step_z, dir_y, step_y, dir_x, step_x}
-  wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left, sx_busy;
-  wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left, sy_busy;
-  wire sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left, sz_busy;
+  wire sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left, sx_busy, sx_pend, sx_pdir;
+  wire sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left, sy_busy, sy_pend, sy_pdir;
+  wire sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left, sz_busy, sz_pend, sz_pdir;
   dda_stepdir #(.TW(TW)) u_sx (
     .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[0]), .dir_i(r_dir[0]), .tag_i(core_done),
     .steplen_i(steplen_x_q), .stepspace_i(stepspace_x_q), .dirsetup_i(dirsetup_x_q), .dirhold_i(dirhold_x_q),
     .step_o(sx_step), .dir_o(sx_dir), .hold_o(sx_hold), .rise_o(sx_rise), .rise_dir_o(sx_rise_dir), .wait_o(sx_wait),
-    .tag_left_o(sx_tag_left), .busy_o(sx_busy)
+    .tag_left_o(sx_tag_left), .busy_o(sx_busy), .pend_o(sx_pend), .pdir_o(sx_pdir)
   );
   dda_stepdir #(.TW(TW)) u_sy (
     .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[1]), .dir_i(r_dir[1]), .tag_i(core_done),
     .steplen_i(steplen_y_q), .stepspace_i(stepspace_y_q), .dirsetup_i(dirsetup_y_q), .dirhold_i(dirhold_y_q),
     .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .wait_o(sy_wait),
-    .tag_left_o(sy_tag_left), .busy_o(sy_busy)
+    .tag_left_o(sy_tag_left), .busy_o(sy_busy), .pend_o(sy_pend), .pdir_o(sy_pdir)
   );
   dda_stepdir #(.TW(TW)) u_sz (
     .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[2]), .dir_i(r_dir[2]), .tag_i(core_done),
     .steplen_i(steplen_z_q), .stepspace_i(stepspace_z_q), .dirsetup_i(dirsetup_z_q), .dirhold_i(dirhold_z_q),
     .step_o(sz_step), .dir_o(sz_dir), .hold_o(sz_hold), .rise_o(sz_rise), .rise_dir_o(sz_rise_dir), .wait_o(sz_wait),
-    .tag_left_o(sz_tag_left), .busy_o(sz_busy)
+    .tag_left_o(sz_tag_left), .busy_o(sz_busy), .pend_o(sz_pend), .pdir_o(sz_pdir)
   );
   wire wr_step_x = wr & (adr == `DDA_MOTION_STEP_X_ADDR);
   wire wr_dir_x  = wr & (adr == `DDA_MOTION_DIR_X_ADDR);
@@ -444,8 +458,8 @@ module dda_motion #(
   reg        aborted_q      /* verilator public_flat_rd */;
   reg        err_hard_q     /* verilator public_flat_rd */;
   reg        err_watchdog_q /* verilator public_flat_rd */;
-  reg [2:0]  irq_status_q   /* verilator public_flat_rd */;  // {low, err, done}
-  reg [2:0]  irq_enable_q   /* verilator public_flat_rd */;
+  reg [4:0]  irq_status_q   /* verilator public_flat_rd */;  // {home, probe, low, err, done}
+  reg [4:0]  irq_enable_q   /* verilator public_flat_rd */;
   reg [LW-1:0] irq_level_q  /* verilator public_flat_rd */;
   reg [31:0] done_count_q   /* verilator public_flat_rd */;
   reg [31:0] err_count_q    /* verilator public_flat_rd */;
@@ -453,7 +467,7 @@ module dda_motion #(
   reg [31:0] pos_y_q        /* verilator public_flat_rd */;
   reg [31:0] pos_z_q        /* verilator public_flat_rd */;
 
-  wire err_set = err_overflow | err_partial | err_lanes | core_err | hard_stop | bite;
+  wire err_set = err_overflow | err_partial | err_lanes | core_err | hard_stop | bite | io_err;
   wire low_set = take & (level_d < irq_level_q);
   // A piece is done when the core has finished it and its last steps have left the
   // stages: DONE_COUNT, IRQ_STATUS.done and the position counters agree. On the core's
@@ -465,7 +479,7 @@ module dda_motion #(
   wire old_done  = done_wait_q & ~tags_left;
   wire new_wait  = core_done & (sx_wait | sy_wait | sz_wait);
   wire new_done  = core_done & ~new_wait;
-  wire [2:0] irq_set = {low_set, err_set, old_done | new_done};
+  wire [4:0] irq_set = {io_home, io_probe, low_set, err_set, old_done | new_done};
   // The pulses the stages start on this edge: +1, -1 or 0.
   wire [31:0] dx = sx_rise ? (sx_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
   wire [31:0] dy = sy_rise ? (sy_rise_dir ? 32'hFFFF_FFFF : 32'd1) : 32'd0;
@@ -503,9 +517,9 @@ module dda_motion #(
       aborted_q      <= (aborted_q & ~clear) | abort;
       err_hard_q     <= (err_hard_q & ~clear) | hard_stop;
       err_watchdog_q <= (err_watchdog_q & ~clear) | bite;
-      irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wsel[2:0] : 3'b000))
+      irq_status_q   <= (irq_status_q & ~((wr && adr == `DDA_MOTION_IRQ_STATUS_ADDR) ? wsel[4:0] : 5'b00000))
                         | irq_set;
-      if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wdat[2:0];
+      if (wr && adr == `DDA_MOTION_IRQ_ENABLE_ADDR) irq_enable_q <= wdat[4:0];
       if (wr && adr == `DDA_MOTION_IRQ_LEVEL_ADDR) irq_level_q <= wdat[LW-1:0];
       done_count_q <= done_count_q + {31'd0, old_done} + {31'd0, new_done};
       done_wait_q  <= ~abort & (new_wait | (done_wait_q & tags_left));
@@ -518,6 +532,43 @@ module dda_motion #(
     end
   end
   assign irq_o = |(irq_status_q & irq_enable_q);
+
+  // ---- the machine's inputs, the latches and the snapshot ----
+  wire        err_estop, err_limit, probe_armed, probed;
+  wire [31:0] io_rd;
+  dda_motion_io #(.LW(LW)) u_io (
+    .clk_i        (clk_i),
+    .rst_ni       (rst_ni),
+    .estop_ni     (estop_ni),
+    .limit_i      (limit_i),
+    .home_i       (home_i),
+    .probe_i      (probe_i),
+    .wr_i         (wr),
+    .adr_i        (adr),
+    .wdat_i       (wdat),
+    .clear_i      (clear),
+    .snapshot_i   (wr_ctrl & wsel[`DDA_MOTION_CTRL_SNAPSHOT_LSB]),
+    .probe_arm_i  (wr_ctrl & wsel[`DDA_MOTION_CTRL_PROBE_ARM_LSB]),
+    .pos_x_i      (pos_x_q),
+    .pos_y_i      (pos_y_q),
+    .pos_z_i      (pos_z_q),
+    .level_i      (level_q),
+    .done_count_i (done_count_q),
+    .step_i       (r_step),
+    .dir_i        (r_dir),
+    .pend_i       ({sz_pend, sy_pend, sx_pend}),
+    .pdir_i       ({sz_pdir, sy_pdir, sx_pdir}),
+    .hard_o       (io_hard),
+    .soft_o       (io_soft),
+    .err_o        (io_err),
+    .probe_o      (io_probe),
+    .home_o       (io_home),
+    .err_estop_o  (err_estop),
+    .err_limit_o  (err_limit),
+    .probe_armed_o(probe_armed),
+    .probed_o     (probed),
+    .rd_o         (io_rd)
+  );
 
   // ---- read data ----
   always @(*) begin
@@ -547,10 +598,14 @@ module dda_motion #(
         rd[`DDA_MOTION_STATUS_STOPPING_LSB]     = stopping_q;
         rd[`DDA_MOTION_STATUS_ERR_HARD_STOP_LSB] = err_hard_q;
         rd[`DDA_MOTION_STATUS_ERR_WATCHDOG_LSB] = err_watchdog_q;
+        rd[`DDA_MOTION_STATUS_ERR_ESTOP_LSB]    = err_estop;
+        rd[`DDA_MOTION_STATUS_ERR_LIMIT_LSB]    = err_limit;
+        rd[`DDA_MOTION_STATUS_PROBE_ARMED_LSB]  = probe_armed;
+        rd[`DDA_MOTION_STATUS_PROBED_LSB]       = probed;
         rd[`DDA_MOTION_STATUS_LEVEL_LSB+:`DDA_MOTION_STATUS_LEVEL_WIDTH] = level_q;
       end
-      `DDA_MOTION_IRQ_STATUS_ADDR: rd[2:0] = irq_status_q;
-      `DDA_MOTION_IRQ_ENABLE_ADDR: rd[2:0] = irq_enable_q;
+      `DDA_MOTION_IRQ_STATUS_ADDR: rd[4:0] = irq_status_q;
+      `DDA_MOTION_IRQ_ENABLE_ADDR: rd[4:0] = irq_enable_q;
       `DDA_MOTION_IRQ_LEVEL_ADDR:  rd[LW-1:0] = irq_level_q;
       `DDA_MOTION_DONE_COUNT_ADDR: rd = done_count_q;
       `DDA_MOTION_ERR_COUNT_ADDR:  rd = err_count_q;
@@ -587,7 +642,7 @@ module dda_motion #(
       `DDA_MOTION_VMIN_ADDR:     rd = vmin_q;
       `DDA_MOTION_OVERRIDE_ADDR: rd[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0] = override_q;
       `DDA_MOTION_WATCHDOG_ADDR: rd = wd_q;
-      default: rd = 32'd0;
+      default: rd = io_rd;  // the machine's inputs, the latches, the snapshot (0 elsewhere)
     endcase
   end
 

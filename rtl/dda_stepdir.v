@@ -15,8 +15,9 @@
 // the next one (the next edge's rise, computed from this edge's next state), so no step
 // is dropped, merged or reordered and the core is not held when the timings allow its
 // pace. rise_o marks the edge on which a pulse starts (the block counts the position
-// there, in the direction rise_dir_o). flush_i (abort) empties the buffer; a pulse
-// already out finishes its steplen. tag_i (the core's done_o) marks the step waiting
+// there, in the direction rise_dir_o). flush_i (abort) empties the buffer: the step
+// waiting in it does not start, a pulse already out finishes its steplen. pend_o and
+// pdir_o show the waiting step (the block stops a step toward an active limit). tag_i (the core's done_o) marks the step waiting
 // after this edge, if any, as the finished piece's last: tag_left_o is high while it
 // waits (the block counts the piece done once no tagged step waits).
 `include "dda_assert.vh"
@@ -41,7 +42,9 @@ module dda_stepdir #(
   output wire          rise_dir_o,  // its direction
   output wire          wait_o,      // a step waits after this edge
   output wire          tag_left_o,  // a finished piece's last step still waits after this edge
-  output wire          busy_o       // a core step arrives, a step waits or a pulse is out
+  output wire          busy_o,      // a core step arrives, a step waits or a pulse is out
+  output wire          pend_o,      // a step waits in this cycle
+  output wire          pdir_o       // its direction
 );
 
   reg          step_q /* verilator public_flat_rd */;  // the step output
@@ -79,7 +82,7 @@ module dda_stepdir #(
   wire dir_ok = step_q ? (fall & hold0) : tf_ge_hold;
   wire change = pend_q & (pdir_q != dir_q) & dir_ok;
   wire dir_d  = change ? pdir_q : dir_q;
-  wire rise   = pend_q & ~step_q & tf_ge_space & (dir_d == pdir_q) & (change ? setup0 : ts_ge_setup);
+  wire rise   = pend_q & ~step_q & tf_ge_space & (dir_d == pdir_q) & (change ? setup0 : ts_ge_setup) & ~flush_i;
 
   // The next state, and whether a step waiting then leaves on the next edge.
   wire          step_d = rise | (step_q & ~fall);
@@ -121,6 +124,8 @@ module dda_stepdir #(
   assign rise_o     = rise;
   assign rise_dir_o = pdir_q;
   assign busy_o     = step_i | pend_q | step_q;
+  assign pend_o     = pend_q;
+  assign pdir_o     = pdir_q;
 
 `ifndef SYNTHESIS
   // Assertions (rtl/dda_assert.vh): the block stops the core in time (a core step never

@@ -143,6 +143,13 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
+# The machine-input scenarios (model/motion/io_scenarios.hpp, label io): the block on a
+# simulated machine, its input pins in the set.
+foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches)
+  string(REPLACE "-" "_" _name "io_${_scn}")
+  dda_bus_vec_set(${_name} --io-scenario ${_scn})
+  set_property(TEST vectors.bus.gen_${_name} vectors.bus.${_name} APPEND PROPERTY LABELS io)
+endforeach()
 dda_bus_vec_set(paper_macro --program ${PROJECT_SOURCE_DIR}/examples/lathe-paper-macro.ngc --machine lathe
                 --start 60,5 --feed-increment 2621440000 --seed 17)
 set_property(TEST vectors.gen_paper_macro vectors.paper_macro vectors.bus.gen_paper_macro vectors.bus.paper_macro

@@ -11,7 +11,7 @@
 namespace dda::motion {
 
 void ModelTarget::tick(const BusIn& bus) {
-  const BlockInputs in = block_inputs(rst_n_, ce_, bus);
+  const BlockInputs in = block_inputs(rst_n_, ce_, bus, pins_);
   model_.edge(in);
   out_ = model_.outputs();
   if (on_edge) on_edge(in, model_);
@@ -153,11 +153,45 @@ void MotionDriver::set_override(std::uint32_t value) { m_.write(reg_offset("OVER
 void MotionDriver::hold() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "hold")); }
 void MotionDriver::resume() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "resume")); }
 
-Point MotionDriver::position() {
-  const auto x = std::int32_t(m_.read(reg_offset("POS_X")));
-  const auto y = std::int32_t(m_.read(reg_offset("POS_Y")));
-  const auto z = std::int32_t(m_.read(reg_offset("POS_Z")));
-  return Point{x, y, z};
+void MotionDriver::clear() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "clear")); }
+void MotionDriver::arm_probe() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "probe_arm")); }
+
+void MotionDriver::set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe,
+                              std::uint32_t mode) {
+  const std::uint32_t fmax = (1u << kFilterWidth) - 1;
+  if (polarity >> kNumInputs || filter_switches > fmax || filter_probe > fmax || mode >> 5)
+    throw GuardError("motion driver: an input setting out of range");
+  m_.write(reg_offset("IN_POLARITY"), polarity);
+  m_.write(reg_offset("IN_FILTER"), filter_switches << field_of("IN_FILTER", "switches").lsb |
+                                        filter_probe << field_of("IN_FILTER", "probe").lsb);
+  m_.write(reg_offset("IN_MODE"), mode);
 }
+
+MotionDriver::Snapshot MotionDriver::snapshot() {
+  m_.write(reg_offset("CTRL"), field_bit("CTRL", "snapshot"));
+  Snapshot s;
+  s.pos = positions("SNAP");
+  s.cycle = m_.read(reg_offset("SNAP_CYCLE"));
+  s.level = m_.read(reg_offset("SNAP_LEVEL"));
+  s.done = m_.read(reg_offset("SNAP_DONE"));
+  return s;
+}
+
+Point MotionDriver::positions(std::string_view prefix) {
+  const auto at = [&](const char* axis) { return std::int32_t(m_.read(reg_offset(std::string(prefix) + axis))); };
+  return Point{at("_X"), at("_Y"), at("_Z")};
+}
+
+void MotionDriver::wait_rest(int max_polls) {
+  for (int i = 0; i < max_polls; ++i) {
+    const std::uint32_t st = m_.read(reg_offset("STATUS"));
+    if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st) && !get_field("STATUS", "stopping", st))
+      return;
+    m_.idle(int(rng_() % 16));
+  }
+  throw GuardError("motion driver: the block did not come to rest");
+}
+
+Point MotionDriver::position() { return positions("POS"); }
 
 }  // namespace dda::motion

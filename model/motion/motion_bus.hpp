@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <random>
+#include <string_view>
 #include <vector>
 
 #include "motion/motion_model.hpp"
@@ -22,6 +23,10 @@ class BusTarget {
   virtual ~BusTarget() = default;
   virtual void set_reset(bool rst_n) = 0;
   virtual void set_ce(bool ce) = 0;
+  // The machine's input pins from the next edge on.
+  virtual void set_pins(const MachinePins& pins) = 0;
+  // The pins as last set.
+  virtual const MachinePins& pins() const = 0;
   // One rising edge with these bus inputs.
   virtual void tick(const BusIn& bus) = 0;
   // The outputs after the last edge.
@@ -31,12 +36,31 @@ class BusTarget {
   virtual const MotionModel& model() const = 0;
 };
 
+// A target between the bus master and another target that passes everything through to
+// it: the monitors and the simulated machine below override what they watch or drive.
+class BusTap : public BusTarget {
+ public:
+  explicit BusTap(BusTarget& inner) : t_(inner) {}
+  void set_reset(bool rst_n) override { t_.set_reset(rst_n); }
+  void set_ce(bool ce) override { t_.set_ce(ce); }
+  void set_pins(const MachinePins& pins) override { t_.set_pins(pins); }
+  const MachinePins& pins() const override { return t_.pins(); }
+  void tick(const BusIn& bus) override { t_.tick(bus); }
+  const BlockOutputs& outputs() const override { return t_.outputs(); }
+  const MotionModel& model() const override { return t_.model(); }
+
+ protected:
+  BusTarget& t_;
+};
+
 // The reference model alone; `on_edge` sees every edge's inputs and the state after it.
 class ModelTarget : public BusTarget {
  public:
   explicit ModelTarget(int depth_log2 = kMaxDepthLog2) : model_(depth_log2) {}
   void set_reset(bool rst_n) override { rst_n_ = rst_n; }
   void set_ce(bool ce) override { ce_ = ce; }
+  void set_pins(const MachinePins& pins) override { pins_ = pins; }
+  const MachinePins& pins() const override { return pins_; }
   void tick(const BusIn& bus) override;
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
@@ -45,6 +69,7 @@ class ModelTarget : public BusTarget {
  private:
   MotionModel model_;
   BlockOutputs out_;
+  MachinePins pins_;
   bool rst_n_ = true, ce_ = true;
 };
 
@@ -54,14 +79,11 @@ class ModelTarget : public BusTarget {
 // an ERR_COUNT change (a planner's command that stalled) or a piece finished with no
 // end point expected is an error too. flush() forgets the expectations (after an abort
 // or a reset). Throws GuardError naming the piece and both positions.
-class PieceMonitor : public BusTarget {
+class PieceMonitor : public BusTap {
  public:
-  explicit PieceMonitor(BusTarget& inner) : t_(inner) {}
+  explicit PieceMonitor(BusTarget& inner) : BusTap(inner) {}
   void set_reset(bool rst_n) override;
-  void set_ce(bool ce) override { t_.set_ce(ce); }
   void tick(const BusIn& bus) override;
-  const BlockOutputs& outputs() const override { return t_.outputs(); }
-  const MotionModel& model() const override { return t_.model(); }
   void expect(Point end) { ends_.push_back(end); }
   void flush() {
     ends_.clear();
@@ -70,7 +92,6 @@ class PieceMonitor : public BusTarget {
   std::uint64_t checked() const { return checked_; }
 
  private:
-  BusTarget& t_;
   std::vector<Point> ends_;  // front: the next piece to finish
   std::size_t next_ = 0;
   std::uint64_t done_ = 0, err_ = 0, checked_ = 0;
@@ -82,15 +103,11 @@ class PieceMonitor : public BusTarget {
 // GuardError at the first window over its limits. It watches from its construction with
 // limits, or between watch() (the machine at rest) and unwatch() (before a stop the
 // limits do not hold for, such as an abort).
-class SpeedWatch : public BusTarget {
+class SpeedWatch : public BusTap {
  public:
-  explicit SpeedWatch(BusTarget& inner) : t_(inner) {}
-  SpeedWatch(BusTarget& inner, const MotionLimits& limits) : t_(inner) { watch(limits); }
-  void set_reset(bool rst_n) override { t_.set_reset(rst_n); }
-  void set_ce(bool ce) override { t_.set_ce(ce); }
+  explicit SpeedWatch(BusTarget& inner) : BusTap(inner) {}
+  SpeedWatch(BusTarget& inner, const MotionLimits& limits) : BusTap(inner) { watch(limits); }
   void tick(const BusIn& bus) override;
-  const BlockOutputs& outputs() const override { return t_.outputs(); }
-  const MotionModel& model() const override { return t_.model(); }
   // A new monitor from here on (the one before, if any, is dropped).
   void watch(const MotionLimits& limits) { mon_.emplace(limits); }
   void unwatch() { mon_.reset(); }
@@ -98,7 +115,6 @@ class SpeedWatch : public BusTarget {
   const SpeedMonitor& monitor() const { return mon_.value(); }
 
  private:
-  BusTarget& t_;
   std::optional<SpeedMonitor> mon_;
 };
 
@@ -153,6 +169,28 @@ class MotionDriver {
   void set_override(std::uint32_t value);
   void hold();
   void resume();
+  // A register by name.
+  std::uint32_t read(std::string_view reg) { return m_.read(reg_offset(reg)); }
+  void write(std::string_view reg, std::uint32_t value) { m_.write(reg_offset(reg), value); }
+  // CTRL.clear: the sticky errors, their causes and TRIP.
+  void clear();
+  // The machine's inputs: IN_POLARITY (a bit per input, kInputs), IN_FILTER's clocks for
+  // the switches and the probe, IN_MODE.
+  void set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe,
+                  std::uint32_t mode);
+  // CTRL.probe_arm.
+  void arm_probe();
+  // CTRL.snapshot, then SNAP_*: one clock's positions, cycle counter, level and count.
+  struct Snapshot {
+    Point pos;
+    std::uint32_t cycle = 0, level = 0, done = 0;
+  };
+  Snapshot snapshot();
+  // Three position registers (prefix "LATCH", "PROBE" or "SNAP": _X, _Y, _Z).
+  Point positions(std::string_view prefix);
+  // Until the block is at rest: the queue empty, the core idle, no soft stop running;
+  // throws GuardError after max_polls.
+  void wait_rest(int max_polls = 1000000);
 
  private:
   WishboneMaster& m_;

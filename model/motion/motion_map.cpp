@@ -44,8 +44,15 @@ std::string constants_comment() {
 }  // namespace
 
 Map map() {
-  return Map{std::vector<Register>(kRegisters.begin(), kRegisters.end()),
-             std::vector<Field>(kFields.begin(), kFields.end())};
+  Map m{std::vector<Register>(kRegisters.begin(), kRegisters.end()),
+        std::vector<Field>(kFields.begin(), kFields.end())};
+  // INPUTS, IN_POLARITY and TRIP: a bit per input (kInputs), TRIP's without the probe.
+  for (const auto& in : kInputs) m.fields.push_back(Field{"INPUTS", in.name, in.bit, 1, in.meaning});
+  for (const auto& in : kInputs) m.fields.push_back(Field{"IN_POLARITY", in.name, in.bit, 1, in.pin});
+  for (const auto& in : kInputs) {
+    if (in.bit < kTripBits) m.fields.push_back(Field{"TRIP", in.name, in.bit, 1, in.meaning});
+  }
+  return m;
 }
 
 void check(const Map& m) {

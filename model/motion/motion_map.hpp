@@ -27,7 +27,7 @@
 namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
-inline constexpr int kVersionMajor = 4;
+inline constexpr int kVersionMajor = 5;
 inline constexpr int kVersionMinor = 0;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
@@ -40,9 +40,9 @@ inline constexpr std::array<std::string_view, 5> kPaceFields{{"cruise", "limit",
 inline constexpr int kPaceWords = int(kPaceFields.size());
 inline constexpr int kPaceWord = kCmdEntryWords;
 inline constexpr int kEntryWords = kCmdEntryWords + kPaceWords;
-inline constexpr int kAddrWidth = 8;          // byte address bits the block decodes
-inline constexpr unsigned kEntryBase = 0x80;  // ENTRY0; ENTRYk at kEntryBase + 4k
-inline constexpr int kLevelWidth = 8;         // queue level: 0 .. 128 entries
+inline constexpr int kAddrWidth = 9;           // byte address bits the block decodes
+inline constexpr unsigned kEntryBase = 0x100;  // ENTRY0; ENTRYk at kEntryBase + 4k
+inline constexpr int kLevelWidth = 8;          // queue level: 0 .. 128 entries
 inline constexpr int kMaxDepthLog2 = kLevelWidth - 1;
 // The queue holds an entry in kEntryRows rows of the block RAM (kRowWords words each,
 // two 16-bit lanes per word): the HX8K's 32 block RAMs are 16 bits wide at most, too few
@@ -80,6 +80,39 @@ struct TimingField {
 inline constexpr std::array<TimingField, 4> kTimingFields{
     {{"STEP", "steplen"}, {"STEP", "stepspace"}, {"DIR", "dirsetup"}, {"DIR", "dirhold"}}};
 static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
+// The machine's inputs (docs/design.md, "Machine inputs"), bit `bit` of INPUTS,
+// IN_POLARITY and TRIP (the probe is not a trip: TRIP's bits end below it). Each goes
+// through a two-flip-flop synchronizer and a glitch filter (a level must hold IN_FILTER's
+// clocks) in rtl/dda_input.v, instance `inst` of rtl/dda_motion_io.v; a bit set in
+// IN_POLARITY inverts the pin's default sense (estop_ni is active low, the others high).
+struct Input {
+  std::string_view name;
+  int bit;
+  std::string_view pin, inst, meaning;
+};
+inline constexpr std::array<Input, 11> kInputs{{
+    {"estop", 0, "estop_ni", "u_estop", "E-stop"},
+    {"limit_x_neg", 1, "limit_i[0]", "u_lxn", "X limit, negative end"},
+    {"limit_x_pos", 2, "limit_i[1]", "u_lxp", "X limit, positive end"},
+    {"limit_y_neg", 3, "limit_i[2]", "u_lyn", "Y limit, negative end"},
+    {"limit_y_pos", 4, "limit_i[3]", "u_lyp", "Y limit, positive end"},
+    {"limit_z_neg", 5, "limit_i[4]", "u_lzn", "Z limit, negative end"},
+    {"limit_z_pos", 6, "limit_i[5]", "u_lzp", "Z limit, positive end"},
+    {"home_x", 7, "home_i[0]", "u_hx", "X home switch"},
+    {"home_y", 8, "home_i[1]", "u_hy", "Y home switch"},
+    {"home_z", 9, "home_i[2]", "u_hz", "Z home switch"},
+    {"probe", 10, "probe_i", "u_probe", "touch probe"},
+}};
+inline constexpr int kNumInputs = int(kInputs.size());
+inline constexpr int kTripBits = kNumInputs - 1;  // TRIP: every input but the probe
+inline constexpr int kLimitBit = 1, kHomeBit = 7, kProbeBit = 10;
+inline constexpr int kFilterWidth = 16;  // IN_FILTER's fields: clocks a level must hold
+constexpr int input_bit(std::string_view name) {
+  for (const auto& i : kInputs) {
+    if (i.name == name) return i.bit;
+  }
+  throw "motion_map: no such input";
+}
 
 enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
 
@@ -89,7 +122,7 @@ struct Register {
   Access access;
   std::string_view meaning;
 };
-inline constexpr std::array<Register, 26> kRegisters{{
+inline constexpr std::array<Register, 43> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
     {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths"},
@@ -115,6 +148,23 @@ inline constexpr std::array<Register, 26> kRegisters{{
     {"VMIN", 0x58, Access::RW, "the pacer's minimum speed"},
     {"OVERRIDE", 0x5C, Access::RW, "feed override of the paced pieces (reset: 100%)"},
     {"WATCHDOG", 0x60, Access::RW, "the watchdog's timeout; every write restarts it"},
+    {"INPUTS", 0x64, Access::RO, "the machine's inputs as filtered, 1: active"},
+    {"IN_POLARITY", 0x68, Access::RW, "a bit set inverts that input's sense (estop_ni: active high)"},
+    {"IN_FILTER", 0x6C, Access::RW, "clocks an input's level must hold before the block sees it"},
+    {"IN_MODE", 0x70, Access::RW, "how the limit, home and probe inputs stop the motion"},
+    {"TRIP", 0x74, Access::RO, "the inputs that stopped the motion since the last clear"},
+    {"LATCH_X", 0x78, Access::RO, "X position at the first trip after TRIP was 0"},
+    {"LATCH_Y", 0x7C, Access::RO, "Y position at the first trip after TRIP was 0"},
+    {"LATCH_Z", 0x80, Access::RO, "Z position at the first trip after TRIP was 0"},
+    {"PROBE_X", 0x84, Access::RO, "X position at the probe's active edge (while armed)"},
+    {"PROBE_Y", 0x88, Access::RO, "Y position at the probe's active edge (while armed)"},
+    {"PROBE_Z", 0x8C, Access::RO, "Z position at the probe's active edge (while armed)"},
+    {"SNAP_X", 0x90, Access::RO, "X position at the last CTRL.snapshot"},
+    {"SNAP_Y", 0x94, Access::RO, "Y position at the last CTRL.snapshot"},
+    {"SNAP_Z", 0x98, Access::RO, "Z position at the last CTRL.snapshot"},
+    {"SNAP_CYCLE", 0x9C, Access::RO, "the free-running cycle counter at the last CTRL.snapshot"},
+    {"SNAP_LEVEL", 0xA0, Access::RO, "the queue level at the last CTRL.snapshot"},
+    {"SNAP_DONE", 0xA4, Access::RO, "DONE_COUNT at the last CTRL.snapshot"},
     {"ENTRY", kEntryBase, Access::WO, "the entry being written, word k at ENTRY + 4k (into the queue's free slot)"},
 }};
 
@@ -125,7 +175,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 66> kFields{{
+inline constexpr std::array<Field, 95> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -144,6 +194,8 @@ inline constexpr std::array<Field, 66> kFields{{
     {"CTRL", "soft_stop", 5, 1,
      "paced pieces ramp to rest at ACCEL (others stop), then, once no step is on its way, a flush as by abort"},
     {"CTRL", "hard_stop", 6, 1, "stop on this edge as by abort, and set STATUS.err_hard_stop"},
+    {"CTRL", "snapshot", 7, 1, "latch the positions, the cycle counter, the queue level and DONE_COUNT (SNAP_*)"},
+    {"CTRL", "probe_arm", 8, 1, "arm the probe: its next active edge latches PROBE_* (clears STATUS.probed)"},
     {"STATUS", "busy", 0, 1, "the core runs a command, or a step is on its way to the pins or a pulse is out"},
     {"STATUS", "empty", 1, 1, "the queue is empty"},
     {"STATUS", "full", 2, 1, "the queue is full"},
@@ -158,13 +210,21 @@ inline constexpr std::array<Field, 66> kFields{{
     {"STATUS", "stopping", 11, 1, "a soft stop (CTRL.soft_stop or the watchdog) ramps down toward its flush"},
     {"STATUS", "err_hard_stop", 12, 1, "cause: a hard stop (CTRL.hard_stop)"},
     {"STATUS", "err_watchdog", 13, 1, "cause: the watchdog ran out (and started a soft stop)"},
+    {"STATUS", "err_estop", 14, 1, "cause: the E-stop input was active (the block stops and stays stopped)"},
+    {"STATUS", "err_limit", 15, 1, "cause: a step toward an active limit input"},
     {"STATUS", "level", 16, kLevelWidth, "entries in the queue (not counting the one the core runs)"},
+    {"STATUS", "probe_armed", 24, 1, "the probe is armed (CTRL.probe_arm) and has not latched yet"},
+    {"STATUS", "probed", 25, 1, "the probe latched PROBE_* since it was last armed"},
     {"IRQ_STATUS", "done", 0, 1, "a command finished"},
     {"IRQ_STATUS", "err", 1, 1, "STATUS.err was set"},
     {"IRQ_STATUS", "low", 2, 1, "a dequeue left fewer than IRQ_LEVEL entries"},
+    {"IRQ_STATUS", "probe", 3, 1, "the armed probe latched PROBE_*"},
+    {"IRQ_STATUS", "home", 4, 1, "a home input in homing mode stopped the motion"},
     {"IRQ_ENABLE", "done", 0, 1, "enable IRQ_STATUS.done"},
     {"IRQ_ENABLE", "err", 1, 1, "enable IRQ_STATUS.err"},
     {"IRQ_ENABLE", "low", 2, 1, "enable IRQ_STATUS.low"},
+    {"IRQ_ENABLE", "probe", 3, 1, "enable IRQ_STATUS.probe"},
+    {"IRQ_ENABLE", "home", 4, 1, "enable IRQ_STATUS.home"},
     {"IRQ_LEVEL", "level", 0, kLevelWidth, "threshold of IRQ_STATUS.low"},
     {"DONE_COUNT", "count", 0, 32, "done pulses"},
     {"ERR_COUNT", "count", 0, 32, "err pulses"},
@@ -197,6 +257,26 @@ inline constexpr std::array<Field, 66> kFields{{
     {"OVERRIDE", "override", 0, kOverrideBits, "x 1/256 (256: 100%); a write above 512 (200%) takes 512"},
     {"WATCHDOG", "clocks", 0, 32,
      "0: off; else a soft stop, STATUS.err_watchdog and IRQ_STATUS.err this many clocks after the last write"},
+    {"IN_FILTER", "switches", 0, kFilterWidth,
+     "the E-stop, limit and home inputs: a level holds this many clocks (0 as 1) before it counts"},
+    {"IN_FILTER", "probe", 16, kFilterWidth, "the probe input: a level holds this many clocks (0 as 1)"},
+    {"IN_MODE", "limit_decel", 0, 1, "0: a step toward an active limit stops as by hard_stop; 1: as by soft_stop"},
+    {"IN_MODE", "home_x", 1, 1, "X homing: the X home input's active edge stops as by soft_stop (IRQ_STATUS.home)"},
+    {"IN_MODE", "home_y", 2, 1, "Y homing: as home_x"},
+    {"IN_MODE", "home_z", 3, 1, "Z homing: as home_x"},
+    {"IN_MODE", "probe_stop", 4, 1, "the armed probe's active edge stops as by soft_stop (G38.2)"},
+    {"LATCH_X", "pos", 0, 32, "two's complement"},
+    {"LATCH_Y", "pos", 0, 32, "two's complement"},
+    {"LATCH_Z", "pos", 0, 32, "two's complement"},
+    {"PROBE_X", "pos", 0, 32, "two's complement"},
+    {"PROBE_Y", "pos", 0, 32, "two's complement"},
+    {"PROBE_Z", "pos", 0, 32, "two's complement"},
+    {"SNAP_X", "pos", 0, 32, "two's complement"},
+    {"SNAP_Y", "pos", 0, 32, "two's complement"},
+    {"SNAP_Z", "pos", 0, 32, "two's complement"},
+    {"SNAP_CYCLE", "cycle", 0, 32, "clock edges since reset, wraps"},
+    {"SNAP_LEVEL", "level", 0, kLevelWidth, "as STATUS.level"},
+    {"SNAP_DONE", "count", 0, 32, "as DONE_COUNT"},
     {"ENTRY", "data", 0, 32,
      "entry word k: command bits 32k .. 32k+31; above the command the axes, then the feed, the pacing fields"},
 }};

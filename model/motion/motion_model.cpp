@@ -9,16 +9,6 @@ namespace dda::motion {
 
 namespace {
 
-// The index of an output port in PortValues (the outputs of kPorts, in order).
-constexpr std::size_t out(std::string_view name) {
-  std::size_t i = 0;
-  for (const auto& p : hw::kPorts) {
-    if (p.name == name) return i;
-    if (p.dir == hw::PortDir::Out) ++i;
-  }
-  throw "motion model: no such output";
-}
-
 std::uint64_t mask_of(int bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1; }
 
 }  // namespace
@@ -76,6 +66,14 @@ int width_bits(Width w, int depth_log2) {
       return kNormBusyWidth;
     case Width::OverrideCount:
       return kOverrideCountWidth;
+    case Width::Five:
+      return 5;
+    case Width::Inputs:
+      return kNumInputs;
+    case Width::Trip:
+      return kTripBits;
+    case Width::Filter:
+      return kFilterWidth;
   }
   return 0;
 }
@@ -156,8 +154,8 @@ bool MotionModel::busy() const {
   // The core runs, or a step is on its way to the pins: the core's step output (it enters
   // a stage on the next edge), a step waiting in a stage, a pulse out.
   const PortValues p = CoreModel::outputs(core_.state(), false);
-  bool b =
-      CoreModel::busy(core_.state()) || p[out("step_x_o")] != 0 || p[out("step_y_o")] != 0 || p[out("step_z_o")] != 0;
+  bool b = CoreModel::busy(core_.state()) || p[core_out("step_x_o")] != 0 || p[core_out("step_y_o")] != 0 ||
+           p[core_out("step_z_o")] != 0;
   for (const char axis : kAxes) b = b || stage(axis).pend || stage(axis).step;
   return b;
 }
@@ -180,7 +178,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
     return bit("busy", busy()) | bit("empty", level == 0) | bit("full", level == depth) | bit("err", get("err_q")) |
            bit("err_overflow", get("err_overflow_q")) | bit("err_partial", get("err_partial_q")) |
            bit("err_stall", get("err_stall_q")) | bit("aborted", get("aborted_q")) |
-           bit("err_lanes", get("err_lanes_q")) | read_pace(adr) |
+           bit("err_lanes", get("err_lanes_q")) | read_pace(adr) | read_io(adr) |
            std::uint32_t(level) << std::uint32_t(field_of("STATUS", "level").lsb);
   }
   if (adr == reg_offset("IRQ_STATUS")) return std::uint32_t(get("irq_status_q"));
@@ -203,7 +201,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
         v |= std::uint32_t(get(std::string(t.name) + "_" + axis + "_q")) << field_of(r, t.name).lsb;
     }
   }
-  return v;
+  return v | read_io(adr);
 }
 
 BlockOutputs MotionModel::outputs() const {
@@ -223,8 +221,9 @@ BlockOutputs MotionModel::outputs() const {
   return o;
 }
 
-MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
+MotionModel::Wires MotionModel::bus_wires(const BusIn& b, const MachinePins& pins) const {
   Wires w;
+  io_wires(pins, w);
   const std::uint64_t depth = std::uint64_t{1} << depth_log2_;
   const std::uint64_t all_words = mask_of(kEntryWords);
   w.adr = b.adr & std::uint32_t(mask_of(kAddrWidth)) & ~3u;
@@ -242,7 +241,10 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
   w.commit = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "commit").lsb)) & 1u);
   w.hard_stop = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "hard_stop").lsb)) & 1u);
   w.soft_stop = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "soft_stop").lsb)) & 1u);
-  w.abort = (wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u)) || w.hard_stop || soft_flush();
+  w.abort = (wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "abort").lsb)) & 1u)) || w.hard_stop ||
+            soft_flush() || w.io_hard;
+  w.snapshot = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "snapshot").lsb)) & 1u);
+  w.probe_arm = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "probe_arm").lsb)) & 1u);
   w.bite = !(w.wr && w.adr == reg_offset("WATCHDOG")) && get("wd_cnt_q") == 1;
   w.clear = wr_ctrl && ((w.wsel >> std::uint32_t(field_of("CTRL", "clear").lsb)) & 1u);
   const bool in_entry = w.adr >= kEntryBase && w.adr < kEntryBase + 4u * kEntryWords;
@@ -265,18 +267,14 @@ MotionModel::Wires MotionModel::bus_wires(const BusIn& b) const {
 void MotionModel::core_wires(bool ce, Wires& w) const {
   // The core's outputs during this cycle (registered): what the stages and counters see.
   const Signals& pre = core_.state();
-  const PortValues po = CoreModel::outputs(pre, false);
   w.core_done = CoreModel::done(pre);
   w.core_err = CoreModel::err(pre);
   w.running = CoreModel::busy(pre);
-  // The core's axes to the stages: stage j takes core axis (j - route) mod 3 (route 3 as 0).
-  const std::array<bool, 3> step{po[out("step_x_o")] != 0, po[out("step_y_o")] != 0, po[out("step_z_o")] != 0};
-  const std::array<bool, 3> dir{po[out("dir_x_o")] != 0, po[out("dir_y_o")] != 0, po[out("dir_z_o")] != 0};
-  const std::size_t route = get("route_q") == 3 ? 0 : std::size_t(get("route_q"));
-  const auto core_axis = [&](std::size_t j) { return (j + 3 - route) % 3; };
-  w.ex = stage_edge(stage('x'), timings('x'), step[core_axis(0)], dir[core_axis(0)], w.core_done, w.abort);
-  w.ey = stage_edge(stage('y'), timings('y'), step[core_axis(1)], dir[core_axis(1)], w.core_done, w.abort);
-  w.ez = stage_edge(stage('z'), timings('z'), step[core_axis(2)], dir[core_axis(2)], w.core_done, w.abort);
+  // The core's axes to the stages (routed).
+  const auto rs = routed_steps();
+  w.ex = stage_edge(stage('x'), timings('x'), rs[0].first, rs[0].second, w.core_done, w.abort);
+  w.ey = stage_edge(stage('y'), timings('y'), rs[1].first, rs[1].second, w.core_done, w.abort);
+  w.ez = stage_edge(stage('z'), timings('z'), rs[2].first, rs[2].second, w.core_done, w.abort);
   // The feed: the core may iterate when no stage holds it and the accumulator carries
   // (a timing written on this edge holds it once: the stages' look-ahead used the old).
   bool wr_timing = false;
@@ -286,7 +284,7 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.advance = ce && !hold;
   const std::uint64_t feed = get("feed_q");
   w.acc_sum = get("acc_q") + feed;
-  w.stepped = step[0] || step[1] || step[2];
+  w.stepped = rs[0].first || rs[1].first || rs[2].first;
   pace_wires(false, w);
   w.core_ce =
       w.pace.running ? w.pace_iterate : w.advance && !halt() && (feed == 0 || ((w.acc_sum >> kFeedWidth) & 1u) != 0);
@@ -345,7 +343,8 @@ void MotionModel::load_queue(const Wires& w) {
 }
 
 void MotionModel::load_status(const Wires& w) {
-  const bool err_set = w.err_overflow || w.err_partial || w.err_lanes || w.core_err || w.hard_stop || w.bite;
+  const bool err_set =
+      w.err_overflow || w.err_partial || w.err_lanes || w.core_err || w.hard_stop || w.bite || w.io_err;
   const bool low_set = w.take && w.level_d < get("irq_level_q");
   // A piece is done once its last steps (tagged on the core's done_o) have left.
   const bool tags_left = w.ex.tag_left || w.ey.tag_left || w.ez.tag_left;
@@ -353,8 +352,9 @@ void MotionModel::load_status(const Wires& w) {
   const bool new_wait = w.core_done && (w.ex.wait || w.ey.wait || w.ez.wait);
   const bool new_done = w.core_done && !new_wait;
   reg("done_wait_q") = !w.abort && (new_wait || (get("done_wait_q") && tags_left));
-  const std::uint64_t irq_set =
-      std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 | std::uint64_t(low_set) << 2;
+  const std::uint64_t irq_set = std::uint64_t(old_done || new_done) | std::uint64_t(err_set) << 1 |
+                                std::uint64_t(low_set) << 2 | std::uint64_t(w.io_probe) << 3 |
+                                std::uint64_t(w.io_home) << 4;
   // Sticky bits: a cause on the edge of a clear stays set.
   reg("err_q") = (get("err_q") && !w.clear) || err_set;
   reg("err_overflow_q") = (get("err_overflow_q") && !w.clear) || w.err_overflow;
@@ -364,9 +364,9 @@ void MotionModel::load_status(const Wires& w) {
   reg("aborted_q") = (get("aborted_q") && !w.clear) || w.abort;
   reg("err_hard_q") = (get("err_hard_q") && !w.clear) || w.hard_stop;
   reg("err_watchdog_q") = (get("err_watchdog_q") && !w.clear) || w.bite;
-  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (w.wsel & 7u) : 0;
-  reg("irq_status_q") = (get("irq_status_q") & ~w1c & 7u) | irq_set;
-  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = w.wdat & 7u;
+  const std::uint64_t w1c = w.wr && w.adr == reg_offset("IRQ_STATUS") ? (w.wsel & 0x1Fu) : 0;
+  reg("irq_status_q") = (get("irq_status_q") & ~w1c & 0x1Fu) | irq_set;
+  if (w.wr && w.adr == reg_offset("IRQ_ENABLE")) reg("irq_enable_q") = w.wdat & 0x1Fu;
   if (w.wr && w.adr == reg_offset("IRQ_LEVEL")) reg("irq_level_q") = w.wdat & mask_of(kLevelWidth);
   reg("done_count_q") = (get("done_count_q") + old_done + new_done) & 0xFFFFFFFFu;
   reg("err_count_q") = (get("err_count_q") + w.core_err) & 0xFFFFFFFFu;
@@ -417,7 +417,7 @@ void MotionModel::load_settings(const Wires& w) {
 void MotionModel::edge(const BlockInputs& in) {
   // Every wire first, from the registers before the edge; then the core's edge, the
   // RAM's write and the block's registers, in that order.
-  Wires w = bus_wires(in.bus);
+  Wires w = bus_wires(in.bus, in.pins);
   core_wires(in.ce, w);
   step_core(in.rst_n, w);
 
@@ -433,6 +433,7 @@ void MotionModel::edge(const BlockInputs& in) {
     return;
   }
   note_edge(w);
+  load_io(w);  // (first: its latches take the positions, level and count before the edge)
   load_bus(in.bus, w);
   load_queue(w);
   load_status(w);

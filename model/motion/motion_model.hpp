@@ -24,14 +24,38 @@ struct BusIn {
   std::uint32_t adr = 0, dat = 0;
   std::uint8_t sel = 0xF;
 };
+// The machine's input pins (kInputs) as wired: estop_ni high is released.
+struct MachinePins {
+  bool estop_n = true;
+  std::uint8_t limit = 0;  // limit_i: {z+, z-, y+, y-, x+, x-}
+  std::uint8_t home = 0;   // home_i: {z, y, x}
+  bool probe = false;
+  // The pins in INPUTS' bit order (kInputs), as wired (before IN_POLARITY).
+  std::uint32_t bits() const {
+    return std::uint32_t(estop_n) | std::uint32_t(limit & 0x3Fu) << kLimitBit | std::uint32_t(home & 7u) << kHomeBit |
+           std::uint32_t(probe) << kProbeBit;
+  }
+  // The pins of a word in that order.
+  static MachinePins from_bits(std::uint32_t wire) {
+    MachinePins p;
+    p.estop_n = (wire & 1u) != 0;
+    p.limit = std::uint8_t((wire >> kLimitBit) & 0x3Fu);
+    p.home = std::uint8_t((wire >> kHomeBit) & 7u);
+    p.probe = ((wire >> kProbeBit) & 1u) != 0;
+    return p;
+  }
+  bool operator==(const MachinePins& o) const { return bits() == o.bits(); }
+  bool operator!=(const MachinePins& o) const { return !(*this == o); }
+};
 struct BlockInputs {
   bool rst_n = true;
   bool ce = true;
   BusIn bus;
+  MachinePins pins;
 };
 // The inputs of one edge as the block sees them: the address cut to the bits it decodes.
-inline BlockInputs block_inputs(bool rst_n, bool ce, const BusIn& bus) {
-  BlockInputs in{rst_n, ce, bus};
+inline BlockInputs block_inputs(bool rst_n, bool ce, const BusIn& bus, const MachinePins& pins = {}) {
+  BlockInputs in{rst_n, ce, bus, pins};
   in.bus.adr &= (1u << kAddrWidth) - 1;
   return in;
 }
@@ -69,7 +93,11 @@ enum class Width {
   Phase,     // kPhaseBits
   Distance,  // kDistWidth
   NormBusy,
-  OverrideCount
+  OverrideCount,
+  Five,
+  Inputs,  // a bit per machine input (kNumInputs)
+  Trip,    // kTripBits
+  Filter   // kFilterWidth
 };
 struct BlockReg {
   std::string_view name;
@@ -77,8 +105,9 @@ struct BlockReg {
 };
 // Names with a dot are registers of a submodule (u_sx, u_sy, u_sz: the step/dir stages,
 // rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
-// model motion::Pacer holds).
-inline constexpr std::array<BlockReg, 83> kBlockRegs{{
+// model motion::Pacer holds; u_io: the machine's inputs, rtl/dda_motion_io.v, and below
+// it each input's synchronizer and filter, rtl/dda_input.v).
+inline constexpr std::array<BlockReg, 149> kBlockRegs{{
     {"ack_q", Width::One},
     {"dat_q", Width::Word},
     {"head_q", Width::Index},
@@ -91,8 +120,8 @@ inline constexpr std::array<BlockReg, 83> kBlockRegs{{
     {"err_partial_q", Width::One},
     {"err_stall_q", Width::One},
     {"aborted_q", Width::One},
-    {"irq_status_q", Width::Three},
-    {"irq_enable_q", Width::Three},
+    {"irq_status_q", Width::Five},
+    {"irq_enable_q", Width::Five},
     {"irq_level_q", Width::Level},
     {"done_count_q", Width::Word},
     {"done_wait_q", Width::One},
@@ -162,6 +191,72 @@ inline constexpr std::array<BlockReg, 83> kBlockRegs{{
     {"wd_cnt_q", Width::Word},
     {"err_hard_q", Width::One},
     {"err_watchdog_q", Width::One},
+    {"u_io.pol_q", Width::Inputs},
+    {"u_io.filt_sw_q", Width::Filter},
+    {"u_io.filt_probe_q", Width::Filter},
+    {"u_io.mode_q", Width::Five},
+    {"u_io.err_estop_q", Width::One},
+    {"u_io.err_limit_q", Width::One},
+    {"u_io.trip_q", Width::Trip},
+    {"u_io.latch_x_q", Width::Word},
+    {"u_io.latch_y_q", Width::Word},
+    {"u_io.latch_z_q", Width::Word},
+    {"u_io.probe_armed_q", Width::One},
+    {"u_io.probed_q", Width::One},
+    {"u_io.probe_x_q", Width::Word},
+    {"u_io.probe_y_q", Width::Word},
+    {"u_io.probe_z_q", Width::Word},
+    {"u_io.snap_x_q", Width::Word},
+    {"u_io.snap_y_q", Width::Word},
+    {"u_io.snap_z_q", Width::Word},
+    {"u_io.snap_cycle_q", Width::Word},
+    {"u_io.snap_level_q", Width::Level},
+    {"u_io.snap_done_q", Width::Word},
+    {"u_io.cycle_q", Width::Word},
+    {"u_io.u_estop.s1_q", Width::One},
+    {"u_io.u_estop.s2_q", Width::One},
+    {"u_io.u_estop.lvl_q", Width::One},
+    {"u_io.u_estop.cnt_q", Width::Filter},
+    {"u_io.u_lxn.s1_q", Width::One},
+    {"u_io.u_lxn.s2_q", Width::One},
+    {"u_io.u_lxn.lvl_q", Width::One},
+    {"u_io.u_lxn.cnt_q", Width::Filter},
+    {"u_io.u_lxp.s1_q", Width::One},
+    {"u_io.u_lxp.s2_q", Width::One},
+    {"u_io.u_lxp.lvl_q", Width::One},
+    {"u_io.u_lxp.cnt_q", Width::Filter},
+    {"u_io.u_lyn.s1_q", Width::One},
+    {"u_io.u_lyn.s2_q", Width::One},
+    {"u_io.u_lyn.lvl_q", Width::One},
+    {"u_io.u_lyn.cnt_q", Width::Filter},
+    {"u_io.u_lyp.s1_q", Width::One},
+    {"u_io.u_lyp.s2_q", Width::One},
+    {"u_io.u_lyp.lvl_q", Width::One},
+    {"u_io.u_lyp.cnt_q", Width::Filter},
+    {"u_io.u_lzn.s1_q", Width::One},
+    {"u_io.u_lzn.s2_q", Width::One},
+    {"u_io.u_lzn.lvl_q", Width::One},
+    {"u_io.u_lzn.cnt_q", Width::Filter},
+    {"u_io.u_lzp.s1_q", Width::One},
+    {"u_io.u_lzp.s2_q", Width::One},
+    {"u_io.u_lzp.lvl_q", Width::One},
+    {"u_io.u_lzp.cnt_q", Width::Filter},
+    {"u_io.u_hx.s1_q", Width::One},
+    {"u_io.u_hx.s2_q", Width::One},
+    {"u_io.u_hx.lvl_q", Width::One},
+    {"u_io.u_hx.cnt_q", Width::Filter},
+    {"u_io.u_hy.s1_q", Width::One},
+    {"u_io.u_hy.s2_q", Width::One},
+    {"u_io.u_hy.lvl_q", Width::One},
+    {"u_io.u_hy.cnt_q", Width::Filter},
+    {"u_io.u_hz.s1_q", Width::One},
+    {"u_io.u_hz.s2_q", Width::One},
+    {"u_io.u_hz.lvl_q", Width::One},
+    {"u_io.u_hz.cnt_q", Width::Filter},
+    {"u_io.u_probe.s1_q", Width::One},
+    {"u_io.u_probe.s2_q", Width::One},
+    {"u_io.u_probe.lvl_q", Width::One},
+    {"u_io.u_probe.cnt_q", Width::Filter},
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
@@ -183,6 +278,18 @@ struct StageEdge {
   StageRegs next;
 };
 StageRegs stage_reset();
+
+// One machine input (rtl/dda_input.v) for one edge: its registers before the edge, the
+// pin, whether it is inverted, the filter's clocks; next holds them after the edge.
+struct InputRegs {
+  bool s1 = false, s2 = false, lvl = false;
+  std::uint32_t cnt = 0;
+};
+struct InputEdge {
+  bool rise = false;  // the filtered level turns active on this edge
+  InputRegs next;
+};
+InputEdge input_edge(const InputRegs& r, bool pin, bool invert, std::uint32_t filter);
 // The edge-by-edge diagram of docs/design.md ("Step and direction timing"): one stage
 // with steplen 3, stepspace 2, dirsetup 2, dirhold 1, the core stepping + then - as
 // fast as the stage lets it (`dda gen-params --kind stepdir-diagram`).
@@ -222,7 +329,7 @@ class MotionModel {
   // queue; the core's outputs, the stages and the feed), the core's edge, then the
   // registers group by group as rtl/dda_motion.v's always blocks hold them.
   struct Wires;
-  Wires bus_wires(const BusIn& b) const;
+  Wires bus_wires(const BusIn& b, const MachinePins& pins) const;
   void core_wires(bool ce, Wires& w) const;
   void step_core(bool rst_n, const Wires& w);
   void note_edge(const Wires& w);  // took_, core_ce_, iterated_, rise_x_, rise_y_, rise_z_
@@ -241,6 +348,14 @@ class MotionModel {
   bool halt() const;                                 // the pace heads for rest: a feed hold or a soft stop
   bool soft_flush() const;             // a soft stop at rest with no step on its way: its flush on this edge
   void load_watchdog(const Wires& w);  // stopping_q, wd_q, wd_cnt_q
+  // The machine's inputs (motion_io.cpp, rtl/dda_motion_io.v's u_io): the core's steps as
+  // the stages take them this cycle (per stage: step, direction), the inputs' wires (on
+  // the bus decode: the CTRL bits), their registers, their read data and STATUS bits.
+  std::array<std::pair<bool, bool>, 3> routed_steps() const;
+  void io_wires(const MachinePins& pins, Wires& w) const;
+  void load_io(const Wires& w);
+  InputRegs input(std::size_t i) const;
+  std::uint32_t read_io(std::uint32_t adr) const;
 
   int depth_log2_;
   CoreModel core_;

@@ -45,17 +45,13 @@ bool MotionModel::soft_flush() const {
   // step outputs, routed), none waiting in a stage, no pulse out.
   const PortValues p = CoreModel::outputs(core_.state(), false);
   bool busy = false;
-  for (const char* o : {"step_x_o", "step_y_o", "step_z_o"}) {
-    std::size_t k = 0;  // the index among the outputs
-    for (std::size_t i = 0; i < hw::port(o); ++i) k += hw::kPorts[i].dir == hw::PortDir::Out;
-    busy = busy || p[k] != 0;
-  }
+  for (const char* o : {"step_x_o", "step_y_o", "step_z_o"}) busy = busy || p[core_out(o)] != 0;
   for (const char axis : kAxes) busy = busy || stage(axis).pend || stage(axis).step;
   return get("stopping_q") != 0 && pacer_.speed() == 0 && !busy;
 }
 
 void MotionModel::load_watchdog(const Wires& w) {
-  reg("stopping_q") = !w.abort && (get("stopping_q") != 0 || w.soft_stop || w.bite);
+  reg("stopping_q") = !w.abort && (get("stopping_q") != 0 || w.soft_stop || w.bite || w.io_soft);
   if (w.wr && w.adr == reg_offset("WATCHDOG")) {
     reg("wd_q") = w.wdat;
     reg("wd_cnt_q") = w.wdat;

@@ -3,9 +3,21 @@
 // motion_pace.cpp).
 #pragma once
 
+#include "datapath/hw_params.hpp"
 #include "motion/motion_model.hpp"
 
 namespace dda::motion {
+
+// The index of one of the core's output ports in PortValues (the outputs of kPorts, in
+// order).
+constexpr std::size_t core_out(std::string_view name) {
+  std::size_t i = 0;
+  for (const auto& p : hw::kPorts) {
+    if (p.name == name) return i;
+    if (p.dir == hw::PortDir::Out) ++i;
+  }
+  throw "motion model: no such output";
+}
 
 // The combinational side of one edge (the RTL's wires): everything the registers load,
 // decoded from the inputs and the registers before the edge, before anything is written.
@@ -31,6 +43,12 @@ struct MotionModel::Wires {
   std::uint64_t acc_sum = 0;
   // The read data of a bus read in this cycle.
   std::uint32_t rd = 0;
+  // The machine's inputs (motion_io.cpp): each input's edge; the CTRL bits of u_io; the
+  // stops, causes and events of this edge (rtl/dda_motion_io.v's outputs), the trips.
+  std::array<InputEdge, kInputs.size()> in{};
+  bool snapshot = false, probe_arm = false;
+  bool io_hard = false, io_soft = false, io_err = false, io_probe = false, io_home = false, limit_hit = false;
+  std::uint32_t trip_now = 0;
 };
 
 }  // namespace dda::motion

@@ -60,25 +60,21 @@ class StepDirChecker {
   std::uint64_t cycle_ = 0;
 };
 
-class StepDirMonitor : public BusTarget {
+class StepDirMonitor : public BusTap {
  public:
-  explicit StepDirMonitor(BusTarget& inner) : t_(inner) {}
+  explicit StepDirMonitor(BusTarget& inner) : BusTap(inner) {}
   void set_reset(bool rst_n) override {
     rst_n_ = rst_n;
     t_.set_reset(rst_n);
   }
-  void set_ce(bool ce) override { t_.set_ce(ce); }
   void tick(const BusIn& bus) override {
     t_.tick(bus);
     c_.edge(bus, rst_n_, t_.outputs(), t_.model().regs());
   }
-  const BlockOutputs& outputs() const override { return t_.outputs(); }
-  const MotionModel& model() const override { return t_.model(); }
   std::uint64_t pulses(int axis) const { return c_.pulses(axis); }
   const StepDirChecker::Shortest& shortest(int axis) const { return c_.shortest(axis); }
 
  private:
-  BusTarget& t_;
   StepDirChecker c_;
   bool rst_n_ = true;
 };

@@ -30,7 +30,7 @@ StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bo
   const bool change = r.pend && r.pdir != r.dir && dir_ok;
   const bool dir_d = change ? r.pdir : r.dir;
   const std::uint32_t ts_now = change ? 0 : r.ts;
-  const bool rise = r.pend && !r.step && r.tf >= space && dir_d == r.pdir && ts_now >= t.dirsetup;
+  const bool rise = r.pend && !r.step && r.tf >= space && dir_d == r.pdir && ts_now >= t.dirsetup && !flush;
   StageEdge e;
   const bool pend_d = (r.pend && !rise) || step_in;
   e.rise = rise;

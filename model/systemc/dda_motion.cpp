@@ -14,6 +14,7 @@ const std::uint32_t kCtrl = motion::reg_offset("CTRL"), kIrqStatus = motion::reg
                     kPosX = motion::reg_offset("POS_X"), kPosY = motion::reg_offset("POS_Y"),
                     kPosZ = motion::reg_offset("POS_Z");
 const std::string kAxisSuffix[] = {"_X", "_Y", "_Z"};
+constexpr std::uint32_t kAdrMask = ((1u << motion::kAddrWidth) - 1) & ~3u;  // the word address the block decodes
 
 // The bytes of the lanes selected.
 std::uint32_t lane_mask(std::uint32_t sel) {
@@ -60,80 +61,23 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   u_core.norm_cap_z_o(norm_cap_z);
   bind_stages();
   bind_pace();
+  bind_io();
 
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << wb_sel_i << ack_q << dat_q
             << fetch_q << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
             << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir
             << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q
-            << core_ready << pace_iterate << paced_q << feed_hold_q << stopping_q << pace_speed;
+            << core_ready << pace_iterate << paced_q << feed_hold_q << stopping_q << pace_speed << io_hard << io_rd
+            << sx_pend << sy_pend << sz_pend << sx_pdir << sy_pdir << sz_pdir;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
 }
 
-void dda_motion::bind_stages() {
-  struct Stage {
-    dda_stepdir& s;
-    sc_core::sc_signal<bool>&step, &dir, &out_step, &out_dir, &hold, &rise, &rise_dir, &wait, &tag_left, &busy;
-    sc_core::sc_signal<std::uint32_t>&steplen, &stepspace, &dirsetup, &dirhold;
-  };
-  for (Stage t : {Stage{u_sx, step_x, dir_x, sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left,
-                        sx_busy, steplen_x_q, stepspace_x_q, dirsetup_x_q, dirhold_x_q},
-                  Stage{u_sy, step_y, dir_y, sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left,
-                        sy_busy, steplen_y_q, stepspace_y_q, dirsetup_y_q, dirhold_y_q},
-                  Stage{u_sz, step_z, dir_z, sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left,
-                        sz_busy, steplen_z_q, stepspace_z_q, dirsetup_z_q, dirhold_z_q}}) {
-    t.s.clk_i(clk_i);
-    t.s.rst_ni(rst_ni);
-    t.s.flush_i(flush);
-    t.s.step_i(t.step);
-    t.s.dir_i(t.dir);
-    t.s.tag_i(core_done);
-    t.s.steplen_i(t.steplen);
-    t.s.stepspace_i(t.stepspace);
-    t.s.dirsetup_i(t.dirsetup);
-    t.s.dirhold_i(t.dirhold);
-    t.s.step_o(t.out_step);
-    t.s.dir_o(t.out_dir);
-    t.s.hold_o(t.hold);
-    t.s.rise_o(t.rise);
-    t.s.rise_dir_o(t.rise_dir);
-    t.s.wait_o(t.wait);
-    t.s.tag_left_o(t.tag_left);
-    t.s.busy_o(t.busy);
-  }
-}
-
-void dda_motion::bind_pace() {
-  u_pace.clk_i(clk_i);
-  u_pace.rst_ni(core_rst_n);  // the core's reset: a reset or an abort
-  u_pace.advance_i(advance);
-  u_pace.running_i(pace_running);
-  u_pace.take_i(take);
-  u_pace.cruise_i(entry_pace[0]);
-  u_pace.limit_i(entry_pace[1]);
-  u_pace.exit_i(entry_pace[2]);
-  u_pace.length_i(entry_pace[3]);
-  u_pace.brake_exit_i(entry_pace[4]);
-  u_pace.next_queued_i(next_queued);
-  u_pace.accel_i(accel_q);
-  u_pace.vmin_i(vmin_q);
-  u_pace.override_i(override_q);
-  u_pace.hold_i(pace_halt);
-  u_pace.stepped_i(stepped);
-  u_pace.v_x_i(norm_v_x);
-  u_pace.v_y_i(norm_v_y);
-  u_pace.v_z_i(norm_v_z);
-  u_pace.cap_i(norm_cap);
-  u_pace.cap_z_i(norm_cap_z);
-  u_pace.iterate_o(pace_iterate);
-  u_pace.speed_o(pace_speed);
-}
-
 void dda_motion::comb() {
   const bool req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
-  const std::uint32_t adr = wb_adr_i.read() & 0xFCu;
+  const std::uint32_t adr = wb_adr_i.read() & kAdrMask;
   const std::uint32_t wsel = wb_dat_i.read() & lane_mask(wb_sel_i.read());
   const auto ctrl = [&](std::string_view f) {
     return req && wb_we_i.read() && adr == kCtrl && ((wsel >> std::uint32_t(motion::field_of("CTRL", f).lsb)) & 1u);
@@ -141,7 +85,7 @@ void dda_motion::comb() {
   // A soft stop at rest with no step on its way flushes as an abort does.
   const bool soft_flush =
       stopping_q.read() && pace_speed.read() == 0 && !(sx_busy.read() || sy_busy.read() || sz_busy.read());
-  const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush;
+  const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush || io_hard.read();
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
@@ -182,10 +126,14 @@ void dda_motion::comb() {
   const std::array<bool, 3> cd{c_dir_x.read(), c_dir_y.read(), c_dir_z.read()};
   const std::size_t route = route_q.read() == 3 ? 0 : std::size_t(route_q.read());
   const std::array<sc_core::sc_signal<bool>*, 3> st{&step_x, &step_y, &step_z}, di{&dir_x, &dir_y, &dir_z};
+  std::uint32_t r_step = 0, r_dir = 0;
   for (std::size_t j = 0; j < 3; ++j) {
     st[j]->write(cs[(j + 3 - route) % 3]);
     di[j]->write(cd[(j + 3 - route) % 3]);
+    r_step |= std::uint32_t(cs[(j + 3 - route) % 3]) << j;
+    r_dir |= std::uint32_t(cd[(j + 3 - route) % 3]) << j;
   }
+  comb_io(req && wb_we_i.read(), adr, wsel, lane_mask(wb_sel_i.read()), r_step, r_dir);
   irq_o.write((irq_status_q.read() & irq_enable_q.read()) != 0);
 }
 
@@ -209,6 +157,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            bit("err_lanes", err_lanes_q.read()) | bit("holding", feed_hold_q.read() && pace_speed.read() != 0) |
            bit("held", feed_hold_q.read() && pace_speed.read() == 0) | bit("stopping", stopping_q.read()) |
            bit("err_hard_stop", err_hard_q.read()) | bit("err_watchdog", err_watchdog_q.read()) |
+           bit("err_estop", io_err_estop.read()) | bit("err_limit", io_err_limit.read()) |
+           bit("probe_armed", io_probe_armed.read()) | bit("probed", io_probed.read()) |
            level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
@@ -232,7 +182,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
     const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
     if (adr == motion::reg_offset(r)) v |= regs[i]->read() << motion::field_of(r, t.name).lsb;
   }
-  return v;
+  return v | io_rd.read();  // u_io's registers (0 at other addresses)
 }
 
 std::array<sc_core::sc_signal<std::uint32_t>*, 12> dda_motion::timing_regs() const {
@@ -259,7 +209,7 @@ dda_motion::Decode dda_motion::decode() const {
   Decode d;
   d.req = wb_cyc_i.read() && wb_stb_i.read() && !ack_q.read();
   d.wr = d.req && wb_we_i.read();
-  d.adr = wb_adr_i.read() & 0xFCu;
+  d.adr = wb_adr_i.read() & kAdrMask;
   d.dat = wb_dat_i.read();
   const std::uint32_t lanes = lane_mask(wb_sel_i.read());
   d.wsel = d.dat & lanes;
@@ -364,9 +314,10 @@ void dda_motion::seq_status(const Decode& d) {
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
   done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
-  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr || d.hard_stop || d.bite;
+  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr || d.hard_stop || d.bite || io_err.read();
   const bool low_set = d.take && d.level_d < irq_level_q.read();
-  const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2;
+  const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2 |
+                                std::uint32_t(io_probe.read()) << 3 | std::uint32_t(io_home.read()) << 4;
   // Sticky bits: a cause on the edge of a clear stays set.
   err_q.write((err_q.read() && !d.clear) || err_set);
   err_overflow_q.write((err_overflow_q.read() && !d.clear) || d.err_overflow);
@@ -376,9 +327,9 @@ void dda_motion::seq_status(const Decode& d) {
   aborted_q.write((aborted_q.read() && !d.clear) || d.abort);
   err_hard_q.write((err_hard_q.read() && !d.clear) || d.hard_stop);
   err_watchdog_q.write((err_watchdog_q.read() && !d.clear) || d.bite);
-  const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.wsel & 7u) : 0u;
-  irq_status_q.write((irq_status_q.read() & ~w1c & 7u) | irq_set);
-  if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.wdat & 7u);
+  const std::uint32_t w1c = d.wr && d.adr == kIrqStatus ? (d.wsel & 0x1Fu) : 0u;
+  irq_status_q.write((irq_status_q.read() & ~w1c & 0x1Fu) | irq_set);
+  if (d.wr && d.adr == kIrqEnable) irq_enable_q.write(d.wdat & 0x1Fu);
   if (d.wr && d.adr == kIrqLevel) irq_level_q.write(d.wdat & ((1u << motion::kLevelWidth) - 1));
   done_count_q.write(done_count_q.read() + std::uint32_t(old_done) + std::uint32_t(new_done));
   err_count_q.write(err_count_q.read() + cerr);
@@ -436,7 +387,7 @@ void dda_motion::seq_pace_settings(const Decode& d) {
   if (d.wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
   if (d.wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
   // The soft stop runs until its flush; the watchdog counts down from each write.
-  stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite));
+  stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite || io_soft.read()));
   if (d.wr && d.adr == motion::reg_offset("WATCHDOG")) {
     wd_q.write(d.wdat);
     wd_cnt_q.write(d.wdat);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dda_core.hpp"
+#include "dda_motion_io.hpp"
 #include "dda_pace.hpp"
 #include "dda_stepdir.hpp"
 #include "motion/motion_map.hpp"
@@ -26,6 +27,8 @@ SC_MODULE(dda_motion) {
   sc_core::sc_out<std::uint32_t> wb_dat_o;
   sc_core::sc_out<bool> wb_ack_o, wb_stall_o;
   sc_core::sc_in<bool> ce_i;
+  sc_core::sc_in<bool> estop_ni, probe_i;
+  sc_core::sc_in<std::uint32_t> limit_i, home_i;  // limit_i[5:0], home_i[2:0]
   sc_core::sc_out<bool> step_x_o, step_y_o, dir_x_o, dir_y_o, step_z_o, dir_z_o, busy_o, irq_o;
 
   SC_HAS_PROCESS(dda_motion);
@@ -34,6 +37,7 @@ SC_MODULE(dda_motion) {
   dda_core u_core{"u_core"};
   dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"}, u_sz{"u_sz"};
   dda_pace u_pace{"u_pace", hw::kAccWidth};
+  dda_motion_io u_io{"u_io"};
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
   sc_core::sc_signal<bool> ack_q{"ack_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
@@ -78,11 +82,24 @@ SC_MODULE(dda_motion) {
       sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
   sc_core::sc_signal<bool> sz_step{"sz_step"}, sz_dir{"sz_dir"}, sz_hold{"sz_hold"}, sz_rise{"sz_rise"},
       sz_rise_dir{"sz_rise_dir"}, sz_wait{"sz_wait"}, sz_tag_left{"sz_tag_left"}, sz_busy{"sz_busy"};
+  sc_core::sc_signal<bool> sx_pend{"sx_pend"}, sx_pdir{"sx_pdir"}, sy_pend{"sy_pend"}, sy_pdir{"sy_pdir"},
+      sz_pend{"sz_pend"}, sz_pdir{"sz_pdir"};
+  // u_io's wires: its inputs (comb_io) and outputs.
+  sc_core::sc_signal<bool> io_wr{"io_wr"}, io_clear{"io_clear"}, io_snapshot{"io_snapshot"},
+      io_probe_arm{"io_probe_arm"};
+  sc_core::sc_signal<std::uint32_t> io_adr{"io_adr"}, io_wdat{"io_wdat"}, io_step{"io_step"}, io_dir{"io_dir"},
+      io_pend{"io_pend"}, io_pdir{"io_pdir"}, io_rd{"io_rd"};
+  sc_core::sc_signal<bool> io_hard{"io_hard"}, io_soft{"io_soft"}, io_err{"io_err"}, io_probe{"io_probe"},
+      io_home{"io_home"}, io_err_estop{"io_err_estop"}, io_err_limit{"io_err_limit"}, io_probe_armed{"io_probe_armed"},
+      io_probed{"io_probed"};
 
   // The timing registers in motion::kTimingFields' order, X's, Y's then Z's.
   std::array<sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() const;
   void bind_stages();
   void bind_pace();
+  void bind_io();
+  void comb_io(bool wr, std::uint32_t adr, std::uint32_t wsel, std::uint32_t lanes, std::uint32_t r_step,
+               std::uint32_t r_dir);
   void comb();
   void seq();
   std::uint32_t read(std::uint32_t adr) const;

@@ -11,8 +11,8 @@ constexpr std::uint32_t kSat = (1u << motion::kTimingWidth) - 1;
 
 dda_stepdir::dda_stepdir(sc_core::sc_module_name name) : sc_core::sc_module(name) {
   SC_METHOD(comb);
-  sensitive << step_i << dir_i << steplen_i << stepspace_i << dirsetup_i << dirhold_i << step_q << dir_q << pend_q
-            << pdir_q << tf_q << ts_q << tag_q;
+  sensitive << flush_i << step_i << dir_i << steplen_i << stepspace_i << dirsetup_i << dirhold_i << step_q << dir_q
+            << pend_q << pdir_q << tf_q << ts_q << tag_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -28,7 +28,7 @@ dda_stepdir::Wires dda_stepdir::wires() const {
   w.dir_d = w.change ? pdir_q.read() : dir_q.read();
   const std::uint32_t ts_now = w.change ? 0 : ts_q.read();
   w.rise = pend_q.read() && !step_q.read() && tf_q.read() >= space && w.dir_d == pdir_q.read() &&
-           ts_now >= dirsetup_i.read();
+           ts_now >= dirsetup_i.read() && !flush_i.read();
   const std::uint32_t tf = tf_q.read(), ts = ts_q.read();
   w.step_d = w.rise || (step_q.read() && !w.fall);
   w.tf_d = (w.rise || w.fall) ? 1 : tf == kSat ? tf : tf + 1;
@@ -54,6 +54,8 @@ void dda_stepdir::comb() {
   rise_o.write(w.rise);
   rise_dir_o.write(pdir_q.read());
   busy_o.write(step_i.read() || pend_q.read() || step_q.read());
+  pend_o.write(pend_q.read());
+  pdir_o.write(pdir_q.read());
 }
 
 void dda_stepdir::seq() {

@@ -11,7 +11,7 @@ namespace dda::sc {
 SC_MODULE(dda_stepdir) {
   sc_core::sc_in<bool> clk_i, rst_ni, flush_i, step_i, dir_i, tag_i;
   sc_core::sc_in<std::uint32_t> steplen_i, stepspace_i, dirsetup_i, dirhold_i;
-  sc_core::sc_out<bool> step_o, dir_o, hold_o, rise_o, rise_dir_o, wait_o, tag_left_o, busy_o;
+  sc_core::sc_out<bool> step_o, dir_o, hold_o, rise_o, rise_dir_o, wait_o, tag_left_o, busy_o, pend_o, pdir_o;
 
   SC_HAS_PROCESS(dda_stepdir);
   explicit dda_stepdir(sc_core::sc_module_name name);

@@ -35,6 +35,10 @@ void MotionCosim::bind(M& m, Ports& p) {
   m.wb_adr_i(adr_);
   m.wb_dat_i(dat_);
   m.wb_sel_i(sel_);
+  m.estop_ni(estop_n_);
+  m.limit_i(limit_);
+  m.home_i(home_);
+  m.probe_i(probe_);
   m.wb_dat_o(p.dat);
   m.wb_ack_o(p.ack);
   m.wb_stall_o(p.stall);
@@ -84,7 +88,11 @@ BlockRegs MotionCosim::sc_block() const {
 }
 
 void MotionCosim::tick(const BusIn& bus) {
-  const BlockInputs in = block_inputs(rst_n_v_, ce_v_, bus);
+  const BlockInputs in = block_inputs(rst_n_v_, ce_v_, bus, pins_v_);
+  estop_n_.write(pins_v_.estop_n);
+  limit_.write(pins_v_.limit);
+  home_.write(pins_v_.home);
+  probe_.write(pins_v_.probe);
   rst_n_.write(rst_n_v_);
   ce_.write(ce_v_);
   cyc_.write(bus.cyc);

@@ -26,6 +26,8 @@ class MotionCosim : public BusTarget {
   ~MotionCosim() override;
   void set_reset(bool rst_n) override { rst_n_v_ = rst_n; }
   void set_ce(bool ce) override { ce_v_ = ce; }
+  void set_pins(const MachinePins& pins) override { pins_v_ = pins; }
+  const MachinePins& pins() const override { return pins_v_; }
   void tick(const BusIn& bus) override;
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
@@ -67,6 +69,9 @@ class MotionCosim : public BusTarget {
   BlockOutputs out_;
   std::uint64_t cycle_ = 0;
   bool rst_n_v_ = true, ce_v_ = true;  // applied with the next edge's bus inputs
+  MachinePins pins_v_;
+  sc_core::sc_signal<bool> estop_n_{"estop_n"}, probe_{"probe"};
+  sc_core::sc_signal<std::uint32_t> limit_{"limit"}, home_{"home"};
 };
 
 }  // namespace dda::motion

@@ -19,6 +19,9 @@ module dda_bus_tb;
   reg                               cyc = 1'b0, stb = 1'b0, we = 1'b0;
   reg  [`DDA_MOTION_ADDR_WIDTH-1:0] adr = '0;
   reg  [31:0]                       dat_i = 32'd0;
+  reg                               estop_n = 1'b1, probe = 1'b0;
+  reg  [5:0]                        limit = 6'd0;
+  reg  [2:0]                        home = 3'd0;
   wire [31:0]                       dat_o;
   wire                              ack, stall, step_x, step_y, dir_x, dir_y, step_z, dir_z, busy, irq;
 
@@ -35,6 +38,10 @@ module dda_bus_tb;
     .wb_ack_o   (ack),
     .wb_stall_o (stall),
     .ce_i       (ce),
+    .estop_ni   (estop_n),
+    .limit_i    (limit),
+    .home_i     (home),
+    .probe_i    (probe),
     .step_x_o   (step_x),
     .step_y_o   (step_y),
     .dir_x_o    (dir_x),
@@ -65,7 +72,7 @@ module dda_bus_tb;
       r1 = $fscanf(fin, "%h\n", vin);
       r2 = $fscanf(fexp, "%h\n", vexp);
       if (r1 != 1 || r2 != 1) $fatal(1, "dda_bus_tb: the cycle files end before cycle %0d", cyc_n);
-      {rst_n, ce, cyc, stb, we, adr, dat_i} = vin;
+      `DDA_BVEC_UNPACK(vin);
       #4;
       clk = 1'b1;
       #1;

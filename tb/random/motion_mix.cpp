@@ -9,6 +9,7 @@
 
 #include "datapath/errors.hpp"
 #include "dda_random.hpp"
+#include "input_noise.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "planner/planner.hpp"
 
@@ -32,8 +33,12 @@ class Mix {
         speed_(timing_),
         mon_(speed_),
         m_(mon_, seed + 1, pipelined, 20),
-        d_(m_, seed + 2) {
-    m_.each_cycle = [this] { mon_.set_ce(rng_() % 10 != 0); };
+        d_(m_, seed + 2),
+        noise_(mon_, m_, d_, seed + 6) {
+    m_.each_cycle = [this] {
+      mon_.set_ce(rng_() % 10 != 0);
+      noise_.each_cycle();
+    };
   }
   Mix(const Mix&) = delete;
   Mix& operator=(const Mix&) = delete;
@@ -74,12 +79,14 @@ class Mix {
   PieceMonitor mon_;
   WishboneMaster m_;
   MotionDriver d_;
+  InputNoise noise_;  // glitches on the machine's inputs every batch, real trips in some
 };
 
 MixStats Mix::run(std::uint64_t arcs) {
   mon_.set_reset(false);
   m_.idle(2);
   mon_.set_reset(true);
+  noise_.configure(true);
   while (st_.arcs < arcs) {
     ++st_.batches;
     // One to four arcs back to back from a preset position; a twentieth of the batches
@@ -108,6 +115,7 @@ MixStats Mix::run(std::uint64_t arcs) {
   st_.piece_checks = mon_.checked();
   st_.pulses = timing_.pulses(0) + timing_.pulses(1) + timing_.pulses(2);
   st_.pulses_z = timing_.pulses(2);
+  st_.glitches = noise_.glitches();
   return st_;
 }
 
@@ -243,11 +251,11 @@ void Mix::slow_some(std::vector<PaceEntry>& pace, const Pacing& pc) {
   limit_exits(pace, pc.vmin, pc.accel);
 }
 
-// Ends a quarter of the batches early (an abort, a reset, an overflow, a hard stop, a
-// soft stop, the watchdog running out); true if this one was.
+// Ends a third of the batches early (an abort, a reset, an overflow, a hard stop,
+// a soft stop, the watchdog running out, a machine input); true if this one was.
 bool Mix::cut_short(const Plan& first) {
   const unsigned how = unsigned(rng_() % 24);
-  if (how < 4) unwatch_speed();  // an infinite deceleration: no limit holds
+  if (how < 4 || how == 6 || how == 7) unwatch_speed();  // an infinite deceleration: no limit holds
   switch (how) {
     case 0:
       abort_batch();
@@ -266,6 +274,12 @@ bool Mix::cut_short(const Plan& first) {
       return true;
     case 5:
       soft_stop_batch(true);
+      return true;
+    case 6:
+    case 7:
+      noise_.trip();
+      mon_.flush();
+      ++st_.input_trips;
       return true;
     default:
       return false;
@@ -338,13 +352,17 @@ void Mix::reset_batch() {
   mon_.set_reset(false);
   m_.idle(1 + int(rng_() % 3));
   mon_.set_reset(true);
+  noise_.configure(false);
   ++st_.resets;
 }
 
 // Fills the queue past its depth with ce_i low: err_overflow; then aborts.
 void Mix::overflow(const Plan& first) {
   const auto save = m_.each_cycle;
-  m_.each_cycle = [this] { mon_.set_ce(false); };
+  m_.each_cycle = [this] {
+    mon_.set_ce(false);
+    noise_.each_cycle();
+  };
   const std::uint32_t cfg = m_.read(reg_offset("CONFIG"));
   const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", cfg);
   const std::vector<std::uint32_t> w = entry_words(first.pieces.front().cmd);

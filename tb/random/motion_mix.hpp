@@ -11,10 +11,12 @@
 // rate, half of the time); a fifth of the batches are short arcs paced by the pacer instead (a random cruise speed,
 // minimum speed and acceleration, the entries' exit speeds planned over the batch), with an override change and a
 // feed hold and resume while they run; a quarter of the batches are cut short (an abort, a reset, an overflow, a hard
-// stop, a soft stop, the watchdog running out). Every edge passes the timing monitor (StepDirMonitor: the four timings,
-// no step lost or added); every piece that finishes must leave the position counters on its end point (PieceMonitor),
-// and after every batch that ran to its end they must equal the batch's start plus the arcs' moves (throws GuardError
-// otherwise); the target itself checks every edge.
+// stop, a soft stop, the watchdog running out, a machine input: an E-stop, a limit, a home switch in homing mode,
+// the armed probe). Glitches shorter than the input filter fall on random inputs at random cycles throughout, with
+// random input polarity and filters: the block must ignore them. Every edge passes the timing monitor (StepDirMonitor:
+// the four timings, no step lost or added); every piece that finishes must leave the position counters on its end point
+// (PieceMonitor), and after every batch that ran to its end they must equal the batch's start plus the arcs' moves
+// (throws GuardError otherwise); the target itself checks every edge.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +35,7 @@ struct MixStats {
   std::uint64_t hard_stops = 0, soft_stops = 0, watchdogs = 0;   // batches cut short so
   std::uint64_t speed_watched = 0, speed_windows = 0;            // paced batches under the speed monitor, its windows
   double peak_speed_share = 0;                                   // the fastest window over its batch's cruise speed
+  std::uint64_t glitches = 0, input_trips = 0;  // glitches on the machine's inputs; batches an input stopped
 };
 
 // Runs `arcs` random arcs drawn from `seed` (semi-axes up to max_axis).

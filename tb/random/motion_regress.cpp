@@ -46,6 +46,10 @@ int sc_main(int argc, char* argv[]) {
         "%.4f of its batch's cruise speed, 0 speed or acceleration violations\n",
         (unsigned long long)(a.speed_watched + b.speed_watched),
         (unsigned long long)(a.speed_windows + b.speed_windows), std::max(a.peak_speed_share, b.peak_speed_share));
+    std::printf(
+        "motion regression: the machine's inputs: %llu glitches shorter than the filter ignored, %llu batches "
+        "stopped by an input (an E-stop, a limit, a home switch, the probe)\n",
+        (unsigned long long)(a.glitches + b.glitches), (unsigned long long)(a.input_trips + b.input_trips));
   } catch (const std::exception& e) {
     std::cerr << "motion regression: seed " << seed << ": " << e.what() << '\n';
     return 1;
