@@ -35,6 +35,10 @@ variant() {  # variant NAME 'OLD' 'NEW' ['OLD' 'NEW' ...]: a copy of the RTL wit
   echo "$out"
 }
 
+luts_of() {  # luts_of STAT -> "N LUT4s, N flip-flops, N carry cells"
+  awk '$1 == "SB_LUT4" {l += $2} $1 ~ /^SB_DFF/ {f += $2} $1 == "SB_CARRY" {c += $2}
+       END {printf "%d LUT4s, %d flip-flops, %d carry cells", l, f, c}' "$1"
+}
 base=$(luts rtl/dda_motion.v)
 read -r base_l base_f base_c <<< "$base"
 row() {  # row LABEL "LUT4s FFs carries"
@@ -65,6 +69,12 @@ row "read multiplexer replaced by the XOR of the five 32-bit registers" "$noread
 yosys -q -p "read_verilog -sv -Irtl rtl/dda_stepdir.v; synth_ice40 -top dda_stepdir; tee -o $work/stat.txt stat" >/dev/null
 echo
 echo "one step/dir stage alone (rtl/dda_stepdir.v, 12-bit timings): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 ~ /^SB_DFF/ {s += $2} END {print s}' "$work/stat.txt") flip-flops, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"
+# The machine inputs by themselves (rtl/dda_motion_io.v: eleven inputs, the latches, the
+# snapshot, the cycle counter), and one input's synchronizer and filter.
+yosys -q -p "read_verilog -sv -Irtl rtl/dda_input.v rtl/dda_motion_io.v; synth_ice40 -top dda_motion_io; tee -o $work/stat.txt stat" >/dev/null
+echo "the machine inputs alone (rtl/dda_motion_io.v): $(luts_of "$work/stat.txt")"
+yosys -q -p "read_verilog -sv -Irtl rtl/dda_input.v; synth_ice40 -top dda_input; tee -o $work/stat.txt stat" >/dev/null
+echo "one input alone (rtl/dda_input.v, a 16-bit filter): $(luts_of "$work/stat.txt")"
 # One position counter by itself: a 32-bit counter with a preset and a +-1 step.
 cat > "$work/counter.v" <<'EOF'
 module counter (input clk, input rst_ni, input wr, input [31:0] d, input step, input dir, output reg [31:0] q);

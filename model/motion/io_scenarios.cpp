@@ -185,11 +185,11 @@ void home_each_axis(BusTarget& block, const Expect& outer) {
   sw.home = {-900, 700, -400};
   sw.home_positive = {false, true, false};
   sw.active_low = in_bit("home_y");
-  const Point start{-750, 560, -260};
+  const Point start{-840, 640, -340};
   MachineSim t(block, start, sw);
   WishboneMaster m(t, 17, false, 0);
   MotionDriver d(m, 17);
-  d.set_pacing(kAccel, kVmin);
+  d.set_pacing(kAccel << 2, kVmin);  // braking from the search speed: 8 steps
   d.set_inputs(in_bit("home_y"), 3, 1, 0);
   d.preset(Point{5000, -5000, 12});  // the block's count: anything before homing
   const std::array<std::int64_t, 3> home_at{-900, 700, -400};
@@ -199,8 +199,8 @@ void home_each_axis(BusTarget& block, const Expect& outer) {
     HomingParams hp;
     hp.axis = axis;
     hp.positive = sw.home_positive[j];
-    hp.search_steps = 1000;
-    hp.backoff_steps = 12;
+    hp.search_steps = 400;
+    hp.backoff_steps = 8;
     hp.search_speed = kFast;
     hp.latch_speed = kSlow;
     hp.home_position = std::int32_t(10 * (j + 1));
