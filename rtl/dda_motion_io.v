@@ -65,8 +65,8 @@ module dda_motion_io #(
 );
 
   localparam integer FW = `DDA_MOTION_IN_FILTER_SWITCHES_WIDTH;
-  localparam integer NI = 11;  // inputs (model/motion/motion_map.hpp kInputs)
-  localparam integer NT = 10;  // TRIP's bits: every input but the probe
+  localparam integer NI = `DDA_MOTION_INPUTS;     // inputs (model/motion/motion_map.hpp kInputs)
+  localparam integer NT = `DDA_MOTION_TRIP_BITS;  // TRIP's bits: every input but the probe
 
   reg [NI-1:0]  pol_q         /* verilator public_flat_rd */;
   reg [FW-1:0]  filt_sw_q     /* verilator public_flat_rd */;

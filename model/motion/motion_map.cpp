@@ -177,7 +177,8 @@ std::string verilog_header(const Map& m) {
   }
   o += fmt::format("`define DDA_MOTION_OVERRIDE_ONE {}\n`define DDA_MOTION_OVERRIDE_MAX {}\n", kOverrideOne,
                    2 * kOverrideOne);
-  o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n\n", kTimingWidth);
+  o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n", kTimingWidth);
+  o += fmt::format("`define DDA_MOTION_INPUTS {}\n`define DDA_MOTION_TRIP_BITS {}\n\n", kNumInputs, kTripBits);
   for (const auto& r : m.regs) {
     o += fmt::format("`define DDA_MOTION_{}_ADDR {}'h{:02X}  // {}\n", upper(r.name), kAddrWidth, r.offset,
                      access_name(r.access));

@@ -66,10 +66,11 @@ dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
   SC_METHOD(comb);
   sensitive << rst_ni << wb_cyc_i << wb_stb_i << wb_we_i << wb_adr_i << wb_dat_i << wb_sel_i << ack_q << dat_q
             << fetch_q << level_q << core_busy << irq_status_q << irq_enable_q << ce_i << feed_q << acc_q << polarity_q
-            << sx_step << sx_dir << sx_hold << sx_busy << sy_step << sy_dir << sy_hold << sy_busy << sz_step << sz_dir
-            << sz_hold << sz_busy << c_step_x << c_step_y << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q
-            << core_ready << pace_iterate << paced_q << feed_hold_q << stopping_q << pace_speed << io_hard << io_rd
-            << sx_pend << sy_pend << sz_pend << sx_pdir << sy_pdir << sz_pdir;
+            << stw.sx_step << stw.sx_dir << stw.sx_hold << stw.sx_busy << stw.sy_step << stw.sy_dir << stw.sy_hold
+            << stw.sy_busy << stw.sz_step << stw.sz_dir << stw.sz_hold << stw.sz_busy << c_step_x << c_step_y
+            << c_step_z << c_dir_x << c_dir_y << c_dir_z << route_q << core_ready << pace_iterate << paced_q
+            << feed_hold_q << stopping_q << pace_speed << iow.io_hard << iow.io_rd << stw.sx_pend << stw.sy_pend
+            << stw.sz_pend << stw.sx_pdir << stw.sy_pdir << stw.sz_pdir;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -84,8 +85,8 @@ void dda_motion::comb() {
   };
   // A soft stop at rest with no step on its way flushes as an abort does.
   const bool soft_flush =
-      stopping_q.read() && pace_speed.read() == 0 && !(sx_busy.read() || sy_busy.read() || sz_busy.read());
-  const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush || io_hard.read();
+      stopping_q.read() && pace_speed.read() == 0 && !(stw.sx_busy.read() || stw.sy_busy.read() || stw.sz_busy.read());
+  const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush || iow.io_hard.read();
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
@@ -94,7 +95,7 @@ void dda_motion::comb() {
   const bool wr_timing = wr && (adr == motion::reg_offset("STEP_X") || adr == motion::reg_offset("DIR_X") ||
                                 adr == motion::reg_offset("STEP_Y") || adr == motion::reg_offset("DIR_Y") ||
                                 adr == motion::reg_offset("STEP_Z") || adr == motion::reg_offset("DIR_Z"));
-  const bool held = sx_hold.read() || sy_hold.read() || sz_hold.read() || wr_timing;
+  const bool held = stw.sx_hold.read() || stw.sy_hold.read() || stw.sz_hold.read() || wr_timing;
   hold.write(held);
   const bool adv = ce_i.read() && !held;
   advance.write(adv);
@@ -114,13 +115,13 @@ void dda_motion::comb() {
   wb_dat_o.write(dat_q.read());
   const std::uint32_t pol = polarity_q.read();
   const auto inv = [pol](std::string_view f) { return ((pol >> motion::field_of("POLARITY", f).lsb) & 1u) != 0; };
-  step_x_o.write(sx_step.read() != inv("step_x"));
-  step_y_o.write(sy_step.read() != inv("step_y"));
-  dir_x_o.write(sx_dir.read() != inv("dir_x"));
-  dir_y_o.write(sy_dir.read() != inv("dir_y"));
-  step_z_o.write(sz_step.read() != inv("step_z"));
-  dir_z_o.write(sz_dir.read() != inv("dir_z"));
-  busy_o.write(core_busy.read() || sx_busy.read() || sy_busy.read() || sz_busy.read());
+  step_x_o.write(stw.sx_step.read() != inv("step_x"));
+  step_y_o.write(stw.sy_step.read() != inv("step_y"));
+  dir_x_o.write(stw.sx_dir.read() != inv("dir_x"));
+  dir_y_o.write(stw.sy_dir.read() != inv("dir_y"));
+  step_z_o.write(stw.sz_step.read() != inv("step_z"));
+  dir_z_o.write(stw.sz_dir.read() != inv("dir_z"));
+  busy_o.write(core_busy.read() || stw.sx_busy.read() || stw.sy_busy.read() || stw.sz_busy.read());
   // Stage j takes the core's axis (j - route) mod 3 (route 3 as 0).
   const std::array<bool, 3> cs{c_step_x.read(), c_step_y.read(), c_step_z.read()};
   const std::array<bool, 3> cd{c_dir_x.read(), c_dir_y.read(), c_dir_z.read()};
@@ -150,15 +151,15 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
-    return bit("busy", core_busy.read() || sx_busy.read() || sy_busy.read() || sz_busy.read()) |
+    return bit("busy", core_busy.read() || stw.sx_busy.read() || stw.sy_busy.read() || stw.sz_busy.read()) |
            bit("empty", level == 0) | bit("full", level == depth) | bit("err", err_q.read()) |
            bit("err_overflow", err_overflow_q.read()) | bit("err_partial", err_partial_q.read()) |
            bit("err_stall", err_stall_q.read()) | bit("aborted", aborted_q.read()) |
            bit("err_lanes", err_lanes_q.read()) | bit("holding", feed_hold_q.read() && pace_speed.read() != 0) |
            bit("held", feed_hold_q.read() && pace_speed.read() == 0) | bit("stopping", stopping_q.read()) |
            bit("err_hard_stop", err_hard_q.read()) | bit("err_watchdog", err_watchdog_q.read()) |
-           bit("err_estop", io_err_estop.read()) | bit("err_limit", io_err_limit.read()) |
-           bit("probe_armed", io_probe_armed.read()) | bit("probed", io_probed.read()) |
+           bit("err_estop", iow.io_err_estop.read()) | bit("err_limit", iow.io_err_limit.read()) |
+           bit("probe_armed", iow.io_probe_armed.read()) | bit("probed", iow.io_probed.read()) |
            level << std::uint32_t(motion::field_of("STATUS", "level").lsb);
   }
   if (adr == kIrqStatus) return irq_status_q.read();
@@ -182,7 +183,7 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
     const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
     if (adr == motion::reg_offset(r)) v |= regs[i]->read() << motion::field_of(r, t.name).lsb;
   }
-  return v | io_rd.read();  // u_io's registers (0 at other addresses)
+  return v | iow.io_rd.read();  // u_io's registers (0 at other addresses)
 }
 
 std::array<sc_core::sc_signal<std::uint32_t>*, 12> dda_motion::timing_regs() const {
@@ -308,16 +309,17 @@ void dda_motion::seq_queue(const Decode& d) {
 // done_wait_q, the sticky errors, the interrupt registers, the counters and positions.
 void dda_motion::seq_status(const Decode& d) {
   // A piece is done once its last steps (tagged on the core's done_o) have left.
-  const bool tags_left = sx_tag_left.read() || sy_tag_left.read() || sz_tag_left.read();
+  const bool tags_left = stw.sx_tag_left.read() || stw.sy_tag_left.read() || stw.sz_tag_left.read();
   const bool old_done = done_wait_q.read() && !tags_left;
-  const bool new_wait = core_done.read() && (sx_wait.read() || sy_wait.read() || sz_wait.read());
+  const bool new_wait = core_done.read() && (stw.sx_wait.read() || stw.sy_wait.read() || stw.sz_wait.read());
   const bool new_done = core_done.read() && !new_wait;
   const bool cdone = old_done || new_done, cerr = core_err.read();
   done_wait_q.write(!d.abort && (new_wait || (done_wait_q.read() && tags_left)));
-  const bool err_set = d.err_overflow || d.err_partial || d.err_lanes || cerr || d.hard_stop || d.bite || io_err.read();
+  const bool err_set =
+      d.err_overflow || d.err_partial || d.err_lanes || cerr || d.hard_stop || d.bite || iow.io_err.read();
   const bool low_set = d.take && d.level_d < irq_level_q.read();
   const std::uint32_t irq_set = std::uint32_t(cdone) | std::uint32_t(err_set) << 1 | std::uint32_t(low_set) << 2 |
-                                std::uint32_t(io_probe.read()) << 3 | std::uint32_t(io_home.read()) << 4;
+                                std::uint32_t(iow.io_probe.read()) << 3 | std::uint32_t(iow.io_home.read()) << 4;
   // Sticky bits: a cause on the edge of a clear stays set.
   err_q.write((err_q.read() && !d.clear) || err_set);
   err_overflow_q.write((err_overflow_q.read() && !d.clear) || d.err_overflow);
@@ -333,9 +335,9 @@ void dda_motion::seq_status(const Decode& d) {
   if (d.wr && d.adr == kIrqLevel) irq_level_q.write(d.wdat & ((1u << motion::kLevelWidth) - 1));
   done_count_q.write(done_count_q.read() + std::uint32_t(old_done) + std::uint32_t(new_done));
   err_count_q.write(err_count_q.read() + cerr);
-  const std::uint32_t dx = sx_rise.read() ? (sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint32_t dy = sy_rise.read() ? (sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
-  const std::uint32_t dz = sz_rise.read() ? (sz_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dx = stw.sx_rise.read() ? (stw.sx_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dy = stw.sy_rise.read() ? (stw.sy_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
+  const std::uint32_t dz = stw.sz_rise.read() ? (stw.sz_rise_dir.read() ? 0xFFFFFFFFu : 1u) : 0u;
   // A preset is the position before the steps of the same edge: a pulse that starts on
   // the edge of a preset counts from the preset value, so none is lost.
   pos_x_q.write((d.wr && d.adr == kPosX ? d.wdat : pos_x_q.read()) + dx);
@@ -387,7 +389,7 @@ void dda_motion::seq_pace_settings(const Decode& d) {
   if (d.wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
   if (d.wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
   // The soft stop runs until its flush; the watchdog counts down from each write.
-  stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite || io_soft.read()));
+  stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite || iow.io_soft.read()));
   if (d.wr && d.adr == motion::reg_offset("WATCHDOG")) {
     wd_q.write(d.wdat);
     wd_cnt_q.write(d.wdat);

@@ -20,6 +20,29 @@
 
 namespace dda::sc {
 
+// The outputs of the step/dir stages (u_sx, u_sy, u_sz).
+struct StageWires {
+  sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
+      sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};
+  sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
+      sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
+  sc_core::sc_signal<bool> sz_step{"sz_step"}, sz_dir{"sz_dir"}, sz_hold{"sz_hold"}, sz_rise{"sz_rise"},
+      sz_rise_dir{"sz_rise_dir"}, sz_wait{"sz_wait"}, sz_tag_left{"sz_tag_left"}, sz_busy{"sz_busy"};
+  sc_core::sc_signal<bool> sx_pend{"sx_pend"}, sx_pdir{"sx_pdir"}, sy_pend{"sy_pend"}, sy_pdir{"sy_pdir"},
+      sz_pend{"sz_pend"}, sz_pdir{"sz_pdir"};
+};
+
+// The wires of the block's machine side: u_io's inputs (dda_motion::comb_io) and outputs.
+struct MotionIoWires {
+  sc_core::sc_signal<bool> io_wr{"io_wr"}, io_clear{"io_clear"}, io_snapshot{"io_snapshot"},
+      io_probe_arm{"io_probe_arm"};
+  sc_core::sc_signal<std::uint32_t> io_adr{"io_adr"}, io_wdat{"io_wdat"}, io_step{"io_step"}, io_dir{"io_dir"},
+      io_pend{"io_pend"}, io_pdir{"io_pdir"}, io_rd{"io_rd"};
+  sc_core::sc_signal<bool> io_hard{"io_hard"}, io_soft{"io_soft"}, io_err{"io_err"}, io_probe{"io_probe"},
+      io_home{"io_home"}, io_err_estop{"io_err_estop"}, io_err_limit{"io_err_limit"}, io_probe_armed{"io_probe_armed"},
+      io_probed{"io_probed"};
+};
+
 SC_MODULE(dda_motion) {
   sc_core::sc_in<bool> clk_i, rst_ni;
   sc_core::sc_in<bool> wb_cyc_i, wb_stb_i, wb_we_i;
@@ -76,22 +99,8 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<bool> c_step_x{"c_step_x"}, c_step_y{"c_step_y"}, c_step_z{"c_step_z"}, c_dir_x{"c_dir_x"},
       c_dir_y{"c_dir_y"}, c_dir_z{"c_dir_z"};                                 // the core's step outputs
   sc_core::sc_signal<bool> core_ce{"core_ce"}, flush{"flush"}, hold{"hold"};  // flush: the abort of this cycle
-  sc_core::sc_signal<bool> sx_step{"sx_step"}, sx_dir{"sx_dir"}, sx_hold{"sx_hold"}, sx_rise{"sx_rise"},
-      sx_rise_dir{"sx_rise_dir"}, sx_wait{"sx_wait"}, sx_tag_left{"sx_tag_left"}, sx_busy{"sx_busy"};
-  sc_core::sc_signal<bool> sy_step{"sy_step"}, sy_dir{"sy_dir"}, sy_hold{"sy_hold"}, sy_rise{"sy_rise"},
-      sy_rise_dir{"sy_rise_dir"}, sy_wait{"sy_wait"}, sy_tag_left{"sy_tag_left"}, sy_busy{"sy_busy"};
-  sc_core::sc_signal<bool> sz_step{"sz_step"}, sz_dir{"sz_dir"}, sz_hold{"sz_hold"}, sz_rise{"sz_rise"},
-      sz_rise_dir{"sz_rise_dir"}, sz_wait{"sz_wait"}, sz_tag_left{"sz_tag_left"}, sz_busy{"sz_busy"};
-  sc_core::sc_signal<bool> sx_pend{"sx_pend"}, sx_pdir{"sx_pdir"}, sy_pend{"sy_pend"}, sy_pdir{"sy_pdir"},
-      sz_pend{"sz_pend"}, sz_pdir{"sz_pdir"};
-  // u_io's wires: its inputs (comb_io) and outputs.
-  sc_core::sc_signal<bool> io_wr{"io_wr"}, io_clear{"io_clear"}, io_snapshot{"io_snapshot"},
-      io_probe_arm{"io_probe_arm"};
-  sc_core::sc_signal<std::uint32_t> io_adr{"io_adr"}, io_wdat{"io_wdat"}, io_step{"io_step"}, io_dir{"io_dir"},
-      io_pend{"io_pend"}, io_pdir{"io_pdir"}, io_rd{"io_rd"};
-  sc_core::sc_signal<bool> io_hard{"io_hard"}, io_soft{"io_soft"}, io_err{"io_err"}, io_probe{"io_probe"},
-      io_home{"io_home"}, io_err_estop{"io_err_estop"}, io_err_limit{"io_err_limit"}, io_probe_armed{"io_probe_armed"},
-      io_probed{"io_probed"};
+  StageWires stw;                                                             // the step/dir stages' outputs
+  MotionIoWires iow;                                                          // u_io's wires
 
   // The timing registers in motion::kTimingFields' order, X's, Y's then Z's.
   std::array<sc_core::sc_signal<std::uint32_t>*, 12> timing_regs() const;

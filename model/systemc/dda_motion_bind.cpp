@@ -12,12 +12,15 @@ void dda_motion::bind_stages() {
         &pdir;
     sc_core::sc_signal<std::uint32_t>&steplen, &stepspace, &dirsetup, &dirhold;
   };
-  for (Stage t : {Stage{u_sx, step_x, dir_x, sx_step, sx_dir, sx_hold, sx_rise, sx_rise_dir, sx_wait, sx_tag_left,
-                        sx_busy, sx_pend, sx_pdir, steplen_x_q, stepspace_x_q, dirsetup_x_q, dirhold_x_q},
-                  Stage{u_sy, step_y, dir_y, sy_step, sy_dir, sy_hold, sy_rise, sy_rise_dir, sy_wait, sy_tag_left,
-                        sy_busy, sy_pend, sy_pdir, steplen_y_q, stepspace_y_q, dirsetup_y_q, dirhold_y_q},
-                  Stage{u_sz, step_z, dir_z, sz_step, sz_dir, sz_hold, sz_rise, sz_rise_dir, sz_wait, sz_tag_left,
-                        sz_busy, sz_pend, sz_pdir, steplen_z_q, stepspace_z_q, dirsetup_z_q, dirhold_z_q}}) {
+  for (Stage t : {Stage{u_sx, step_x, dir_x, stw.sx_step, stw.sx_dir, stw.sx_hold, stw.sx_rise, stw.sx_rise_dir,
+                        stw.sx_wait, stw.sx_tag_left, stw.sx_busy, stw.sx_pend, stw.sx_pdir, steplen_x_q, stepspace_x_q,
+                        dirsetup_x_q, dirhold_x_q},
+                  Stage{u_sy, step_y, dir_y, stw.sy_step, stw.sy_dir, stw.sy_hold, stw.sy_rise, stw.sy_rise_dir,
+                        stw.sy_wait, stw.sy_tag_left, stw.sy_busy, stw.sy_pend, stw.sy_pdir, steplen_y_q, stepspace_y_q,
+                        dirsetup_y_q, dirhold_y_q},
+                  Stage{u_sz, step_z, dir_z, stw.sz_step, stw.sz_dir, stw.sz_hold, stw.sz_rise, stw.sz_rise_dir,
+                        stw.sz_wait, stw.sz_tag_left, stw.sz_busy, stw.sz_pend, stw.sz_pdir, steplen_z_q, stepspace_z_q,
+                        dirsetup_z_q, dirhold_z_q}}) {
     t.s.clk_i(clk_i);
     t.s.rst_ni(rst_ni);
     t.s.flush_i(flush);
@@ -74,31 +77,31 @@ void dda_motion::bind_io() {
   u_io.limit_i(limit_i);
   u_io.home_i(home_i);
   u_io.probe_i(probe_i);
-  u_io.wr_i(io_wr);
-  u_io.adr_i(io_adr);
-  u_io.wdat_i(io_wdat);
-  u_io.clear_i(io_clear);
-  u_io.snapshot_i(io_snapshot);
-  u_io.probe_arm_i(io_probe_arm);
+  u_io.wr_i(iow.io_wr);
+  u_io.adr_i(iow.io_adr);
+  u_io.wdat_i(iow.io_wdat);
+  u_io.clear_i(iow.io_clear);
+  u_io.snapshot_i(iow.io_snapshot);
+  u_io.probe_arm_i(iow.io_probe_arm);
   u_io.pos_x_i(pos_x_q);
   u_io.pos_y_i(pos_y_q);
   u_io.pos_z_i(pos_z_q);
   u_io.level_i(level_q);
   u_io.done_count_i(done_count_q);
-  u_io.step_i(io_step);
-  u_io.dir_i(io_dir);
-  u_io.pend_i(io_pend);
-  u_io.pdir_i(io_pdir);
-  u_io.hard_o(io_hard);
-  u_io.soft_o(io_soft);
-  u_io.err_o(io_err);
-  u_io.probe_o(io_probe);
-  u_io.home_o(io_home);
-  u_io.err_estop_o(io_err_estop);
-  u_io.err_limit_o(io_err_limit);
-  u_io.probe_armed_o(io_probe_armed);
-  u_io.probed_o(io_probed);
-  u_io.rd_o(io_rd);
+  u_io.step_i(iow.io_step);
+  u_io.dir_i(iow.io_dir);
+  u_io.pend_i(iow.io_pend);
+  u_io.pdir_i(iow.io_pdir);
+  u_io.hard_o(iow.io_hard);
+  u_io.soft_o(iow.io_soft);
+  u_io.err_o(iow.io_err);
+  u_io.probe_o(iow.io_probe);
+  u_io.home_o(iow.io_home);
+  u_io.err_estop_o(iow.io_err_estop);
+  u_io.err_limit_o(iow.io_err_limit);
+  u_io.probe_armed_o(iow.io_probe_armed);
+  u_io.probed_o(iow.io_probed);
+  u_io.rd_o(iow.io_rd);
 }
 
 // u_io's inputs of this cycle: the bus write (its data merged with the addressed
@@ -108,18 +111,18 @@ void dda_motion::comb_io(bool wr, std::uint32_t adr, std::uint32_t wsel, std::ui
                          std::uint32_t r_dir) {
   const bool ctrl = wr && adr == motion::reg_offset("CTRL");
   const auto bit = [&](std::string_view f) { return ctrl && ((wsel >> motion::field_of("CTRL", f).lsb) & 1u) != 0; };
-  io_wr.write(wr);
-  io_adr.write(adr);
-  io_wdat.write(wr ? (read(adr) & ~lanes) | wsel : 0u);
-  io_clear.write(bit("clear"));
-  io_snapshot.write(bit("snapshot"));
-  io_probe_arm.write(bit("probe_arm"));
-  io_step.write(r_step);
-  io_dir.write(r_dir);
-  io_pend.write(std::uint32_t(sx_pend.read()) | std::uint32_t(sy_pend.read()) << 1 |
-                std::uint32_t(sz_pend.read()) << 2);
-  io_pdir.write(std::uint32_t(sx_pdir.read()) | std::uint32_t(sy_pdir.read()) << 1 |
-                std::uint32_t(sz_pdir.read()) << 2);
+  iow.io_wr.write(wr);
+  iow.io_adr.write(adr);
+  iow.io_wdat.write(wr ? (read(adr) & ~lanes) | wsel : 0u);
+  iow.io_clear.write(bit("clear"));
+  iow.io_snapshot.write(bit("snapshot"));
+  iow.io_probe_arm.write(bit("probe_arm"));
+  iow.io_step.write(r_step);
+  iow.io_dir.write(r_dir);
+  iow.io_pend.write(std::uint32_t(stw.sx_pend.read()) | std::uint32_t(stw.sy_pend.read()) << 1 |
+                    std::uint32_t(stw.sz_pend.read()) << 2);
+  iow.io_pdir.write(std::uint32_t(stw.sx_pdir.read()) | std::uint32_t(stw.sy_pdir.read()) << 1 |
+                    std::uint32_t(stw.sz_pdir.read()) << 2);
 }
 
 }  // namespace dda::sc
