@@ -82,10 +82,11 @@ if(NOT DDA_WIDTHS_DEFAULT)
   set(DDA_MOTION_PARAMS ${DDA_RTL_PARAMS_DIR})
 endif()
 
-# dda_motion_harness_lib(TARGET DEPTH_LOG2): the motion block's harness (engines/) around
-# the RTL verilated with that queue depth (MotionHarness compiled with the same depth);
-# "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the generated
-# header).
+# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES]): the motion block's harness (engines/)
+# around the RTL verilated with that queue depth (MotionHarness compiled with the same
+# depth); "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the
+# generated header). BRIDGES: the block behind its AXI4-Lite and SPI bridges too
+# (dda_motion_axil, dda_motion_spi), each verilated on its own.
 function(dda_motion_harness_lib target depth_log2)
   set(eng ${PROJECT_SOURCE_DIR}/engines)
   set(src ${eng}/motion_harness.cpp ${eng}/vl_sampler.cpp)
@@ -101,9 +102,17 @@ function(dda_motion_harness_lib target depth_log2)
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_DEPTH_LOG2=${depth_log2})
     set(gparam -GDepthLog2=${depth_log2})
   endif()
-  verilate(${target} TRACE
-    SOURCES ${DDA_MOTION_SOURCES} ${DDA_RTL_DIR}/lint.vlt
-    TOP_MODULE dda_motion PREFIX Vdda_motion
-    INCLUDE_DIRS ${DDA_MOTION_PARAMS} ${DDA_RTL_DIR}
-    VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast --timescale 1ns/1ns ${gparam})
+  set(tops dda_motion)
+  if("BRIDGES" IN_LIST ARGN)
+    list(APPEND tops dda_motion_axil dda_motion_spi)
+    target_compile_definitions(${target} PRIVATE DDA_HARNESS_BRIDGES=1)
+  endif()
+  foreach(top IN LISTS tops)
+    dda_rtl_sources(${DDA_RTL_DIR}/${top}.f sources)
+    verilate(${target} TRACE
+      SOURCES ${sources} ${DDA_RTL_DIR}/lint.vlt
+      TOP_MODULE ${top} PREFIX V${top}
+      INCLUDE_DIRS ${DDA_MOTION_PARAMS} ${DDA_RTL_DIR}
+      VERILATOR_ARGS -Wall -O3 --assert --x-assign fast --x-initial fast --timescale 1ns/1ns ${gparam})
+  endforeach()
 endfunction()

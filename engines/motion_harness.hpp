@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block (rtl/dda_motion.v) under Verilator, in lockstep with its reference
 // model (MotionModel) after every edge: the output ports, the block's registers
-// (kBlockRegs) and the core's register table. A Wishbone master (dda/motion_bus.hpp)
-// drives it: classic or pipelined cycles, random idle cycles between requests.
+// (kBlockRegs) and the core's register table. On its Wishbone bus (rtl/dda_motion.v) or
+// behind a bridge (rtl/dda_motion_axil.v, rtl/dda_motion_spi.v: then the bridge's
+// registers too, against its reference model). A bus master (motion/motion_bus.hpp)
+// drives it.
 #pragma once
 
 #include <cstdint>
@@ -15,8 +17,6 @@
 #include "vl_sampler.hpp"
 
 class VerilatedContext;
-class VerilatedVcdC;
-class Vdda_motion;
 
 namespace dda::motion {
 
@@ -31,16 +31,13 @@ inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
 class VlBlockSampler {
  public:
   VlBlockSampler(const VerilatedContext& ctx, const std::string& scope, int depth_log2);
+  ~VlBlockSampler();
   BlockRegs block() const;
   Signals core() const;
 
  private:
-  struct Var {
-    const void* p;
-    int bytes;
-    int width;
-  };
-  std::vector<Var> block_;
+  struct Vars;
+  std::unique_ptr<Vars> block_;
   std::unique_ptr<rtl::VlSampler> core_;
 };
 
@@ -50,8 +47,10 @@ std::string compare_block(const BlockRegs& got, const Signals& got_core, const M
 
 class MotionHarness : public BusTarget {
  public:
-  explicit MotionHarness(const std::string& vcd = "");
-  ~MotionHarness();
+  // GuardError for a bridge when the harness was built without them (the dda command's:
+  // the tests' harness has them).
+  explicit MotionHarness(const std::string& vcd = "", Bus bus = Bus::wishbone);
+  ~MotionHarness() override;
 
   // Inputs of the next edge besides the bus (which the master drives).
   void set_reset(bool rst_n) override { rst_n_ = rst_n; }
@@ -61,17 +60,23 @@ class MotionHarness : public BusTarget {
   // One edge of both: the RTL and the model; then compares them and throws GuardError
   // naming the cycle and the first signal that differs.
   void tick(const BusIn& bus) override;
+  const BusIn& bus_seen() const override { return seen_; }
   // The outputs after the last edge (the RTL's; equal to the model's).
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
   std::uint64_t cycle() const { return cycle_; }
 
  private:
+  class Top;  // the verilated top of the bus
+  template <typename V>
+  class TopOf;
   std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vdda_motion> top_;
-  std::unique_ptr<VerilatedVcdC> vcd_;
+  std::unique_ptr<Top> top_;
   std::unique_ptr<VlBlockSampler> sampler_;
   MotionModel model_;
+  std::unique_ptr<Bridge> bridge_;  // the bridge's reference model (none on Wishbone)
+  Bus bus_;
+  BusIn seen_;
   StepDirChecker timing_;
   BlockOutputs out_;
   MachinePins pins_;

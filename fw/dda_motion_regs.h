@@ -329,4 +329,22 @@
 #define DDA_MOTION_TRIP_HOME_Z_LSB 9u
 #define DDA_MOTION_TRIP_HOME_Z_MASK 0x00000200u
 
+/* The SPI bridge's frame: CS_n low for 64 rising SCK edges, MSB first. */
+#define DDA_MOTION_SPI_FRAME_BITS 64u
+#define DDA_MOTION_SPI_WRITE 0x80u
+#define DDA_MOTION_SPI_COMMAND_AT 0u  /* MOSI: bit 7 write (1) or read (0), bits 3:0 a write's byte lanes, bits 6:4 zero */
+#define DDA_MOTION_SPI_ADDRESS_AT 8u  /* MOSI: the register's byte address (the bits above the block's ignored) */
+#define DDA_MOTION_SPI_DATA_AT 24u  /* MOSI: a write's data; MISO: the previous frame's read data */
+#define DDA_MOTION_SPI_STATUS_AT 56u  /* MISO: the status byte (kSpiStatus) */
+#define DDA_MOTION_SPI_ST_DONE_LSB 0u
+#define DDA_MOTION_SPI_ST_DONE_MASK 0x01u
+#define DDA_MOTION_SPI_ST_BAD_LSB 1u
+#define DDA_MOTION_SPI_ST_BAD_MASK 0x02u
+#define DDA_MOTION_SPI_ST_IRQ_LSB 2u
+#define DDA_MOTION_SPI_ST_IRQ_MASK 0x04u
+#define DDA_MOTION_SPI_ST_BUSY_LSB 3u
+#define DDA_MOTION_SPI_ST_BUSY_MASK 0x08u
+#define DDA_MOTION_SPI_ST_COUNT_LSB 4u
+#define DDA_MOTION_SPI_ST_COUNT_MASK 0xF0u
+
 #endif /* DDA_MOTION_REGS_H */

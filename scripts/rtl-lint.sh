@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Verilator lint of the RTL (the core, the motion block around it with the pacer and its norm unit) with every
+# Verilator lint of the RTL (the core, the motion block around it with the pacer and its norm unit, the block behind
+# its bus bridges) with every
 # warning on; fails on any %Warning or %Error.
 #   usage: scripts/rtl-lint.sh        (ctest: rtl.lint)
 # Waivers, each with its reason, live in rtl/lint.vlt.
@@ -16,6 +17,13 @@ out2=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/dda_motion.f --t
 rc2=$?
 out=$out$out2
 [ $rc2 -eq 0 ] || rc=$rc2
+# The block behind its AXI4-Lite and SPI bridges.
+for top in dda_motion_axil dda_motion_spi; do
+  out3=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt -f rtl/$top.f --top-module $top 2>&1)
+  rc3=$?
+  out=$out$out3
+  [ $rc3 -eq 0 ] || rc=$rc3
+done
 [ -n "$out" ] && echo "$out"
 if [ $rc -ne 0 ] || echo "$out" | grep -Eq '%(Warning|Error)'; then
   echo "rtl-lint: FAIL (verilator exit $rc)" >&2

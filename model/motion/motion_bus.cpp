@@ -11,9 +11,15 @@
 namespace dda::motion {
 
 void ModelTarget::tick(const BusIn& bus) {
-  const BlockInputs in = block_inputs(rst_n_, ce_, bus, pins_);
+  const BlockInputs in = block_inputs(rst_n_, ce_, bridge_ ? bridge_->wishbone() : bus, pins_);
+  const BlockOutputs before = model_.outputs();
   model_.edge(in);
+  seen_ = in.bus;
   out_ = model_.outputs();
+  if (bridge_) {
+    bridge_->edge(rst_n_, bus, before);
+    bridge_->outputs(out_);
+  }
   if (on_edge) on_edge(in, model_);
 }
 
@@ -57,7 +63,6 @@ std::uint32_t WishboneMaster::run(const Transfer& t) {
   while (pct(rng_) < idle_percent_) idle(1);
   bool taken = false;
   for (int guard = 0; guard < 64; ++guard) {
-    if (each_cycle) each_cycle();
     BusIn b;
     b.cyc = true;
     b.stb = pipelined_ ? !taken : true;
@@ -66,27 +71,21 @@ std::uint32_t WishboneMaster::run(const Transfer& t) {
     b.dat = t.dat;
     b.sel = t.sel;
     const bool stall = t_.outputs().stall;
-    t_.tick(b);
+    tick(b);
     if (b.stb && !stall) taken = true;
     if (taken && t_.outputs().ack) {
       const std::uint32_t data = t.we ? 0 : t_.outputs().dat;
       // Classic: the request stays on the bus through the ack cycle (the block stalls
       // it, so it is not taken twice). Pipelined: the next request may start now.
-      if (!pipelined_) {
-        if (each_cycle) each_cycle();
-        t_.tick(b);
-      }
+      if (!pipelined_) tick(b);
       return data;
     }
   }
   throw GuardError("Wishbone master: no ack within 64 cycles");
 }
 
-void WishboneMaster::idle(int cycles) {
-  for (int i = 0; i < cycles; ++i) {
-    if (each_cycle) each_cycle();
-    t_.tick(BusIn{});
-  }
+void BusMaster::idle(int cycles) {
+  for (int i = 0; i < cycles; ++i) tick(BusIn{});
 }
 
 std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value) {

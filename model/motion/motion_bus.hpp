@@ -1,18 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
-// Driving the motion block over its Wishbone bus, the way firmware does: a bus master
-// (classic or pipelined cycles, random idle cycles) and a driver that queues commands,
-// waits for the queue to drain and aborts. They run on any BusTarget: the reference
-// model alone (ModelTarget: `dda vectors --bus` records its cycles), or the RTL beside
-// the model (engines/motion_harness.hpp).
+// Driving the motion block over its bus, the way firmware does: a bus master (Wishbone
+// classic or pipelined cycles, AXI4-Lite or SPI frames through a bridge; random idle
+// cycles) and a driver that queues commands, waits for the queue to drain and aborts.
+// They run on any BusTarget: the reference model alone (ModelTarget: `dda vectors --bus`
+// records its cycles), or the RTL beside the model (engines/motion_harness.hpp).
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <random>
 #include <string_view>
 #include <vector>
 
+#include "motion/bridges.hpp"
 #include "motion/motion_model.hpp"
 #include "motion/speed_monitor.hpp"
 
@@ -27,8 +29,11 @@ class BusTarget {
   virtual void set_pins(const MachinePins& pins) = 0;
   // The pins as last set.
   virtual const MachinePins& pins() const = 0;
-  // One rising edge with these bus inputs.
+  // One rising edge with these bus inputs (those of the target's bus).
   virtual void tick(const BusIn& bus) = 0;
+  // The Wishbone inputs the block itself took on the last edge (behind a bridge, the
+  // bridge's requests).
+  virtual const BusIn& bus_seen() const = 0;
   // The outputs after the last edge.
   virtual const BlockOutputs& outputs() const = 0;
   // The reference model beside the target, after the last edge (equal to the target's
@@ -46,6 +51,7 @@ class BusTap : public BusTarget {
   void set_pins(const MachinePins& pins) override { t_.set_pins(pins); }
   const MachinePins& pins() const override { return t_.pins(); }
   void tick(const BusIn& bus) override { t_.tick(bus); }
+  const BusIn& bus_seen() const override { return t_.bus_seen(); }
   const BlockOutputs& outputs() const override { return t_.outputs(); }
   const MotionModel& model() const override { return t_.model(); }
 
@@ -53,21 +59,29 @@ class BusTap : public BusTarget {
   BusTarget& t_;
 };
 
-// The reference model alone; `on_edge` sees every edge's inputs and the state after it.
+// The reference model alone, on its Wishbone bus or behind a bridge (the bridge's
+// reference model, motion/bridges.hpp); `on_edge` sees every edge's inputs as the block
+// took them and the state after it.
 class ModelTarget : public BusTarget {
  public:
-  explicit ModelTarget(int depth_log2 = kMaxDepthLog2) : model_(depth_log2) {}
+  explicit ModelTarget(int depth_log2 = kMaxDepthLog2, Bus bus = Bus::wishbone)
+      : model_(depth_log2), bridge_(make_bridge(bus)) {}
   void set_reset(bool rst_n) override { rst_n_ = rst_n; }
   void set_ce(bool ce) override { ce_ = ce; }
   void set_pins(const MachinePins& pins) override { pins_ = pins; }
   const MachinePins& pins() const override { return pins_; }
   void tick(const BusIn& bus) override;
+  const BusIn& bus_seen() const override { return seen_; }
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
+  // The bridge's reference model (nullptr on Wishbone).
+  const Bridge* bridge() const { return bridge_.get(); }
   std::function<void(const BlockInputs&, const MotionModel&)> on_edge;
 
  private:
   MotionModel model_;
+  std::unique_ptr<Bridge> bridge_;
+  BusIn seen_;
   BlockOutputs out_;
   MachinePins pins_;
   bool rst_n_ = true, ce_ = true;
@@ -118,32 +132,89 @@ class SpeedWatch : public BusTap {
   std::optional<SpeedMonitor> mon_;
 };
 
-// A Wishbone B4 master: one transfer at a time (the block answers one request every
-// other cycle), classic (stb held through the ack cycle) or pipelined (stb dropped once
-// the request is taken), with random idle cycles before each request.
+// One register access.
 struct Transfer {
   bool we = false;
   std::uint32_t adr = 0, dat = 0;
-  std::uint8_t sel = 0xF;  // byte lanes (wb_sel_i)
+  std::uint8_t sel = 0xF;  // byte lanes (wb_sel_i, WSTRB, the SPI command's)
 };
-class WishboneMaster {
+// A bus master: one register access at a time on its bus.
+class BusMaster {
  public:
-  WishboneMaster(BusTarget& t, std::uint64_t seed, bool pipelined, int idle_percent)
-      : t_(t), rng_(seed), pipelined_(pipelined), idle_percent_(idle_percent) {}
-  // Runs one transfer to its ack; returns the read data (0 for a write).
-  std::uint32_t run(const Transfer& t);
+  virtual ~BusMaster() = default;
+  // Runs one access to its end; returns the read data (0 for a write).
+  virtual std::uint32_t run(const Transfer& t) = 0;
   std::uint32_t read(std::uint32_t adr) { return run({false, adr, 0}); }
   void write(std::uint32_t adr, std::uint32_t dat, std::uint8_t sel = 0xF) { run({true, adr, dat, sel}); }
+  // Cycles with the bus idle.
   void idle(int cycles);
   // Runs before every edge (to change reset or ce_i).
   std::function<void()> each_cycle;
 
- private:
+ protected:
+  explicit BusMaster(BusTarget& t) : t_(t) {}
+  // One edge with these inputs, each_cycle first.
+  void tick(const BusIn& b) {
+    if (each_cycle) each_cycle();
+    t_.tick(b);
+  }
   BusTarget& t_;
+};
+
+// A Wishbone B4 master: one transfer at a time (the block answers one request every
+// other cycle), classic (stb held through the ack cycle) or pipelined (stb dropped once
+// the request is taken), with random idle cycles before each request.
+class WishboneMaster : public BusMaster {
+ public:
+  WishboneMaster(BusTarget& t, std::uint64_t seed, bool pipelined, int idle_percent)
+      : BusMaster(t), rng_(seed), pipelined_(pipelined), idle_percent_(idle_percent) {}
+  std::uint32_t run(const Transfer& t) override;
+
+ private:
   std::mt19937_64 rng_;
   bool pipelined_;
   int idle_percent_;
 };
+
+// An AXI4-Lite master (for the block behind rtl/dda_axil.v): a write's address and data
+// each after a random delay (either first), a read's address; the response taken after a
+// random delay; random idle cycles before each access.
+class AxilMaster : public BusMaster {
+ public:
+  AxilMaster(BusTarget& t, std::uint64_t seed, int idle_percent)
+      : BusMaster(t), rng_(seed), idle_percent_(idle_percent) {}
+  std::uint32_t run(const Transfer& t) override;
+
+ private:
+  std::mt19937_64 rng_;
+  int idle_percent_;
+};
+
+// An SPI master, mode 0 (for the block behind rtl/dda_spi.v): one frame per write; a
+// read is its frame and a second one (a read of ID) that brings its data back. SCK's
+// half period is `half` clocks or more (2: a quarter of the block's clock), a random
+// one of up to twice that when `jitter`; CS_n's setup, hold and the gap between frames
+// random above their minimums. Checks each status byte: the access done, the frame
+// count advanced.
+class SpiMaster : public BusMaster {
+ public:
+  SpiMaster(BusTarget& t, std::uint64_t seed, int half = 2, bool jitter = true)
+      : BusMaster(t), rng_(seed), half_(half), jitter_(jitter) {}
+  std::uint32_t run(const Transfer& t) override;
+  // One frame of kSpiFrameBits bits as given (MSB first); returns the bits MISO carried.
+  std::uint64_t frame(std::uint64_t mosi, int bits = kSpiFrameBits);
+
+ private:
+  void hold(BusIn& b, int cycles);
+  int half();
+  std::mt19937_64 rng_;
+  int half_;
+  bool jitter_;
+  int count_ = -1;  // the status' access count expected next (-1: not known yet)
+};
+
+// A master for a target's bus: Wishbone (pipelined or classic), AXI4-Lite or SPI.
+std::unique_ptr<BusMaster> make_master(Bus bus, BusTarget& t, std::uint64_t seed, bool pipelined, int idle_percent);
 
 // A field's value in a register's word, and its bit (one-bit fields) by name.
 std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint32_t value);
@@ -153,7 +224,7 @@ std::uint32_t field_bit(std::string_view reg, std::string_view field);
 // commit, once the queue has room), waits for the queue to drain.
 class MotionDriver {
  public:
-  MotionDriver(WishboneMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
+  MotionDriver(BusMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
   // feed: the entry's feed increment (0: the core's full rate); pace: its pacing fields
   // (a cruise speed of 0: paced by the feed increment).
   void queue(const Command& c, std::uint32_t feed = 0, int axes = 0, const PaceEntry& pace = {});
@@ -193,7 +264,7 @@ class MotionDriver {
   void wait_rest(int max_polls = 1000000);
 
  private:
-  WishboneMaster& m_;
+  BusMaster& m_;
   std::mt19937_64 rng_;
   bool shuffle_;
 };

@@ -101,6 +101,15 @@ std::string markdown(const Map& m) {
   for (const auto& f : m.fields) {
     o += fmt::format("| `{}` | `{}` | {}:{} | {} |\n", f.reg, f.name, f.lsb + f.width - 1, f.lsb, f.meaning);
   }
+  o += fmt::format("\nSPI frame ({} rising SCK edges, bits numbered from the first):\n\n", kSpiFrameBits);
+  o += "| part | bits | meaning |\n|---|---|---|\n";
+  for (const auto& p : kSpiFrame) {
+    o += fmt::format("| {} | {}..{} | {} |\n", p.name, p.first, p.first + p.width - 1, p.meaning);
+  }
+  o += "\n| status field | bits | meaning |\n|---|---|---|\n";
+  for (const auto& p : kSpiStatus) {
+    o += fmt::format("| {} | {}:{} | {} |\n", p.name, p.first + p.width - 1, p.first, p.meaning);
+  }
   return o;
 }
 
@@ -147,6 +156,16 @@ std::string c_header(const Map& m) {
     const std::uint64_t mask = ((std::uint64_t{1} << f.width) - 1) << f.lsb;
     o += fmt::format("#define {}_LSB {}u\n#define {}_MASK 0x{:08X}u\n", n, f.lsb, n, mask);
   }
+  o += fmt::format("\n/* The SPI bridge's frame: CS_n low for {} rising SCK edges, MSB first. */\n", kSpiFrameBits);
+  o += fmt::format("#define DDA_MOTION_SPI_FRAME_BITS {}u\n#define DDA_MOTION_SPI_WRITE 0x{:02X}u\n", kSpiFrameBits,
+                   1u << kSpiWriteBit);
+  for (const auto& p : kSpiFrame) {
+    o += fmt::format("#define DDA_MOTION_SPI_{}_AT {}u  /* {} */\n", upper(p.name), p.first, p.meaning);
+  }
+  for (const auto& p : kSpiStatus) {
+    o += fmt::format("#define DDA_MOTION_SPI_ST_{}_LSB {}u\n#define DDA_MOTION_SPI_ST_{}_MASK 0x{:02X}u\n",
+                     upper(p.name), p.first, upper(p.name), ((1u << p.width) - 1) << p.first);
+  }
   o += "\n#endif /* DDA_MOTION_REGS_H */\n";
   return o;
 }
@@ -178,7 +197,18 @@ std::string verilog_header(const Map& m) {
   o += fmt::format("`define DDA_MOTION_OVERRIDE_ONE {}\n`define DDA_MOTION_OVERRIDE_MAX {}\n", kOverrideOne,
                    2 * kOverrideOne);
   o += fmt::format("`define DDA_MOTION_TIMING_WIDTH {}\n", kTimingWidth);
-  o += fmt::format("`define DDA_MOTION_INPUTS {}\n`define DDA_MOTION_TRIP_BITS {}\n\n", kNumInputs, kTripBits);
+  o += fmt::format("`define DDA_MOTION_INPUTS {}\n`define DDA_MOTION_TRIP_BITS {}\n", kNumInputs, kTripBits);
+  o += fmt::format("`define DDA_MOTION_SPI_FRAME_BITS {}\n`define DDA_MOTION_SPI_WRITE_BIT {}\n", kSpiFrameBits,
+                   kSpiWriteBit);
+  for (const auto& p : kSpiFrame) {
+    o += fmt::format("`define DDA_MOTION_SPI_{}_AT {}\n`define DDA_MOTION_SPI_{}_WIDTH {}\n", upper(p.name), p.first,
+                     upper(p.name), p.width);
+  }
+  for (const auto& p : kSpiStatus) {
+    o += fmt::format("`define DDA_MOTION_SPI_ST_{}_LSB {}\n`define DDA_MOTION_SPI_ST_{}_WIDTH {}\n", upper(p.name),
+                     p.first, upper(p.name), p.width);
+  }
+  o += "\n";
   for (const auto& r : m.regs) {
     o += fmt::format("`define DDA_MOTION_{}_ADDR {}'h{:02X}  // {}\n", upper(r.name), kAddrWidth, r.offset,
                      access_name(r.access));

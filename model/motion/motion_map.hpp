@@ -114,6 +114,41 @@ constexpr int input_bit(std::string_view name) {
   throw "motion_map: no such input";
 }
 
+// The SPI bridge's frame (rtl/dda_spi.v, docs/design.md "Bus bridges"): CS_n low for
+// kSpiFrameBits rising SCK edges, most significant bit first; each part numbered from the
+// frame's first bit. MOSI carries the command, the address and the write data, MISO the
+// previous frame's read data and the status byte.
+struct SpiPart {
+  std::string_view name;
+  int first, width;
+  std::string_view meaning;
+};
+inline constexpr int kSpiFrameBits = 64;
+inline constexpr std::array<SpiPart, 4> kSpiFrame{{
+    {"command", 0, 8, "MOSI: bit 7 write (1) or read (0), bits 3:0 a write's byte lanes, bits 6:4 zero"},
+    {"address", 8, 16, "MOSI: the register's byte address (the bits above the block's ignored)"},
+    {"data", 24, 32, "MOSI: a write's data; MISO: the previous frame's read data"},
+    {"status", 56, 8, "MISO: the status byte (kSpiStatus)"},
+}};
+inline constexpr int kSpiWriteBit = 7;  // of the command byte
+// The status byte's fields, sampled as the frame starts.
+inline constexpr std::array<SpiPart, 5> kSpiStatus{{
+    {"done", 0, 1, "the previous frame's access has completed (the read data is its)"},
+    {"bad", 1, 1, "the previous frame had the wrong length: no access"},
+    {"irq", 2, 1, "the block's irq_o"},
+    {"busy", 3, 1, "the block's busy_o"},
+    {"count", 4, 4, "accesses made, modulo 16"},
+}};
+constexpr const SpiPart& spi_part(std::string_view name) {
+  for (const auto& p : kSpiFrame) {
+    if (p.name == name) return p;
+  }
+  for (const auto& p : kSpiStatus) {
+    if (p.name == name) return p;
+  }
+  throw "motion_map: no such SPI frame part";
+}
+
 enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
 
 struct Register {

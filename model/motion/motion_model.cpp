@@ -29,6 +29,16 @@ std::string BlockOutputs::diff(const BlockOutputs& o) const {
   one("dir_z_o", dir_z, o.dir_z);
   one("busy_o", busy, o.busy);
   one("irq_o", irq, o.irq);
+  one("s_awready_o", axil.awready, o.axil.awready);
+  one("s_wready_o", axil.wready, o.axil.wready);
+  one("s_bvalid_o", axil.bvalid, o.axil.bvalid);
+  one("s_bresp_o", axil.bresp, o.axil.bresp);
+  one("s_arready_o", axil.arready, o.axil.arready);
+  one("s_rvalid_o", axil.rvalid, o.axil.rvalid);
+  one("s_rdata_o", axil.rdata, o.axil.rdata);
+  one("s_rresp_o", axil.rresp, o.axil.rresp);
+  one("spi_miso_o", spi.miso, o.spi.miso);
+  one("spi_miso_oe_o", spi.miso_oe, o.spi.miso_oe);
   return d;
 }
 

@@ -13,17 +13,12 @@
 #include <vector>
 
 #include "datapath/core_model.hpp"
+#include "motion/bus_wires.hpp"
 #include "motion/motion_map.hpp"
 #include "motion/pacer.hpp"
 
 namespace dda::motion {
 
-// The Wishbone inputs of one cycle.
-struct BusIn {
-  bool cyc = false, stb = false, we = false;
-  std::uint32_t adr = 0, dat = 0;
-  std::uint8_t sel = 0xF;
-};
 // The machine's input pins (kInputs) as wired: estop_ni high is released.
 struct MachinePins {
   bool estop_n = true;
@@ -65,12 +60,16 @@ struct BlockOutputs {
   std::uint32_t dat = 0;
   bool step_x = false, step_y = false, dir_x = false, dir_y = false, step_z = false, dir_z = false;
   bool busy = false, irq = false;
+  // Behind a bridge (rtl/dda_motion_axil.v, rtl/dda_motion_spi.v): its host-side outputs
+  // (left at their defaults by the block alone).
+  AxilOut axil;
+  SpiOut spi;
   // "" when equal, else the ports that differ ("ack 1/0, dat 5/0": this/other).
   std::string diff(const BlockOutputs& o) const;
   bool operator==(const BlockOutputs& o) const {
     return ack == o.ack && stall == o.stall && dat == o.dat && step_x == o.step_x && step_y == o.step_y &&
            dir_x == o.dir_x && dir_y == o.dir_y && step_z == o.step_z && dir_z == o.dir_z && busy == o.busy &&
-           irq == o.irq;
+           irq == o.irq && axil == o.axil && spi == o.spi;
   }
 };
 

@@ -69,7 +69,7 @@ class StepDirMonitor : public BusTap {
   }
   void tick(const BusIn& bus) override {
     t_.tick(bus);
-    c_.edge(bus, rst_n_, t_.outputs(), t_.model().regs());
+    c_.edge(t_.bus_seen(), rst_n_, t_.outputs(), t_.model().regs());
   }
   std::uint64_t pulses(int axis) const { return c_.pulses(axis); }
   const StepDirChecker::Shortest& shortest(int axis) const { return c_.shortest(axis); }

@@ -103,6 +103,7 @@ void MotionCosim::tick(const BusIn& bus) {
   sel_.write(bus.sel);
   sc_core::sc_start(10, sc_core::SC_NS);
   model_.edge(in);
+  seen_ = in.bus;
   ++cycle_;
   const std::string at = "motion cosim, cycle " + std::to_string(cycle_) + ": ";
   const BlockOutputs s = sc_out_.read(), r = rtl_out_.read();

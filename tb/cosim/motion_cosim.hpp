@@ -28,7 +28,9 @@ class MotionCosim : public BusTarget {
   void set_ce(bool ce) override { ce_v_ = ce; }
   void set_pins(const MachinePins& pins) override { pins_v_ = pins; }
   const MachinePins& pins() const override { return pins_v_; }
+  // On the block's Wishbone bus (the bridges are not in the co-simulation).
   void tick(const BusIn& bus) override;
+  const BusIn& bus_seen() const override { return seen_; }
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
   std::uint64_t cycle() const { return cycle_; }
@@ -67,6 +69,7 @@ class MotionCosim : public BusTarget {
   MotionModel model_;
   StepDirChecker timing_;
   BlockOutputs out_;
+  BusIn seen_;
   std::uint64_t cycle_ = 0;
   bool rst_n_v_ = true, ce_v_ = true;  // applied with the next edge's bus inputs
   MachinePins pins_v_;

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block behind an SPI slave (rtl/dda_spi.v: mode 0, one register access per
+// 64-edge frame; docs/design.md, "Bus bridges"): dda_motion with the same register map,
+// ports and parameter, the bus aside. spi_miso_oe_o is high while CS_n is low, for a top
+// that shares MISO with other slaves.
+`include "dda_motion_regs.vh"
+
+module dda_motion_spi #(
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
+) (
+  input  wire                              clk_i,
+  input  wire                              rst_ni,  // synchronous, active low
+  // SPI slave, mode 0, SCK at most a quarter of clk_i
+  input  wire                              spi_csn_i,
+  input  wire                              spi_sck_i,
+  input  wire                              spi_mosi_i,
+  output wire                              spi_miso_o,
+  output wire                              spi_miso_oe_o,
+  // iteration enable of the core (high: one iteration per clock)
+  input  wire                              ce_i,
+  // the machine's inputs, as on dda_motion
+  input  wire                              estop_ni,
+  input  wire [5:0]                        limit_i,
+  input  wire [2:0]                        home_i,
+  input  wire                              probe_i,
+  // the axes
+  output wire                              step_x_o,
+  output wire                              step_y_o,
+  output wire                              dir_x_o,
+  output wire                              dir_y_o,
+  output wire                              step_z_o,
+  output wire                              dir_z_o,
+  output wire                              busy_o,
+  output wire                              irq_o
+);
+
+  wire                              cyc, stb, we, ack, stall, busy, irq;
+  wire [`DDA_MOTION_ADDR_WIDTH-1:0] adr;
+  wire [31:0]                       wdat, rdat;
+  wire [3:0]                        sel;
+  assign busy_o = busy;
+  assign irq_o  = irq;
+
+  assign spi_miso_oe_o = ~spi_csn_i;
+
+  dda_spi u_bridge (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .spi_csn_i   (spi_csn_i),
+    .spi_sck_i   (spi_sck_i),
+    .spi_mosi_i  (spi_mosi_i),
+    .spi_miso_o  (spi_miso_o),
+    .irq_i       (irq),
+    .busy_i      (busy),
+    .wb_cyc_o    (cyc),
+    .wb_stb_o    (stb),
+    .wb_we_o     (we),
+    .wb_adr_o    (adr),
+    .wb_dat_o    (wdat),
+    .wb_sel_o    (sel),
+    .wb_dat_i    (rdat),
+    .wb_ack_i    (ack),
+    .wb_stall_i  (stall)
+  );
+
+  dda_motion #(
+    .DepthLog2 (DepthLog2)
+  ) u_motion (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .wb_cyc_i   (cyc),
+    .wb_stb_i   (stb),
+    .wb_we_i    (we),
+    .wb_adr_i   (adr),
+    .wb_dat_i   (wdat),
+    .wb_sel_i   (sel),
+    .wb_dat_o   (rdat),
+    .wb_ack_o   (ack),
+    .wb_stall_o (stall),
+    .ce_i       (ce_i),
+    .estop_ni   (estop_ni),
+    .limit_i    (limit_i),
+    .home_i     (home_i),
+    .probe_i    (probe_i),
+    .step_x_o   (step_x_o),
+    .step_y_o   (step_y_o),
+    .dir_x_o    (dir_x_o),
+    .dir_y_o    (dir_y_o),
+    .step_z_o   (step_z_o),
+    .dir_z_o    (dir_z_o),
+    .busy_o     (busy),
+    .irq_o      (irq)
+  );
+
+endmodule
