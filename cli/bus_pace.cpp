@@ -88,8 +88,7 @@ std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, 
                               accel_field(o.accel, o.clock_hz));
 }
 
-void run_bus_scenario(motion::WishboneMaster& m, motion::MotionDriver& d, const BusOptions& b,
-                      const std::uint64_t& cycle) {
+void run_bus_scenario(motion::BusMaster& m, motion::MotionDriver& d, const BusOptions& b, const std::uint64_t& cycle) {
   struct Event {
     std::uint64_t at;
     std::function<void()> act;

@@ -25,52 +25,132 @@ namespace dda::vec {
 namespace {
 
 // The last member: the bench's register the field drives (tb/hdl/dda_bus_tb.v).
-std::vector<Field> bus_input_fields() {
-  return {{"rst_ni", 1, "reset, active low", "rst_n"},
-          {"ce_i", 1, "iteration enable", "ce"},
-          {"wb_cyc_i", 1, "Wishbone cycle", "cyc"},
-          {"wb_stb_i", 1, "Wishbone strobe", "stb"},
-          {"wb_we_i", 1, "Wishbone write enable", "we"},
-          {"wb_adr_i", motion::kAddrWidth, "Wishbone byte address", "adr"},
-          {"wb_dat_i", 32, "Wishbone write data", "dat_i"},
-          {"estop_ni", 1, "E-stop pin, active low", "estop_n"},
-          {"limit_i", 6, "limit pins {z+, z-, y+, y-, x+, x-}", "limit"},
-          {"home_i", 3, "home pins {z, y, x}", "home"},
-          {"probe_i", 1, "probe pin", "probe"}};
+std::vector<Field> bus_input_fields(motion::Bus bus) {
+  std::vector<Field> f{{"rst_ni", 1, "reset, active low", "rst_n"}, {"ce_i", 1, "iteration enable", "ce"}};
+  switch (bus) {
+    case motion::Bus::axil:
+      f.insert(f.end(), {{"s_awvalid_i", 1, "write address valid", "awvalid"},
+                         {"s_awaddr_i", motion::kAddrWidth, "write address", "awaddr"},
+                         {"s_wvalid_i", 1, "write data valid", "wvalid"},
+                         {"s_wdata_i", 32, "write data", "wdata"},
+                         {"s_wstrb_i", 4, "write strobes", "wstrb"},
+                         {"s_bready_i", 1, "write response ready", "bready"},
+                         {"s_arvalid_i", 1, "read address valid", "arvalid"},
+                         {"s_araddr_i", motion::kAddrWidth, "read address", "araddr"},
+                         {"s_rready_i", 1, "read data ready", "rready"}});
+      break;
+    case motion::Bus::spi:
+      f.insert(f.end(), {{"spi_csn_i", 1, "SPI chip select, active low", "csn"},
+                         {"spi_sck_i", 1, "SPI clock", "sck"},
+                         {"spi_mosi_i", 1, "SPI data in", "mosi"}});
+      break;
+    default:
+      f.insert(f.end(), {{"wb_cyc_i", 1, "Wishbone cycle", "cyc"},
+                         {"wb_stb_i", 1, "Wishbone strobe", "stb"},
+                         {"wb_we_i", 1, "Wishbone write enable", "we"},
+                         {"wb_adr_i", motion::kAddrWidth, "Wishbone byte address", "adr"},
+                         {"wb_dat_i", 32, "Wishbone write data", "dat_i"},
+                         {"wb_sel_i", 4, "Wishbone byte lanes", "sel"}});
+  }
+  f.insert(f.end(), {{"estop_ni", 1, "E-stop pin, active low", "estop_n"},
+                     {"limit_i", 6, "limit pins {z+, z-, y+, y-, x+, x-}", "limit"},
+                     {"home_i", 3, "home pins {z, y, x}", "home"},
+                     {"probe_i", 1, "probe pin", "probe"}});
+  return f;
 }
 
-std::vector<Field> bus_expect_fields() {
-  return {{"wb_ack_o", 1, "acknowledge, after the edge", "ack"},
-          {"wb_stall_o", 1, "stall, after the edge", "stall"},
-          {"wb_dat_o", 32, "read data, after the edge", "dat_o"},
-          {"step_x_o", 1, "X step pulse", "step_x"},
-          {"step_y_o", 1, "Y step pulse", "step_y"},
-          {"dir_x_o", 1, "X direction", "dir_x"},
-          {"dir_y_o", 1, "Y direction", "dir_y"},
-          {"step_z_o", 1, "Z step pulse", "step_z"},
-          {"dir_z_o", 1, "Z direction", "dir_z"},
-          {"busy_o", 1, "the core runs, or a step is on its way to the pins or a pulse is out", "busy"},
-          {"irq_o", 1, "interrupt", "irq"},
-          {"pos_x_q", 32, "X position register", "dut.pos_x_q"},
-          {"pos_y_q", 32, "Y position register", "dut.pos_y_q"},
-          {"pos_z_q", 32, "Z position register", "dut.pos_z_q"},
-          {"level_q", motion::kLevelWidth, "queue level register", "dut.level_q"},
-          {"done_count_q", 32, "done counter register", "dut.done_count_q"}};
+std::vector<Field> bus_expect_fields(motion::Bus bus) {
+  std::vector<Field> f;
+  switch (bus) {
+    case motion::Bus::axil:
+      f = {{"s_awready_o", 1, "write address ready", "awready"},
+           {"s_wready_o", 1, "write data ready", "wready"},
+           {"s_bvalid_o", 1, "write response valid", "bvalid"},
+           {"s_bresp_o", 2, "write response", "bresp"},
+           {"s_arready_o", 1, "read address ready", "arready"},
+           {"s_rvalid_o", 1, "read data valid", "rvalid"},
+           {"s_rdata_o", 32, "read data", "rdata"},
+           {"s_rresp_o", 2, "read response", "rresp"}};
+      break;
+    case motion::Bus::spi:
+      f = {{"spi_miso_o", 1, "SPI data out", "miso"}, {"spi_miso_oe_o", 1, "SPI data out enable", "miso_oe"}};
+      break;
+    default:
+      f = {{"wb_ack_o", 1, "acknowledge, after the edge", "ack"},
+           {"wb_stall_o", 1, "stall, after the edge", "stall"},
+           {"wb_dat_o", 32, "read data, after the edge", "dat_o"}};
+  }
+  // The block's registers, below the bench's instance (and the bridged top's u_motion).
+  const std::string blk = bus == motion::Bus::wishbone ? "dut." : "dut.u_motion.";
+  f.insert(f.end(), {{"step_x_o", 1, "X step pulse", "step_x"},
+                     {"step_y_o", 1, "Y step pulse", "step_y"},
+                     {"dir_x_o", 1, "X direction", "dir_x"},
+                     {"dir_y_o", 1, "Y direction", "dir_y"},
+                     {"step_z_o", 1, "Z step pulse", "step_z"},
+                     {"dir_z_o", 1, "Z direction", "dir_z"},
+                     {"busy_o", 1, "the core runs, or a step is on its way to the pins or a pulse is out", "busy"},
+                     {"irq_o", 1, "interrupt", "irq"},
+                     {"pos_x_q", 32, "X position register", blk + "pos_x_q"},
+                     {"pos_y_q", 32, "Y position register", blk + "pos_y_q"},
+                     {"pos_z_q", 32, "Z position register", blk + "pos_z_q"},
+                     {"level_q", motion::kLevelWidth, "queue level register", blk + "level_q"},
+                     {"done_count_q", 32, "done counter register", blk + "done_count_q"}});
+  return f;
+}
+
+// One cycle's words in the order of the fields above.
+std::vector<std::uint64_t> bus_input_word(motion::Bus bus, const motion::BusIn& host, const motion::BlockInputs& in) {
+  std::vector<std::uint64_t> v{in.rst_n, in.ce};
+  const motion::AxilIn& a = host.axil;
+  const std::uint32_t amask = (1u << motion::kAddrWidth) - 1;
+  switch (bus) {
+    case motion::Bus::axil:
+      v.insert(v.end(), {a.awvalid, a.awaddr & amask, a.wvalid, a.wdata, a.wstrb, a.bready, a.arvalid, a.araddr & amask,
+                         a.rready});
+      break;
+    case motion::Bus::spi:
+      v.insert(v.end(), {host.spi.csn, host.spi.sck, host.spi.mosi});
+      break;
+    default:
+      v.insert(v.end(), {in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat, in.bus.sel});
+  }
+  v.insert(v.end(), {in.pins.estop_n, in.pins.limit, in.pins.home, in.pins.probe});
+  return v;
+}
+std::vector<std::uint64_t> bus_expect_word(motion::Bus bus, const motion::BlockOutputs& o, const motion::BlockRegs& r) {
+  std::vector<std::uint64_t> v;
+  switch (bus) {
+    case motion::Bus::axil:
+      v = {o.axil.awready, o.axil.wready, o.axil.bvalid, o.axil.bresp,
+           o.axil.arready, o.axil.rvalid, o.axil.rdata,  o.axil.rresp};
+      break;
+    case motion::Bus::spi:
+      v = {o.spi.miso, o.spi.miso_oe};
+      break;
+    default:
+      v = {o.ack, o.stall, o.dat};
+  }
+  v.insert(v.end(), {o.step_x, o.step_y, o.dir_x, o.dir_y, o.step_z, o.dir_z, o.busy, o.irq, r[motion::breg("pos_x_q")],
+                     r[motion::breg("pos_y_q")], r[motion::breg("pos_z_q")], r[motion::breg("level_q")],
+                     r[motion::breg("done_count_q")]});
+  return v;
 }
 
 }  // namespace
 
-std::string bus_verilog_fields() {
-  const auto ef = bus_expect_fields();
+std::string bus_verilog_fields(motion::Bus bus) {
+  const auto ef = bus_expect_fields(bus);
   const int w = total_width(ef);
   std::ostringstream s;
+  const std::string kind = bus == motion::Bus::wishbone ? "motion" : std::string(motion::bus_name(bus));
+  const std::string with = bus == motion::Bus::wishbone ? "" : " --bridge " + std::string(motion::bus_name(bus));
   s << "// SPDX-License-Identifier: Apache-2.0\n"
-       "// Generated by `dda gen-params --kind motion-vector-fields` from cli/bus_vectors.cpp: the\n"
-       "// per-cycle layout of `dda vectors --bus` (docs/vectors.md). Do not edit: ctest\n"
-       "// vectors.bus.fields_in_sync checks it.\n";
-  s << "`define DDA_BVEC_IN_WIDTH " << total_width(bus_input_fields()) << "\n";
+       "// Generated by `dda gen-params --kind "
+    << kind << "-vector-fields` from cli/bus_vectors.cpp: the\n// per-cycle layout of `dda vectors --bus" << with
+    << "` (docs/vectors.md). Do not edit: ctest\n// vectors.bus.fields_in_sync checks it.\n";
+  s << "`define DDA_BVEC_IN_WIDTH " << total_width(bus_input_fields(bus)) << "\n";
   // The bench's registers, in the input word's order (most significant first).
-  const auto inf = bus_input_fields();
+  const auto inf = bus_input_fields(bus);
   s << "`define DDA_BVEC_UNPACK(v) {";
   for (std::size_t i = 0; i < inf.size(); ++i) s << (i ? ", " : "") << inf[i].verilog;
   s << "} = v\n";
@@ -87,6 +167,11 @@ std::string bus_verilog_fields() {
 void add_bus_options(CLI::App* vectors, BusCli& c) {
   vectors->add_flag("--bus", c.bus, "the motion block's set: Wishbone cycles in, steps and positions out");
   vectors->add_flag("--pipelined", c.pipelined, "with --bus: pipelined Wishbone cycles (default classic)");
+  vectors
+      ->add_option("--bridge", c.bridge,
+                   "with --bus: the block behind its AXI4-Lite (axil: rtl/dda_motion_axil.v) or SPI (spi: "
+                   "rtl/dda_motion_spi.v) bridge, driven by that bus (default: its Wishbone slave)")
+      ->check(CLI::IsMember({"axil", "spi"}));
   vectors
       ->add_option("--abort-after", c.abort_after,
                    "with --bus: abort N cycles after the last commit (default: none, the queue drains)")
@@ -141,12 +226,14 @@ motion::StageTimings parse_timing(const std::string& opt, const std::string& s) 
 }  // namespace
 
 BusOptions bus_options(const BusCli& c) {
-  const bool any = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() || !c.timing_y.empty() ||
-                   !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 || c.clock_hz != 0 || c.scenario();
+  const bool any = c.pipelined || !c.bridge.empty() || c.abort_after || !c.timing.empty() || !c.timing_x.empty() ||
+                   !c.timing_y.empty() || !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 ||
+                   c.clock_hz != 0 || c.scenario();
   if (!c.bus) {
     if (any) {
       throw InputError(
-          "--pipelined, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, --override*, "
+          "--pipelined, --bridge, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, "
+          "--override*, "
           "--hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only");
     }
     return BusOptions{};
@@ -159,6 +246,10 @@ BusOptions bus_options(const BusCli& c) {
       throw InputError("--io-scenario runs its own moves and settings: give it with --bus, --out-dir, --vcd alone");
     b.io_scenario = c.io_scenario;
     return b;
+  }
+  b.bridge = c.bridge == "axil" ? motion::Bus::axil : c.bridge == "spi" ? motion::Bus::spi : motion::Bus::wishbone;
+  if (c.pipelined && b.bridge != motion::Bus::wishbone) {
+    throw InputError("--pipelined chooses Wishbone cycles: it does not go with --bridge");
   }
   b.pipelined = c.pipelined;
   b.abort_after = c.abort_after;
@@ -195,7 +286,9 @@ BusOptions bus_options(const BusCli& c) {
 // The firmware's work: reset, preset the positions to the first arc's start, queue every
 // piece, then drain the queue (or abort), read the positions.
 void drive(motion::BusTarget& t, const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
-  motion::WishboneMaster m(t, opt.seed, bus.pipelined, bus.idle_percent);
+  const std::unique_ptr<motion::BusMaster> master =
+      motion::make_master(bus.bridge, t, opt.seed, bus.pipelined, bus.idle_percent);
+  motion::BusMaster& m = *master;
   std::mt19937_64 ce_rng(opt.seed + 1);
   std::uint64_t cycle = 0;  // the set's cycles so far
   m.each_cycle = [&] {
@@ -251,7 +344,8 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
   j["command_line"] = opt.command_line;
   j["cycles"] = ncycles;
   j["queue_depth_log2"] = motion::kMaxDepthLog2;
-  j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
+  j["bus"] = std::string(motion::bus_name(bus.bridge));
+  if (bus.bridge == motion::Bus::wishbone) j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
   j["abort_after"] = bus.abort_after;
   const auto timing = [](const motion::StageTimings& t) {
     return nlohmann::ordered_json{
@@ -292,38 +386,32 @@ void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, co
   SetWriter set(opt.out_dir);
   std::ostream& in_hex = set.open("cycle_in.hex");
   std::ostream& exp_hex = set.open("cycle_exp.hex");
-  motion::ModelTarget t;
+  motion::ModelTarget t(motion::kMaxDepthLog2, bus.bridge);
   std::uint64_t ncycles = 0;
-  const auto inf = bus_input_fields();
-  const auto exf = bus_expect_fields();
+  const auto inf = bus_input_fields(bus.bridge);
+  const auto exf = bus_expect_fields(bus.bridge);
   // (A line's length: a word of zeros, as hex_word() writes every word, and its newline.)
   const auto line_of = [](const std::vector<Field>& f) {
     return std::uint64_t(hex_word(f, std::vector<std::uint64_t>(f.size(), 0)).size() + 1);
   };
   const std::uint64_t line = line_of(inf) + line_of(exf);
-  t.on_edge = [&](const motion::BlockInputs& in, const motion::MotionModel& m) {
+  t.on_edge = [&](const motion::BusIn& host, const motion::BlockInputs& in, const motion::BlockOutputs& o,
+                  const motion::MotionModel& m) {
     if ((ncycles + 1) * line > opt.max_size) {
       throw InputError(
           fmt::format("the vector set would take more than --max-size {} ({} bytes) after {} cycles: "
                       "nothing is written (a larger --max-size writes it)",
                       size_text(opt.max_size), opt.max_size, ncycles));
     }
-    const motion::BlockOutputs o = m.outputs();
-    const auto& r = m.regs();
-    in_hex << hex_word(inf, {in.rst_n, in.ce, in.bus.cyc, in.bus.stb, in.bus.we, in.bus.adr, in.bus.dat,
-                             in.pins.estop_n, in.pins.limit, in.pins.home, in.pins.probe})
-           << '\n';
-    exp_hex << hex_word(exf, {o.ack, o.stall, o.dat, o.step_x, o.step_y, o.dir_x, o.dir_y, o.step_z, o.dir_z, o.busy,
-                              o.irq, r[motion::breg("pos_x_q")], r[motion::breg("pos_y_q")], r[motion::breg("pos_z_q")],
-                              r[motion::breg("level_q")], r[motion::breg("done_count_q")]})
-            << '\n';
+    in_hex << hex_word(inf, bus_input_word(bus.bridge, host, in)) << '\n';
+    exp_hex << hex_word(exf, bus_expect_word(bus.bridge, o, m.regs())) << '\n';
     ++ncycles;
   };
   drive_set(t, plans, opt, bus);
   if (!bus.vcd.empty()) {
     // The RTL through the same cycles (the master decides from the outputs, equal to the
     // model's edge by edge: the harness checks every edge), writing its waveform.
-    motion::MotionHarness h(bus.vcd);
+    motion::MotionHarness h(bus.vcd, bus.bridge);
     drive_set(h, plans, opt, bus);
   }
 

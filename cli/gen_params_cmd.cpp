@@ -30,6 +30,8 @@ enum class GenKind {
   MotionC,
   MotionVerilog,
   MotionVectorFields,
+  AxilVectorFields,
+  SpiVectorFields,
   GtkwMotion,
   StepdirDiagram,
 };
@@ -78,6 +80,12 @@ void write_gen_params(std::ostream& os, GenKind kind, int acc, int cnt) {
     case GenKind::MotionVectorFields:  // the bus bench's field table
       os << vec::bus_verilog_fields();
       break;
+    case GenKind::AxilVectorFields:  // ... with the block behind a bridge
+      os << vec::bus_verilog_fields(motion::Bus::axil);
+      break;
+    case GenKind::SpiVectorFields:
+      os << vec::bus_verilog_fields(motion::Bus::spi);
+      break;
     case GenKind::GtkwMotion:  // the motion block's waveform: dda vectors --bus --vcd
       os << motion::gtkw("dda_motion.gtkw", "dut.dda_motion", motion::kMaxDepthLog2);
       break;
@@ -90,15 +98,16 @@ void write_gen_params(std::ostream& os, GenKind kind, int acc, int cnt) {
 }  // namespace
 
 void add_gen_params_options(CLI::App* sub, GenParamsCli& g) {
-  sub->add_option(
-      "--kind", g.kind,
-      "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
-      "the largest semi-axis they hold at the default width), vector-fields "
-      "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
-      "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
-      "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
-      "rtl/dda_motion_regs.vh), motion-vector-fields (tb/hdl/dda_bus_vec_fields.vh), stepdir-diagram, gtkw-motion "
-      "(docs/dda_motion.gtkw); default verilog");
+  sub->add_option("--kind", g.kind,
+                  "verilog (rtl/dda_params.vh), markdown (docs/design.md tables), json (the widths and "
+                  "the largest semi-axis they hold at the default width), vector-fields "
+                  "(tb/hdl/dda_vec_fields.vh), gtkw-systemc or gtkw-rtl (docs/dda_*.gtkw), registers (the "
+                  "architectural registers and their widths: scripts/formal.sh), motion-markdown, motion-c or "
+                  "motion-verilog (the motion block's register map: docs/design.md, fw/dda_motion_regs.h, "
+                  "rtl/dda_motion_regs.vh), motion-vector-fields, axil-vector-fields or spi-vector-fields "
+                  "(tb/hdl/dda_bus_vec_fields.vh, "
+                  "dda_axil_vec_fields.vh, dda_spi_vec_fields.vh), stepdir-diagram, gtkw-motion "
+                  "(docs/dda_motion.gtkw); default verilog");
   sub->add_option("--out", g.out, "write to FILE (atomically; - or none: standard output)");
   sub->add_option("--acc-width", g.acc_width,
                   "--kind verilog, json or registers at another accumulator width (formal proofs, scripts/synth --acc; "
@@ -124,6 +133,8 @@ void run_gen_params(const GenParamsCli& g) {
                                             {"motion-c", GenKind::MotionC},
                                             {"motion-verilog", GenKind::MotionVerilog},
                                             {"motion-vector-fields", GenKind::MotionVectorFields},
+                                            {"axil-vector-fields", GenKind::AxilVectorFields},
+                                            {"spi-vector-fields", GenKind::SpiVectorFields},
                                             {"gtkw-motion", GenKind::GtkwMotion},
                                             {"stepdir-diagram", GenKind::StepdirDiagram}});
   const bool sized = kind == GenKind::Verilog || kind == GenKind::Json || kind == GenKind::Registers;

@@ -35,10 +35,11 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt);
 
 // dda vectors --bus: the motion block's per-cycle set (cli/bus_vectors.cpp).
 struct BusOptions {
-  bool pipelined = false;   // Wishbone cycles: classic or pipelined
-  int idle_percent = 20;    // chance of an idle cycle before each request (seeded)
-  int abort_after = 0;      // > 0: abort that many cycles after the last commit
-  std::string vcd;          // non-empty: also run the RTL through the same cycles, this waveform
+  motion::Bus bridge = motion::Bus::wishbone;  // the block's own bus, or behind a bridge
+  bool pipelined = false;                      // Wishbone cycles: classic or pipelined
+  int idle_percent = 20;                       // chance of an idle cycle before each request (seeded)
+  int abort_after = 0;                         // > 0: abort that many cycles after the last commit
+  std::string vcd;                             // non-empty: also run the RTL through the same cycles, this waveform
   std::string io_scenario;  // non-empty: this machine-input scenario (motion::kIoScenarios), not the plans
   motion::StageTimings timing_x, timing_y, timing_z;  // the step/dir stages' timings (cycles)
   std::uint32_t polarity = 0;                         // POLARITY
@@ -63,6 +64,7 @@ struct BusOptions {
 // a malformed timing, a feed without --bus, ...).
 struct BusCli {
   bool bus = false, pipelined = false;
+  std::string bridge;  // "axil", "spi" or empty (Wishbone)
   int abort_after = 0;
   std::string timing, timing_x, timing_y, timing_z;
   std::uint32_t polarity = 0, feed = 0;
@@ -89,13 +91,13 @@ std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, 
 // After the last commit: the scenario's events at their cycles (cycle: the set's cycle
 // count, kept by the caller) and an abort abort_after cycles on, until the queue is
 // empty, the block idle and no event is left.
-void run_bus_scenario(motion::WishboneMaster& m, motion::MotionDriver& d, const BusOptions& b,
-                      const std::uint64_t& cycle);
+void run_bus_scenario(motion::BusMaster& m, motion::MotionDriver& d, const BusOptions& b, const std::uint64_t& cycle);
 void add_bus_options(CLI::App* vectors, BusCli& c);
 BusOptions bus_options(const BusCli& c);
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus);
-// The bus bench's field table (tb/hdl/dda_bus_vec_fields.vh).
-std::string bus_verilog_fields();
+// The bus bench's field table of a bus (tb/hdl/dda_bus_vec_fields.vh,
+// dda_axil_vec_fields.vh, dda_spi_vec_fields.vh).
+std::string bus_verilog_fields(motion::Bus bus = motion::Bus::wishbone);
 
 // A Verilog macro NAME(cyc, exp, got) that prints the first field (most significant
 // first, name and width) where the expected and the sampled words differ.

@@ -10,7 +10,9 @@
 # only if every simulator fails with a line containing TEXT (an assertion's message).
 # --impl fast builds the core's fast implementation (-DDDA_IMPL_FAST; default small).
 # --bus runs a bus-level set (`dda vectors --bus`) through tb/hdl/dda_bus_tb.v on the
-# motion block (rtl/dda_motion.f) instead.
+# motion block (rtl/dda_motion.f) instead; a set of the block behind a bridge (its
+# manifest's "bus": axil or spi) on the bridged top (rtl/dda_motion_axil.f,
+# rtl/dda_motion_spi.f; the bench built with DDA_BVEC_AXIL or DDA_BVEC_SPI).
 # --ice40 builds the RTL as scripts/synth synthesizes it (-DDDA_ICE40: the small
 # implementation's hand-placed SB_LUT4 and SB_CARRY cells, with Yosys' models of them
 # from scripts/ice40-cells.sh).
@@ -46,7 +48,16 @@ out="$build/vec_bench"
 [ "$rtl_dir" = "$root/rtl" ] || out="$build/vec_bench_$(basename "$rtl_dir")"
 [ "$impl" = small ] || out="${out}_$impl"
 [ "$ice40" = 0 ] || out="${out}_ice40"
-[ "$bus" = 0 ] || out="${out}_bus"
+bridge=wishbone
+if [ "$bus" = 1 ]; then
+  bridge=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("bus", "wishbone"))' \
+    "$set_dir/manifest.json")
+  case "$bridge" in
+    wishbone) out="${out}_bus" ;;
+    axil|spi) out="${out}_$bridge"; defs+=("-DDDA_BVEC_$(echo "$bridge" | tr a-z A-Z)") ;;
+    *) echo "vector-bench: $set_dir/manifest.json: unknown bus '$bridge'" >&2; exit 2 ;;
+  esac
+fi
 mkdir -p "$out"
 # The RTL comes from its file list, rtl/dda_core.f, with DDA_RTL naming the folder
 # (a mutated copy is the same list pointed at another folder).
@@ -55,6 +66,7 @@ vl_extra=()  # a mutated copy may leave signals unused: its lint warnings do not
 [ "$rtl_dir" = "$root/rtl" ] || vl_extra=(-Wno-fatal)
 flist=$root/rtl/dda_core.f tb_top=dda_vec_tb
 [ "$bus" = 0 ] || { flist=$root/rtl/dda_motion.f; tb_top=dda_bus_tb; }
+[ "$bridge" = wishbone ] || flist=$root/rtl/dda_motion_$bridge.f
 mapfile -t rtl_srcs < <("$root/scripts/rtl-files.sh" "$flist")
 srcs=("$root/tb/hdl/$tb_top.v")
 if [ "$ice40" = 1 ]; then
@@ -67,7 +79,8 @@ newer() { local t=$1; shift; [ ! -e "$t" ] && return 0; for f in "$@"; do [ "$f"
 deps=("${srcs[@]}" "$flist")
 for f in "${rtl_srcs[@]}"; do deps+=("$rtl_dir/${f#"$root/rtl/"}"); done
 deps+=("$root/rtl/dda_params.vh" "$root/rtl/dda_assert.vh" "$root/tb/hdl/dda_vec_fields.vh"
-       "$root/rtl/dda_motion_regs.vh" "$root/tb/hdl/dda_bus_vec_fields.vh")
+       "$root/rtl/dda_motion_regs.vh" "$root/tb/hdl/dda_bus_vec_fields.vh" "$root/tb/hdl/dda_axil_vec_fields.vh"
+       "$root/tb/hdl/dda_spi_vec_fields.vh")
 
 if [ -n "$corrupt_cycle" ]; then
   work=$(mktemp -d -t dda-vec-corrupt.XXXXXX)

@@ -195,8 +195,30 @@ dda_rtl_test(vectors.bus.detects_corruption NEEDS IVERILOG VVP VERILATOR
 set_tests_properties(vectors.bus.detects_corruption PROPERTIES FIXTURES_REQUIRED bvec_paper LABELS "rtl;motion"
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR} RESOURCE_LOCK vec_bench_build_bus)
 add_test(NAME vectors.bus.fields_in_sync
-         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind motion-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_bus_vec_fields.vh")
-set_tests_properties(vectors.bus.fields_in_sync PROPERTIES LABELS motion)
+         COMMAND ${DDA_BASH_EXE} -c "$<TARGET_FILE:dda> gen-params --kind motion-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_bus_vec_fields.vh && $<TARGET_FILE:dda> gen-params --kind axil-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_axil_vec_fields.vh && $<TARGET_FILE:dda> gen-params --kind spi-vector-fields | diff - ${PROJECT_SOURCE_DIR}/tb/hdl/dda_spi_vec_fields.vh")
+set_tests_properties(vectors.bus.fields_in_sync PROPERTIES LABELS "motion;bridges")
+# The block behind its bridges (label bridges): the paper's example and three arcs
+# queued while the block runs, over AXI4-Lite and over SPI; the paper's example with
+# drive timings and a feed over AXI4-Lite; a corrupted expected value fails both
+# simulators.
+dda_bus_vec_set(axil_paper --bridge axil --a 10 --b 6 --bits 4 --preload zero)
+dda_bus_vec_set(axil_queue --bridge axil --a 10 --b 6 --bits 4 --preload zero --ce-percent 90 --seed 7
+                --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200")
+dda_bus_vec_set(axil_paper_timed --bridge axil --a 10 --b 6 --bits 4 --preload zero --timing-x 5,3,4,2
+                --timing-y 2,9,0,3 --polarity 5 --feed-rate 400000 --clock 48000000 --seed 5)
+dda_bus_vec_set(spi_paper --bridge spi --a 10 --b 6 --bits 4 --preload zero)
+dda_bus_vec_set(spi_queue --bridge spi --a 10 --b 6 --bits 4 --preload zero --ce-percent 90 --seed 7
+                --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200")
+foreach(_name axil_paper axil_queue axil_paper_timed spi_paper spi_queue)
+  set_property(TEST vectors.bus.gen_${_name} vectors.bus.${_name} APPEND PROPERTY LABELS bridges)
+endforeach()
+foreach(_bridge axil spi)
+  dda_rtl_test(vectors.bus.${_bridge}_detects_corruption NEEDS IVERILOG VVP VERILATOR
+               COMMAND ${_dda_scripts}/vector-bench.sh --bus --corrupt 200 pos_x_q ${_dda_bvec}/${_bridge}_paper)
+  set_tests_properties(vectors.bus.${_bridge}_detects_corruption PROPERTIES FIXTURES_REQUIRED bvec_${_bridge}_paper
+                       LABELS "rtl;motion;bridges" ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR}
+                       RESOURCE_LOCK vec_bench_build_bus)
+endforeach()
 # The motion block's waveform: `dda vectors --bus --vcd` runs the RTL through the set's
 # cycles; the GTKWave save file names only signals it declares, and is what
 # `dda gen-params --kind gtkw-motion` writes.

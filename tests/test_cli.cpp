@@ -514,10 +514,36 @@ TEST_CASE("cli: vectors --bus writes the motion block's set, and --pipelined and
   r = run_dda(s, "vectors " + kPaper + " --pipelined --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK(r.err ==
-        "dda: error: --pipelined, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, "
-        "--override*, --hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only\n");
+        "dda: error: --pipelined, --bridge, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, "
+        "--vmin, --override*, --hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only\n");
   CHECK_FALSE(fs::exists(bad));
   r = run_dda(s, "vectors " + kPaper + " --bus --abort-after 0 --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK_FALSE(fs::exists(bad));
+}
+
+TEST_CASE("cli: vectors --bus --bridge writes the bridged block's set, and careless bridge options are refused",
+          "[cli][motion][bridges][errors]") {
+  Scratch s;
+  for (const std::string bridge : {"axil", "spi"}) {
+    const fs::path dir = s.dir / bridge;
+    Result r = run_dda(s, "vectors " + kPaper + " --bus --bridge " + bridge + " --out-dir " + dir.string());
+    INFO("stderr: " << r.err);
+    REQUIRE(r.status == 0);
+    const auto m = nlohmann::json::parse(slurp(dir / "manifest.json"));
+    CHECK(m["bus"] == bridge);
+    CHECK_FALSE(m.contains("bus_cycles"));
+    CHECK(m["layout"]["cycle_exp"][0]["name"] == (bridge == "axil" ? "s_awready_o" : "spi_miso_o"));
+  }
+  const fs::path bad = s.dir / "bad";
+  Result r = run_dda(s, "vectors " + kPaper + " --bus --bridge axil --pipelined --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK(r.err == "dda: error: --pipelined chooses Wishbone cycles: it does not go with --bridge\n");
+  r = run_dda(s, "vectors " + kPaper + " --bus --bridge i2c --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  r = run_dda(s, "vectors " + kPaper + " --bridge spi --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  r = run_dda(s, "vectors --bus --bridge spi --io-scenario estop --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK_FALSE(fs::exists(bad));
 }

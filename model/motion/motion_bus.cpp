@@ -20,7 +20,7 @@ void ModelTarget::tick(const BusIn& bus) {
     bridge_->edge(rst_n_, bus, before);
     bridge_->outputs(out_);
   }
-  if (on_edge) on_edge(in, model_);
+  if (on_edge) on_edge(bus, in, out_, model_);
 }
 
 void PieceMonitor::set_reset(bool rst_n) {

@@ -60,8 +60,8 @@ class BusTap : public BusTarget {
 };
 
 // The reference model alone, on its Wishbone bus or behind a bridge (the bridge's
-// reference model, motion/bridges.hpp); `on_edge` sees every edge's inputs as the block
-// took them and the state after it.
+// reference model, motion/bridges.hpp); `on_edge` sees every edge's bus inputs as the
+// host drove them, the inputs as the block took them, and the outputs and state after it.
 class ModelTarget : public BusTarget {
  public:
   explicit ModelTarget(int depth_log2 = kMaxDepthLog2, Bus bus = Bus::wishbone)
@@ -76,7 +76,7 @@ class ModelTarget : public BusTarget {
   const MotionModel& model() const override { return model_; }
   // The bridge's reference model (nullptr on Wishbone).
   const Bridge* bridge() const { return bridge_.get(); }
-  std::function<void(const BlockInputs&, const MotionModel&)> on_edge;
+  std::function<void(const BusIn&, const BlockInputs&, const BlockOutputs&, const MotionModel&)> on_edge;
 
  private:
   MotionModel model_;
