@@ -74,6 +74,35 @@ VlBlockSampler::VlBlockSampler(const VerilatedContext& ctx, const std::string& s
 
 VlBlockSampler::~VlBlockSampler() = default;
 
+struct VlRegSampler::Vars {
+  std::vector<Var> v;
+};
+
+VlRegSampler::VlRegSampler(const VerilatedContext& ctx, const std::string& scope, const std::vector<BridgeReg>& regs)
+    : v_(std::make_unique<Vars>()) {
+  for (const auto& r : regs) v_->v.push_back(find_var(ctx, scope, r.name, r.width));
+}
+
+VlRegSampler::~VlRegSampler() = default;
+
+std::vector<std::uint64_t> VlRegSampler::read() const {
+  std::vector<std::uint64_t> r;
+  for (const auto& v : v_->v) r.push_back(v.read());
+  return r;
+}
+
+std::string compare_bridge(Bus bus, const std::vector<std::uint64_t>& got, const Bridge& model) {
+  const std::vector<std::uint64_t> want = model.regs();
+  const std::vector<BridgeReg> names = bridge_regs(bus);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (got.at(i) != want.at(i)) {
+      return "u_bridge." + std::string(names[i].name) + " is " + std::to_string(got[i]) +
+             ", the reference model says " + std::to_string(want[i]);
+    }
+  }
+  return "";
+}
+
 BlockRegs VlBlockSampler::block() const {
   BlockRegs r{};
   for (std::size_t i = 0; i < block_->v.size(); ++i) r[i] = block_->v[i].read();
@@ -173,7 +202,7 @@ class MotionHarness::TopOf : public Top {
     v_->estop_ni = 1;
     drive_bus(*v_, block_inputs(false, false, BusIn{}), BusIn{});
     v_->eval();
-    for (const auto& r : bridge_regs(bus)) bridge_.push_back(find_var(ctx, top_ + ".u_bridge", r.name, r.width));
+    bridge_ = std::make_unique<VlRegSampler>(ctx, top_ + ".u_bridge", bridge_regs(bus));
     vcd_ = open_waveform(*v_, ctx, vcd);
   }
   ~TopOf() override {
@@ -207,11 +236,7 @@ class MotionHarness::TopOf : public Top {
     o.irq = v_->irq_o;
     return o;
   }
-  std::vector<std::uint64_t> bridge() const override {
-    std::vector<std::uint64_t> r;
-    for (const auto& v : bridge_) r.push_back(v.read());
-    return r;
-  }
+  std::vector<std::uint64_t> bridge() const override { return bridge_->read(); }
   std::string scope() const override { return bus_ == Bus::wishbone ? top_ : top_ + ".u_motion"; }
 
  private:
@@ -220,7 +245,7 @@ class MotionHarness::TopOf : public Top {
   std::unique_ptr<VerilatedVcdC> vcd_;
   std::string top_;
   Bus bus_;
-  std::vector<Var> bridge_;
+  std::unique_ptr<VlRegSampler> bridge_;
 };
 
 MotionHarness::MotionHarness(const std::string& vcd, Bus bus)
@@ -266,14 +291,8 @@ void MotionHarness::tick(const BusIn& bus) {
     // The block's own bus is inside the top: its outputs are its registers.
     out_.ack = out_.stall = regs[breg("ack_q")] != 0;
     out_.dat = std::uint32_t(regs[breg("dat_q")]);
-    const std::vector<std::uint64_t> got = top_->bridge(), ref = bridge_->regs();
-    const std::vector<BridgeReg> names = bridge_regs(bus_);
-    for (std::size_t i = 0; i < got.size(); ++i) {
-      if (got[i] != ref[i]) {
-        throw GuardError(at + "u_bridge." + std::string(names[i].name) + " is " + std::to_string(got[i]) +
-                         ", the reference model says " + std::to_string(ref[i]));
-      }
-    }
+    const std::string d = compare_bridge(bus_, top_->bridge(), *bridge_);
+    if (!d.empty()) throw GuardError(at + d);
   }
   if (!(out_ == want)) throw GuardError(at + "output ports " + out_.diff(want) + " (rtl/reference model)");
   const std::string diff = compare_block(regs, sampler_->core(), model_);

@@ -41,22 +41,34 @@ class VlBlockSampler {
   std::unique_ptr<rtl::VlSampler> core_;
 };
 
+// Registers of given names and widths below `scope` of a Verilated model (a bridge's:
+// kAxilRegs, kSpiRegs); GuardError as VlBlockSampler's.
+class VlRegSampler {
+ public:
+  VlRegSampler(const VerilatedContext& ctx, const std::string& scope, const std::vector<BridgeReg>& regs);
+  ~VlRegSampler();
+  std::vector<std::uint64_t> read() const;
+
+ private:
+  struct Vars;
+  std::unique_ptr<Vars> v_;
+};
+
+// Compares a bridge's registers (got) with its reference model's; "" when equal, else the
+// first difference ("u_bridge.<register> is A, the reference model says B").
+std::string compare_bridge(Bus bus, const std::vector<std::uint64_t>& got, const Bridge& model);
+
 // Compares what a block holds with what the reference model holds; "" when equal, else
 // the first difference ("<register> is A, the reference model says B").
 std::string compare_block(const BlockRegs& got, const Signals& got_core, const MotionModel& m);
 
-class MotionHarness : public BusTarget {
+class MotionHarness : public HeldInputs {
  public:
   // GuardError for a bridge when the harness was built without them (the dda command's:
   // the tests' harness has them).
   explicit MotionHarness(const std::string& vcd = "", Bus bus = Bus::wishbone);
   ~MotionHarness() override;
 
-  // Inputs of the next edge besides the bus (which the master drives).
-  void set_reset(bool rst_n) override { rst_n_ = rst_n; }
-  void set_ce(bool ce) override { ce_ = ce; }
-  void set_pins(const MachinePins& pins) override { pins_ = pins; }
-  const MachinePins& pins() const override { return pins_; }
   // One edge of both: the RTL and the model; then compares them and throws GuardError
   // naming the cycle and the first signal that differs.
   void tick(const BusIn& bus) override;
@@ -79,8 +91,6 @@ class MotionHarness : public BusTarget {
   BusIn seen_;
   StepDirChecker timing_;
   BlockOutputs out_;
-  MachinePins pins_;
-  bool rst_n_ = true, ce_ = true;
   std::uint64_t cycle_ = 0;
 };
 

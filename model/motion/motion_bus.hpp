@@ -59,17 +59,27 @@ class BusTap : public BusTarget {
   BusTarget& t_;
 };
 
-// The reference model alone, on its Wishbone bus or behind a bridge (the bridge's
-// reference model, motion/bridges.hpp); `on_edge` sees every edge's bus inputs as the
-// host drove them, the inputs as the block took them, and the outputs and state after it.
-class ModelTarget : public BusTarget {
+// A target that keeps the next edge's reset, ce_i and pins until its tick (the models
+// and the harnesses).
+class HeldInputs : public BusTarget {
  public:
-  explicit ModelTarget(int depth_log2 = kMaxDepthLog2, Bus bus = Bus::wishbone)
-      : model_(depth_log2), bridge_(make_bridge(bus)) {}
   void set_reset(bool rst_n) override { rst_n_ = rst_n; }
   void set_ce(bool ce) override { ce_ = ce; }
   void set_pins(const MachinePins& pins) override { pins_ = pins; }
   const MachinePins& pins() const override { return pins_; }
+
+ protected:
+  bool rst_n_ = true, ce_ = true;
+  MachinePins pins_;
+};
+
+// The reference model alone, on its Wishbone bus or behind a bridge (the bridge's
+// reference model, motion/bridges.hpp); `on_edge` sees every edge's bus inputs as the
+// host drove them, the inputs as the block took them, and the outputs and state after it.
+class ModelTarget : public HeldInputs {
+ public:
+  explicit ModelTarget(int depth_log2 = kMaxDepthLog2, Bus bus = Bus::wishbone)
+      : model_(depth_log2), bridge_(make_bridge(bus)) {}
   void tick(const BusIn& bus) override;
   const BusIn& bus_seen() const override { return seen_; }
   const BlockOutputs& outputs() const override { return out_; }
@@ -83,8 +93,6 @@ class ModelTarget : public BusTarget {
   std::unique_ptr<Bridge> bridge_;
   BusIn seen_;
   BlockOutputs out_;
-  MachinePins pins_;
-  bool rst_n_ = true, ce_ = true;
 };
 
 // Checks every finished piece's end point: a target between the master and the block

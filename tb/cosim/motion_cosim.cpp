@@ -69,23 +69,22 @@ MotionCosim::~MotionCosim() {
   if (rtl_) rtl_->final();
 }
 
-BlockRegs MotionCosim::sc_block() const {
+std::uint64_t sc_signal_value(const std::string& name) {
+  sc_core::sc_object* o = sc_core::sc_find_object(name.c_str());
+  if (const auto* b = dynamic_cast<const sc_core::sc_signal<bool>*>(o)) return b->read();
+  if (const auto* u = dynamic_cast<const sc_core::sc_signal<std::uint32_t>*>(o)) return u->read();
+  if (const auto* l = dynamic_cast<const sc_core::sc_signal<std::uint64_t>*>(o)) return l->read();
+  throw GuardError("motion cosim: the SystemC model has no register " + name);
+}
+
+BlockRegs sc_block_regs(const std::string& scope) {
   BlockRegs r{};
-  for (std::size_t i = 0; i < kBlockRegs.size(); ++i) {
-    const std::string name = std::string(sc_->name()) + "." + std::string(kBlockRegs[i].name);
-    sc_core::sc_object* o = sc_core::sc_find_object(name.c_str());
-    if (const auto* b = dynamic_cast<const sc_core::sc_signal<bool>*>(o)) {
-      r[i] = b->read();
-    } else if (const auto* u = dynamic_cast<const sc_core::sc_signal<std::uint32_t>*>(o)) {
-      r[i] = u->read();
-    } else if (const auto* l = dynamic_cast<const sc_core::sc_signal<std::uint64_t>*>(o)) {
-      r[i] = l->read();
-    } else {
-      throw GuardError("motion cosim: the SystemC model has no register " + name);
-    }
-  }
+  for (std::size_t i = 0; i < kBlockRegs.size(); ++i)
+    r[i] = sc_signal_value(scope + "." + std::string(kBlockRegs[i].name));
   return r;
 }
+
+BlockRegs MotionCosim::sc_block() const { return sc_block_regs(sc_->name()); }
 
 void MotionCosim::tick(const BusIn& bus) {
   const BlockInputs in = block_inputs(rst_n_v_, ce_v_, bus, pins_v_);

@@ -20,6 +20,11 @@ class Vdda_motion_sc;
 
 namespace dda::motion {
 
+// A register of a SystemC model by its hierarchical name (a bool, 32- or 64-bit signal);
+// the block's registers (kBlockRegs) below a dda_motion's name. GuardError if missing.
+std::uint64_t sc_signal_value(const std::string& name);
+BlockRegs sc_block_regs(const std::string& scope);
+
 class MotionCosim : public BusTarget {
  public:
   MotionCosim();
