@@ -332,7 +332,7 @@
 /* The SPI bridge's frame: CS_n low for 64 rising SCK edges, MSB first. */
 #define DDA_MOTION_SPI_FRAME_BITS 64u
 #define DDA_MOTION_SPI_WRITE 0x80u
-#define DDA_MOTION_SPI_COMMAND_AT 0u  /* MOSI: bit 7 write (1) or read (0), bits 3:0 a write's byte lanes, bits 6:4 zero */
+#define DDA_MOTION_SPI_COMMAND_AT 0u  /* MOSI: bit 7 write (1) or read (0), bits 3:0 a write's lanes, bits 6:4 reserved (0, ignored) */
 #define DDA_MOTION_SPI_ADDRESS_AT 8u  /* MOSI: the register's byte address (the bits above the block's ignored) */
 #define DDA_MOTION_SPI_DATA_AT 24u  /* MOSI: a write's data; MISO: the previous frame's read data */
 #define DDA_MOTION_SPI_STATUS_AT 56u  /* MISO: the status byte (kSpiStatus) */

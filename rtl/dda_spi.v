@@ -2,7 +2,7 @@
 // SPI slave (mode 0) in front of the motion block's Wishbone slave (docs/design.md, "Bus
 // bridges"): one register access per complete frame, none for any other.
 // A frame is CS_n low for exactly 64 rising SCK edges, most significant bit first:
-//   MOSI: command (8: bit 7 write, bits 3:0 the byte lanes of a write, bits 6:4 zero),
+//   MOSI: command (8: bit 7 write, bits 3:0 the byte lanes of a write, bits 6:4 reserved),
 //         address (16: a byte address, the bits above the map's ignored), write data
 //         (32), 8 bits ignored;
 //   MISO: 24 zeros, the previous frame's read data (32), a status byte (8).
@@ -14,8 +14,9 @@
 // block's irq_o, bit 3 its busy_o, bits 7:4 the count of accesses made (modulo 16).
 // Every input goes through a two flip-flop synchronizer (SCK, CS_n and MOSI alike), so
 // SCK may be at most a quarter of the block's clock: MOSI is sampled on SCK's rising
-// edge; MISO changes three clocks after a rising edge (after the falling edge at that
-// speed, well before the next rising one). CS_n falls at least two clocks before the
+// edge; MISO changes on the second clock edge after the first one that samples SCK
+// high (two to three clocks after SCK rose: at the falling edge or after it at that
+// speed, before the next rising one). CS_n falls at least two clocks before the
 // first rising SCK edge and stays high at least four clocks between frames.
 `include "dda_motion_regs.vh"
 

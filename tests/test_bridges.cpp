@@ -83,6 +83,10 @@ TEST_CASE("bridges: SPI, a frame one edge short or one edge long makes no access
   m.frame(spi_word(true, accel, 0xCAFEu));
   CHECK(m.read(accel) == 0xCAFEu);
   CHECK(h.model().regs()[breg("accel_q")] == 0xCAFEu);
+  // SCK at exactly a quarter of the clock, every half period two clocks.
+  SpiMaster fast(h, 6, 2, false);
+  fast.write(accel, 0x5A5A1234u);
+  CHECK(fast.read(accel) == 0x5A5A1234u);
 }
 
 TEST_CASE("bridges: AXI4-Lite, data before address, a read between, responses held until taken", "[bridges]") {

@@ -125,7 +125,7 @@ struct SpiPart {
 };
 inline constexpr int kSpiFrameBits = 64;
 inline constexpr std::array<SpiPart, 4> kSpiFrame{{
-    {"command", 0, 8, "MOSI: bit 7 write (1) or read (0), bits 3:0 a write's byte lanes, bits 6:4 zero"},
+    {"command", 0, 8, "MOSI: bit 7 write (1) or read (0), bits 3:0 a write's lanes, bits 6:4 reserved (0, ignored)"},
     {"address", 8, 16, "MOSI: the register's byte address (the bits above the block's ignored)"},
     {"data", 24, 32, "MOSI: a write's data; MISO: the previous frame's read data"},
     {"status", 56, 8, "MISO: the status byte (kSpiStatus)"},
