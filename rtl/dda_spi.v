@@ -72,7 +72,7 @@ module dda_spi (
   reg [31:0]   rdata_q /* verilator public_flat_rd */;
   reg          done_q /* verilator public_flat_rd */;
   reg          bad_q /* verilator public_flat_rd */;
-  reg [3:0]    count_q /* verilator public_flat_rd */;
+  reg [`DDA_MOTION_SPI_ST_COUNT_WIDTH-1:0] count_q /* verilator public_flat_rd */;
 
   wire start = csn_q[2] & ~csn_q[1];  // CS_n fell
   wire stop  = ~csn_q[2] & csn_q[1];  // CS_n rose
@@ -113,7 +113,7 @@ module dda_spi (
       rdata_q <= 32'd0;
       done_q  <= 1'b0;
       bad_q   <= 1'b0;
-      count_q <= 4'd0;
+      count_q <= '0;
     end else begin
       csn_q  <= {csn_q[1], csn_q[0], spi_csn_i};
       sck_q  <= {sck_q[1], sck_q[0], spi_sck_i};
@@ -151,7 +151,7 @@ module dda_spi (
           sel_q   <= in_q[CmdLo+:4];
           adr_q   <= in_q[AdrLo+:AW];
           dat_q   <= in_q[DatLo+:32];
-          count_q <= count_q + 4'd1;
+          count_q <= count_q + 1'b1;
         end
       end
     end

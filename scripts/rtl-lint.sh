@@ -24,6 +24,14 @@ for top in dda_motion_axil dda_motion_spi; do
   out=$out$out3
   [ $rc3 -eq 0 ] || rc=$rc3
 done
+# The bridges alone in the wrapper of their place-and-route figures, each bus.
+for bus in axil spi; do
+  out3=$("$verilator" --lint-only -Wall -Irtl rtl/lint.vlt rtl/dda_axil.v rtl/dda_spi.v rtl/fpga/dda_bridge_top.v \
+    --top-module dda_bridge_top -GBus="\"$bus\"" 2>&1)
+  rc3=$?
+  out=$out$out3
+  [ $rc3 -eq 0 ] || rc=$rc3
+done
 [ -n "$out" ] && echo "$out"
 if [ $rc -ne 0 ] || echo "$out" | grep -Eq '%(Warning|Error)'; then
   echo "rtl-lint: FAIL (verilator exit $rc)" >&2

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The block behind its AXI4-Lite and SPI bridges as SystemC models (the bridged tops of
-// model/systemc/dda_bridges.hpp) co-simulated with the RTL every cycle (ports, block,
+// model/systemc/dda_motion_bridged.hpp) co-simulated with the RTL every cycle (ports, block,
 // core and bridge registers) and compared with the reference models, under random
 // queued work that must do the same, iteration by iteration, as the same work over
 // Wishbone. Every TEST_CASE is its own ctest entry and process (SystemC elaborates once).

@@ -7,7 +7,7 @@
 `include "dda_motion_regs.vh"
 
 module dda_bridge_top #(
-  parameter Bus = "axil"
+  parameter [31:0] Bus = "axil"  // "axil" or "spi"
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,
@@ -41,6 +41,7 @@ module dda_bridge_top #(
   reg           ack_q = 1'b0;
   reg  [31:0]   rdat_q;
   reg  [31:0]   mem [0:(1<<(AW-2))-1];
+  wire          unused_lanes = &{1'b0, adr[1:0]};  // word addresses
 
   always @(posedge clk_i) begin
     ack_q <= rst_ni & cyc & stb & ~ack_q;
@@ -68,6 +69,7 @@ module dda_bridge_top #(
         .wb_dat_i(rdat_q), .wb_ack_i(ack_q), .wb_stall_i(ack_q)
       );
       assign spi_miso_o = 1'b0;
+      wire unused_spi = &{1'b0, spi_csn_i, spi_sck_i, spi_mosi_i};
     end else begin : g_spi
       dda_spi u_bridge (
         .clk_i(clk_i), .rst_ni(rst_ni),
@@ -77,6 +79,8 @@ module dda_bridge_top #(
         .wb_dat_i(rdat_q), .wb_ack_i(ack_q), .wb_stall_i(ack_q)
       );
       assign {s_awready_o, s_wready_o, s_bvalid_o, s_bresp_o, s_arready_o, s_rvalid_o, s_rdata_o, s_rresp_o} = '0;
+      wire unused_axil = &{1'b0, s_awvalid_i, s_awaddr_i, s_wvalid_i, s_wdata_i, s_wstrb_i, s_bready_i, s_arvalid_i,
+                           s_araddr_i, s_rready_i};
     end
   endgenerate
 endmodule

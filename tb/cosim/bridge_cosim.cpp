@@ -6,7 +6,7 @@
 #include "Vdda_motion_axil_sc.h"
 #include "Vdda_motion_spi_sc.h"
 #include "datapath/errors.hpp"
-#include "dda_bridges.hpp"
+#include "dda_motion_bridged.hpp"
 #include "motion_cosim.hpp"
 
 namespace dda::motion {

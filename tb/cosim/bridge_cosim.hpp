@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Co-simulation of the block behind a bridge: the SystemC model of the bridged top
-// (model/systemc/dda_bridges.hpp) and the Verilated RTL (rtl/dda_motion_axil.v or
+// (model/systemc/dda_motion_bridged.hpp) and the Verilated RTL (rtl/dda_motion_axil.v or
 // rtl/dda_motion_spi.v, verilator --sc) on one sc_clock, driven by the same host bus
 // signals. After every edge: every output port, every block register, the core's
 // register table and every bridge register of the two are compared (a difference throws
