@@ -186,4 +186,27 @@ Plan make_plan(const ArcOptions& o) {
   return plan_arc(s);
 }
 
+void parse_args(CLI::App& app, const std::vector<std::string>& args) {
+  app.allow_extras();
+  try {
+    app.parse(std::vector<std::string>(args.rbegin(), args.rend()));  // CLI11 takes them last first
+  } catch (const CLI::ParseError& e) {
+    throw InputError(e.what());
+  }
+  for (const std::string& arg : app.remaining()) {
+    if (arg.empty() || arg[0] != '-') throw InputError("'" + arg + "' is unexpected: only options are taken");
+    throw InputError("option " + arg.substr(0, arg.find('=')) + " is unknown");
+  }
+}
+
+Plan plan_from_args(const std::vector<std::string>& args) {
+  CLI::App app{"dda arc options"};
+  ArcOptions o;
+  ArcUses uses;
+  uses.engine = uses.vcd = uses.out = uses.format = false;
+  add_arc_options(&app, o, "", "", uses);
+  parse_args(app, args);
+  return make_plan(o);
+}
+
 }  // namespace dda::cli

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "datapath/errors.hpp"
 #include "planner/planner.hpp"
@@ -48,6 +49,15 @@ void check_program_options(const ArcOptions& o);
 
 // The plan of the options given: an arc, a line, or (vectors) a part program's commands.
 Plan make_plan(const ArcOptions& o);
+
+// Parses options as a user writes them ({"--a", "10", ...}) into `app`'s options: a
+// CLI11 parse error is an InputError with CLI11's message.
+void parse_args(CLI::App& app, const std::vector<std::string>& args);
+
+// The plan of the arc options (and --program with its options) written as for the `dda`
+// command: the command's parsing and messages, for the Python module and the DPI-C
+// functions. InputError for a bad option.
+Plan plan_from_args(const std::vector<std::string>& args);
 
 // One of the names of `m` (InputError listing them).
 template <typename E>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "engines.hpp"
 
+#include <iterator>
 #include <utility>
 
 #include "core_driver.hpp"
@@ -58,32 +59,21 @@ std::unique_ptr<Engine> make_golden(const EngineOptions&, RunSink& sink) {
   return std::make_unique<GoldenEngine>(sink);
 }
 
-constexpr std::pair<const char*, Factory> kEngines[] = {
-    {"golden", &make_golden},
-    {"systemc", &make<HardwareEngine<sc::ScHarness>>},
-    {"rtl", &make<HardwareEngine<rtl::RtlHarness>>},
+// In the order of kEngineNames.
+constexpr Factory kFactories[] = {
+    &make_golden,
+    &make<HardwareEngine<sc::ScHarness>>,
+    &make<HardwareEngine<rtl::RtlHarness>>,
 };
+static_assert(std::size(kFactories) == std::size(kEngineNames), "an engine without a factory, or the reverse");
 
 }  // namespace
 
-bool known_engine(const std::string& name) {
-  for (const auto& [n, fn] : kEngines) {
-    if (name == n) return true;
-  }
-  return false;
-}
-
 std::unique_ptr<Engine> make_engine(const std::string& name, const EngineOptions& opt, RunSink& sink) {
-  for (const auto& [n, fn] : kEngines) {
-    if (name == n) return fn(opt, sink);
+  for (std::size_t i = 0; i < std::size(kEngineNames); ++i) {
+    if (name == kEngineNames[i]) return kFactories[i](opt, sink);
   }
   return nullptr;
-}
-
-std::string engine_names() {
-  std::string s;
-  for (const auto& [n, fn] : kEngines) s += (s.empty() ? "" : ", ") + std::string(n);
-  return s;
 }
 
 }  // namespace dda::cli

@@ -15,6 +15,9 @@ struct EngineOptions {
   std::string vcd;  // waveform file, empty for none
 };
 
+// The engines by name (engine_names.cpp: the option parsing needs the names, not the
+// engines).
+inline constexpr const char* kEngineNames[] = {"golden", "systemc", "rtl"};
 bool known_engine(const std::string& name);
 std::string engine_names();
 // The named engine (a known one), reporting to `sink`.

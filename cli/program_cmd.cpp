@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "arc_options.hpp"
 #include "program/program.hpp"
 
 namespace dda::cli {
@@ -90,6 +91,15 @@ ProgramPlan load_program(const ProgramCli& o, Preload preload, bool hardware) {
   ProgramPlan pp = program::plan_program(prog, run.lattice, run.file);
   if (hardware) program::check_hardware(pp, run.file);
   return pp;
+}
+
+ProgramCli program_from_args(const std::vector<std::string>& args) {
+  CLI::App app{"dda program options"};
+  ProgramCli o;
+  add_program_options(&app, o);
+  parse_args(app, args);
+  if (!o.given()) throw InputError("--program FILE is required");
+  return o;
 }
 
 }  // namespace dda::cli

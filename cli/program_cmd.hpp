@@ -34,6 +34,10 @@ std::string program_name(const ProgramCli& o);
 // a bad option.
 ProgramRun program_run(const ProgramCli& o, Preload preload, bool hardware);
 
+// The program options written as for the `dda` command ({"--program", "FILE",
+// "--machine", "lathe", ...}); InputError for a bad one or without --program.
+ProgramCli program_from_args(const std::vector<std::string>& args);
+
 // Reads and plans the whole program (vector sets); with `hardware` (engines systemc
 // and rtl) also refuses a block whose commands the hardware's widths cannot hold.
 // Throws ProgramError ("FILE:LINE:COLUMN: message") or InputError for a bad option.

@@ -35,6 +35,18 @@ dda_rtl_sources(${DDA_RTL_DIR}/dda_core.f DDA_RTL_SOURCES)
 
 find_package(verilator REQUIRED)
 
+# verilate() with the build's coverage choice: with -DDDA_COVERAGE=ON every verilated
+# model counts Verilator's line, toggle and user coverage points, and the harnesses
+# write them (engines/vl_coverage.hpp) for scripts/coverage.sh.
+option(DDA_COVERAGE "verilate every model with --coverage (scripts/coverage.sh)" OFF)
+macro(dda_verilate)
+  if(DDA_COVERAGE)
+    verilate(${ARGN} COVERAGE)
+  else()
+    verilate(${ARGN})
+  endif()
+endmacro()
+
 # A harness library around a verilated copy of the RTL in `rtl_dir` (tests verilate a
 # mutated copy too): `cc` is the C++ model and RtlHarness (engines/, shipped), `sc` the
 # SystemC model and the co-simulation harness (tb/cosim/, verification only). Immediate
@@ -68,7 +80,7 @@ function(dda_verilated_harness target mode rtl_dir)
   if(NOT DDA_WIDTHS_DEFAULT)
     set(params_dir ${DDA_RTL_PARAMS_DIR})
   endif()
-  verilate(${target} ${kind}
+  dda_verilate(${target} ${kind}
     SOURCES ${sources} ${DDA_RTL_DIR}/lint.vlt
     TOP_MODULE dda_core PREFIX ${prefix}
     INCLUDE_DIRS ${params_dir} ${rtl_dir} ${DDA_RTL_DIR}
@@ -109,7 +121,7 @@ function(dda_motion_harness_lib target depth_log2)
   endif()
   foreach(top IN LISTS tops)
     dda_rtl_sources(${DDA_RTL_DIR}/${top}.f sources)
-    verilate(${target} TRACE
+    dda_verilate(${target} TRACE
       SOURCES ${sources} ${DDA_RTL_DIR}/lint.vlt
       TOP_MODULE ${top} PREFIX V${top}
       INCLUDE_DIRS ${DDA_MOTION_PARAMS} ${DDA_RTL_DIR}

@@ -10,6 +10,7 @@
 #include "Vdda_motion_spi.h"
 #endif
 #include "datapath/errors.hpp"
+#include "vl_coverage.hpp"
 #include "vl_sampler.hpp"
 #include "vl_waveform.hpp"
 
@@ -208,6 +209,7 @@ class MotionHarness::TopOf : public Top {
   ~TopOf() override {
     if (vcd_) vcd_->close();
     v_->final();
+    write_coverage(ctx_, "motion");
     Verilated::threadContextp(&ctx_);  // (see MotionHarness::MotionHarness)
     v_.reset();
   }

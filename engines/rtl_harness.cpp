@@ -5,6 +5,7 @@
 
 #include "Vdda_core.h"
 #include "datapath/hw_command.hpp"
+#include "vl_coverage.hpp"
 #include "vl_waveform.hpp"
 
 namespace dda::rtl {
@@ -28,6 +29,7 @@ RtlHarness::RtlHarness(const std::string& vcd) : ctx_(std::make_unique<Verilated
 RtlHarness::~RtlHarness() {
   close_trace();
   if (top_) top_->final();
+  write_coverage(*ctx_, "rtl");
   Verilated::threadContextp(ctx_.get());  // (see the constructor)
   top_.reset();
 }

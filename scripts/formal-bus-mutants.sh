@@ -14,6 +14,14 @@ mutants=(
   "axil%10%dda_axil.v%if (s_bready_i) bvalid_q <= 1'b0;%bvalid_q <= 1'b0;%a write response dropped before it is taken"
   "spi%12%dda_spi.v%if (whole && !cyc_q) begin%if (!cyc_q) begin%an access for a frame that is not whole"
   "spi%6%dda_spi.v%sck_q  <= {sck_q[1], sck_q[0], spi_sck_i};%sck_q  <= {sck_q[1], spi_sck_i, spi_sck_i};%SCK through one flip-flop"
+  "stepdir%10%dda_stepdir.v%wire fall   = step_q & tf_ge_len;%wire fall   = step_q & (tf_q + One >= len);%a pulse a cycle short of steplen"
+  "stepdir%10%dda_stepdir.v%wire [TW-1:0] space = stepspace_i == '0 ? One : stepspace_i;%wire [TW-1:0] space = stepspace_i <= One ? One : stepspace_i - One;%a pulse a cycle early after the last"
+  "stepdir%10%dda_stepdir.v%(change ? setup0 : ts_ge_setup)%(change ? 1'b1 : ts_ge_setup)%a pulse with the direction it turns to"
+  "stepdir%10%dda_stepdir.v%wire dir_ok = step_q ? (fall & hold0) : tf_ge_hold;%wire dir_ok = step_q ? fall : tf_ge_hold;%a turn on the falling edge whatever dirhold"
+  "stepdir%10%dda_stepdir.v%pend_q <= ~flush_i & pend_d;%pend_q <= ~flush_i & step_i;%a waiting step dropped"
+  "stepdir%10%dda_stepdir.v%wire          pdir_d = step_i ? dir_i : pdir_q;%wire          pdir_d = dir_i;%a waiting step's direction lost"
+  "stepdir%10%dda_stepdir.v%assign hold_o     = pend_d & ~rise_n;%assign hold_o     = pend_d & ~rise;%the core held when its step could go"
+  "stepdir%10%dda_stepdir.v%assign hold_o     = pend_d & ~rise_n;%assign hold_o     = 1'b0;%the core never held"
 )
 status=0
 for m in "${mutants[@]}"; do

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Formal proofs of the motion block's buses with Debian's tools (Yosys, yosys-smtbmc,
-# z3): a bounded check of K steps from reset, then the induction step of depth K.
+# Formal proofs of the motion block's buses and its step/dir stage with Debian's tools
+# (Yosys, yosys-smtbmc, z3): a bounded check of K steps from reset, then the induction
+# step of depth K.
 #   usage: scripts/formal-bus.sh [--depth K] [--rtl DIR] [--expect-fail] JOB
 #   JOB  wb    the block's Wishbone B4 slave (rtl/dda_motion.v, its queue at the smallest;
 #              formal/bus/dda_wb_props.sv): one ack per request, none without one, the
@@ -9,6 +10,9 @@
 #        axil  the AXI4-Lite bridge (rtl/dda_axil.v; formal/bus/dda_axil_props.sv)
 #        spi   the SPI bridge (rtl/dda_spi.v; formal/bus/dda_spi_props.sv): one access
 #              per complete frame, none for any other
+#        stepdir  the step/dir stage (rtl/dda_stepdir.v; formal/motion/dda_stepdir_props.sv):
+#              its four timings at the pins and its one-step buffer, at the block's
+#              timing width
 # --rtl DIR proves a copy of the RTL (a mutant, scripts/formal-bus-mutants.sh); with
 # --expect-fail the bounded check must then fail (a counterexample from reset).
 # Work files (the SMT2 model, logs, counterexample VCDs) go to
@@ -26,7 +30,7 @@ while [ $# -gt 1 ]; do
     *) break ;;
   esac
 done
-usage="usage: $0 [--depth K] [--rtl DIR] [--expect-fail] wb|axil|spi"
+usage="usage: $0 [--depth K] [--rtl DIR] [--expect-fail] wb|axil|spi|stepdir"
 [ $# -eq 1 ] || { echo "$usage" >&2; exit 2; }
 job=$1
 for tool in "$yosys" "$smtbmc" z3; do
@@ -39,9 +43,12 @@ case "$job" in
   axil) list=$root/rtl/dda_motion_axil.f top=dda_formal_axil module=dda_axil k=4
     regs="awaddr_q wdata_q wstrb_q araddr_q" ;;
   spi) list=$root/rtl/dda_motion_spi.f top=dda_formal_spi module=dda_spi k=6 regs="csn_q sck_q mosi_q cnt_q in_q" ;;
+  stepdir) list=$root/rtl/dda_motion.f top=dda_formal_stepdir module=dda_stepdir k=2 regs="tf_q ts_q pend_q pdir_q"
+    unroll=--unroll ;;  # z3 stalls at step 0 on this model without it (seconds with it)
   *) echo "$usage" >&2; exit 2 ;;
 esac
 depth=${depth:-$k}
+unroll=${unroll:-}
 work=$build/formal_bus/$job
 [ "$rtl_dir" = "$root/rtl" ] || work=$build/formal_bus/$job-$(basename "$rtl_dir")
 rm -rf "$work"
@@ -67,7 +74,9 @@ cp "$rtl_dir"/*.vh "$work/rtl/" 2>/dev/null || true
     for r in $regs; do echo "rename -output $r f_$r"; done
     echo "cd .."
   fi
-  echo "read_verilog -formal -sv -I$work/rtl $root/formal/bus/dda_${top#dda_formal_}_props.sv"
+  props=$root/formal/bus/dda_${top#dda_formal_}_props.sv
+  [ "$job" = stepdir ] && props=$root/formal/motion/dda_stepdir_props.sv
+  echo "read_verilog -formal -sv -I$work/rtl $props"
   echo "hierarchy -check -top $top"
   echo "proc; flatten; opt_clean; memory_nordff; dffunmap; stat"
   echo "write_smt2 -wires $work/model.smt2"
@@ -76,7 +85,7 @@ cp "$rtl_dir"/*.vh "$work/rtl/" 2>/dev/null || true
 
 run() {  # run LABEL ARGS...: yosys-smtbmc, its log kept
   local label=$1; shift
-  "$smtbmc" -s z3 --presat "$@" "$work/model.smt2" >"$work/$label.log" 2>&1
+  "$smtbmc" -s z3 --presat $unroll "$@" "$work/model.smt2" >"$work/$label.log" 2>&1
 }
 if [ $expect -eq 1 ]; then
   if run bmc -t "$depth" --dump-vcd "$work/bmc-counterexample.vcd"; then

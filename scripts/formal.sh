@@ -5,7 +5,7 @@
 # flattens the core and exposes its architectural registers (the register table, `dda
 # gen-params --kind registers`) as outputs a_<name>; yosys-smtbmc with z3 proves.
 #   usage: scripts/formal.sh [--impl small|fast] [--acc N] [--cnt N] [--depth K]
-#                            [--rtl DIR] [--expect-fail TEXT] JOB
+#                            [--solver z3|cvc4|cvc5] [--rtl DIR] [--expect-fail TEXT] JOB
 #   JOB  props  k-induction of the assertions of one implementation (dda_props.sv): a
 #               bounded check of K steps from reset, then the induction step of depth K
 #        equiv  k-induction of a miter of the implementation against the reference core
@@ -35,7 +35,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 yosys=${YOSYS:-yosys} smtbmc=${YOSYS_SMTBMC:-yosys-smtbmc}
-impl=small acc="" cnt="" depth="" rtl_dir=$root/rtl expect=""
+impl=small acc="" cnt="" depth="" rtl_dir=$root/rtl expect="" solver=z3
 while [ $# -gt 1 ]; do
   case "$1" in
     --impl) impl=$2; shift 2 ;;
@@ -44,15 +44,17 @@ while [ $# -gt 1 ]; do
     --depth) depth=$2; shift 2 ;;
     --rtl) rtl_dir=$(cd "$2" && pwd); shift 2 ;;
     --expect-fail) expect=$2; shift 2 ;;
+    --solver) solver=$2; shift 2 ;;
     *) break ;;
   esac
 done
-usage="usage: $0 [--impl small|fast] [--acc N] [--cnt N] [--depth K] props|equiv|cover|lemmas"
+usage="usage: $0 [--impl small|fast] [--acc N] [--cnt N] [--depth K] [--solver z3|cvc4|cvc5] props|equiv|cover|lemmas"
 [ $# -eq 1 ] || { echo "$usage" >&2; exit 2; }
 job=$1
 case "$job" in props|equiv|cover|lemmas) ;; *) echo "$usage" >&2; exit 2 ;; esac
 case "$impl" in small|fast) ;; *) echo "formal: --impl must be small or fast, not '$impl'" >&2; exit 2 ;; esac
-for tool in "$yosys" "$smtbmc" z3; do
+case "$solver" in z3|cvc4|cvc5) ;; *) echo "formal: --solver must be z3, cvc4 or cvc5, not '$solver'" >&2; exit 2 ;; esac
+for tool in "$yosys" "$smtbmc" "$solver"; do
   command -v "$tool" >/dev/null || { echo "formal: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done
 dda=$build/bin/dda
@@ -197,7 +199,7 @@ run() {  # run LABEL ARGS...: yosys-smtbmc, its log kept; fails with the log's t
   local label=$1; shift
   if [ -n "$expect" ]; then
     # A mutant: the proof must fail, on the assertion whose source line holds $expect.
-    if "$smtbmc" -s z3 --unroll "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
+    if "$smtbmc" -s "$solver" --unroll "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
       echo "  $label: passed, but the mutant must fail on: $expect" >&2
       return 1
     fi
@@ -216,7 +218,7 @@ run() {  # run LABEL ARGS...: yosys-smtbmc, its log kept; fails with the log's t
     grep "Assert failed" "$work/$label.log" | head -5 >&2
     return 1
   fi
-  if "$smtbmc" -s z3 --unroll --presat "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
+  if "$smtbmc" -s "$solver" --unroll --presat "$@" "$work/model.smt2" >"$work/$label.log" 2>&1; then
     echo "  $label: PASS ($(grep -m1 -oE 'Status: [A-Z]+' "$work/$label.log" || echo done))"
   else
     echo "  $label: FAIL (log: $work/$label.log)" >&2

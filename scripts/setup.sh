@@ -18,6 +18,7 @@ PACKAGES=(
   z3 librsvg2-bin clang-format clang-tidy parallel tao-pegtl-dev python3
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
   time  # GNU time: peak memory in scripts/scale-table.sh
+  pybind11-dev python3-pybind11 python3-pytest  # python/: `import dda` and its tests
 )
 
 if [ "${1:-}" = "--demo" ]; then PACKAGES=("${DEMO_PACKAGES[@]}"); fi

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The form of the sources: every C++ file git tracks is as clang-format (.clang-format)
-# writes it, and every source file (C++, C headers, Verilog, file lists, CMake, shell) carries the
-# SPDX licence line in its first lines (data files such as tests/data/*.csv do not).
+# writes it, and every source file (C++, C headers, Verilog and SystemVerilog, file lists,
+# CMake, shell, Python) carries the SPDX licence line in its first lines (data files such
+# as tests/data/*.csv do not).
 #   usage: tests/check-format.sh [clang-format|spdx]     (ctest format.*)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,7 +21,7 @@ case "$what" in
     missing=0 n=0
     for f in "${files[@]}"; do
       case "$f" in
-        *.cpp|*.hpp|*.h|*.v|*.vh|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
+        *.cpp|*.hpp|*.h|*.v|*.vh|*.sv|*.py|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
         *) continue ;;
       esac
       n=$((n + 1))

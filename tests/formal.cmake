@@ -30,12 +30,16 @@ foreach(_impl small fast)
   dda_formal_test(formal.${_impl}.mutants ${PROJECT_SOURCE_DIR}/scripts/formal-mutants.sh --impl ${_impl})
 endforeach()
 # The buses (scripts/formal-bus.sh): the block's Wishbone slave, the AXI4-Lite and SPI
-# bridges by k-induction, and a mutant of each failing its proof.
+# bridges by k-induction, and a mutant of each failing its proof; the step/dir stage
+# with the same script, its mutants among the buses'.
 set(_dda_formal_bus ${PROJECT_SOURCE_DIR}/scripts/formal-bus.sh)
 dda_formal_test(formal.bus.wb ${_dda_formal_bus} wb)
 foreach(_job axil spi)
   dda_formal_test(formal.bus.${_job} ${_dda_formal_bus} ${_job})
   set_tests_properties(formal.bus.${_job} PROPERTIES LABELS "formal;bridges")
 endforeach()
+# The step/dir stage's four timings, its buffer and its hold, at the block's timing width.
+dda_formal_test(formal.stepdir ${_dda_formal_bus} stepdir)
+set_tests_properties(formal.stepdir PROPERTIES LABELS "formal;stepdir")
 dda_formal_test(formal.bus.mutants ${PROJECT_SOURCE_DIR}/scripts/formal-bus-mutants.sh)
 set_tests_properties(formal.bus.mutants PROPERTIES LABELS "formal;bridges")

@@ -68,6 +68,18 @@ std::vector<std::uint32_t> pack_fields(const CmdFields& v) {
   return w;
 }
 
+CmdFields unpack_fields(const std::vector<std::uint32_t>& words) {
+  CmdFields v{};
+  std::size_t bit = 0;
+  for (std::size_t i = 0; i < kCmdFields.size(); ++i) {
+    for (int k = 0; k < kCmdFields[i].width; ++k, ++bit) {
+      const std::uint32_t w = bit / 32 < words.size() ? words[bit / 32] : 0;
+      v[i] |= std::uint64_t{(w >> (bit % 32)) & 1u} << k;
+    }
+  }
+  return v;
+}
+
 std::vector<std::uint32_t> pack_command(const Command& c) { return pack_fields(command_fields(c)); }
 
 std::int64_t max_semi_axis(int extra_bits, int acc_width, int cnt_width) {

@@ -19,6 +19,9 @@ CmdFields command_fields(const Command& c);
 // Fields as 32-bit words, least significant first (Verilator's layout of cmd_i).
 std::vector<std::uint32_t> pack_fields(const CmdFields& v);
 
+// The inverse of pack_fields: a command word's fields (words least significant first).
+CmdFields unpack_fields(const std::vector<std::uint32_t>& words);
+
 // The command word as 32-bit words, least significant first (Verilator's layout).
 std::vector<std::uint32_t> pack_command(const Command& c);
 

@@ -8,6 +8,7 @@
 #include "datapath/errors.hpp"
 #include "dda_motion_bridged.hpp"
 #include "motion_cosim.hpp"
+#include "vl_coverage.hpp"
 
 namespace dda::motion {
 
@@ -173,6 +174,7 @@ BridgeCosim::BridgeCosim(Bus bus)
 BridgeCosim::~BridgeCosim() {
   if (sim_->rtl_axil) sim_->rtl_axil->final();
   if (sim_->rtl_spi) sim_->rtl_spi->final();
+  write_coverage(*Verilated::threadContextp(), "bridge_cosim");
 }
 
 void BridgeCosim::tick(const BusIn& bus) {

@@ -7,6 +7,7 @@
 
 #include "Vdda_core_sc.h"
 #include "sc_harness.hpp"
+#include "vl_coverage.hpp"
 
 namespace dda::cosim {
 
@@ -71,6 +72,7 @@ void CosimHarness::resolve(const hw::SignalTable& t) const {
 
 CosimHarness::~CosimHarness() {
   if (rtl_) rtl_->final();
+  write_coverage(*Verilated::threadContextp(), "cosim");
 }
 
 void CosimHarness::apply(const CoreInputs& in, bool cmd_changed) {

@@ -5,6 +5,7 @@
 
 #include "Vdda_motion_sc.h"
 #include "datapath/errors.hpp"
+#include "vl_coverage.hpp"
 
 namespace dda::motion {
 
@@ -67,6 +68,7 @@ MotionCosim::MotionCosim() : model_(kHarnessDepthLog2) {
 
 MotionCosim::~MotionCosim() {
   if (rtl_) rtl_->final();
+  write_coverage(*Verilated::threadContextp(), "motion_cosim");
 }
 
 std::uint64_t sc_signal_value(const std::string& name) {
