@@ -19,6 +19,7 @@ PACKAGES=(
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
   time  # GNU time: peak memory in scripts/scale-table.sh
   pybind11-dev python3-pybind11 python3-pytest  # python/: `import dda` and its tests
+  cvc4 cvc5  # scripts/formal.sh --solver: the other SMT solvers yosys-smtbmc drives
 )
 
 if [ "${1:-}" = "--demo" ]; then PACKAGES=("${DEMO_PACKAGES[@]}"); fi
