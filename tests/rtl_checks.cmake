@@ -161,12 +161,14 @@ dda_bus_vec_set(feeds --program ${PROJECT_SOURCE_DIR}/examples/feeds.ngc --step 
                 --clock 6e5 --timing 2,2,1,1 --seed 31)
 set_property(TEST vectors.bus.gen_feeds vectors.bus.feeds APPEND PROPERTY LABELS "program;speed")
 # The three-axis examples (the third axis through its own step/dir stage): a helix with
-# Z timings and inverted Z outputs, a pocket on pipelined cycles, the drilling cycles at
+# Z timings and inverted Z outputs, a pocket on pipelined cycles with the X and Y
+# direction outputs inverted (both ways on both axes), the drilling cycles at
 # a feed, 3-D lines with ce_i low a tenth of the time, arcs in the three planes (the
 # entry's axes routing the core's to the stages).
 dda_bus_vec_set(helix --program ${PROJECT_SOURCE_DIR}/examples/helix.ngc --step 0.005 --timing-z 3,2,2,1
                 --polarity 48 --seed 21)
-dda_bus_vec_set(pocket --program ${PROJECT_SOURCE_DIR}/examples/pocket.ngc --step 0.005 --pipelined --seed 23)
+dda_bus_vec_set(pocket --program ${PROJECT_SOURCE_DIR}/examples/pocket.ngc --step 0.005 --pipelined --polarity 10
+                --seed 23)
 dda_bus_vec_set(drilling --program ${PROJECT_SOURCE_DIR}/examples/drilling.ngc --step 0.005 --feed-increment 2621440000
                 --timing 1,1,1,1 --seed 25)
 dda_bus_vec_set(lines_3d --program ${PROJECT_SOURCE_DIR}/examples/lines-3d.ngc --ce-percent 90 --seed 27)
