@@ -11,8 +11,8 @@
 
 DAT is one coverage file (verilator_coverage --write merges several). A point counts for
 the module of its `page` (v_line/, v_branch/, v_toggle/, v_user/<module>) when its file
-lies in RTL_DIR; the instances of a module are one: a point is covered when any instance
-hit it. A line point (a statement block, or a branch of an if or a case: Verilator 5.006
+lies in RTL_DIR; the instances and parameter variants of a module (Verilator's
+<module>__<suffix>) are one: a point is covered when any of them hit it. A line point (a statement block, or a branch of an if or a case: Verilator 5.006
 writes those as v_branch, counted here with the lines) is covered with a count of at
 least 1; a toggle point (one
 bit of a signal) with at least 2, that is both ways. An exclusion (JSON: a list of
@@ -43,6 +43,7 @@ def parse(dat):
             if not page.startswith("v_") or "/" not in page:
                 continue
             kind, module = page[2:].split("/", 1)
+            module = module.split("__", 1)[0]  # Verilator's name of a parameter variant: the module's
             if kind == "branch":  # the branches of an if or a case: line coverage counts them
                 kind = "line"
             key = (fields.get("f"), fields.get("l"), fields.get("n"), fields.get("o"), fields.get("S"))

@@ -9,7 +9,7 @@
 # reason, in tests/coverage-exclusions.json). Exit status 1 when a test fails or a
 # module is below its floor.
 #
-#   scripts/coverage.sh [BUILD_DIR [CTEST_ARGS...]]   (default build-coverage; about 30 min on 2 cores)
+#   scripts/coverage.sh [BUILD_DIR [CTEST_ARGS...]]   (default build-coverage; about 45 min on 2 cores)
 #
 # Writes BUILD_DIR/coverage/: merged.dat, annotated/ (each rtl/ source with its counts),
 # table.md (the table of docs/verification.md) and uncovered.txt (every point missed).

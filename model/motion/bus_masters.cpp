@@ -78,10 +78,11 @@ std::uint64_t SpiMaster::frame(std::uint64_t mosi, int bits) {
   hold(b, 2 + int(rng_() % 3));  // CS_n's setup before the first rising edge
   std::uint64_t miso = 0;
   for (int i = 0; i < bits; ++i) {
-    b.spi.mosi = ((mosi >> (kSpiFrameBits - 1 - i)) & 1u) != 0;
+    const int at = kSpiFrameBits - 1 - i;  // past the frame's bits (a frame too long): MOSI low
+    b.spi.mosi = at >= 0 && ((mosi >> at) & 1u) != 0;
     hold(b, half());
     // Mode 0: the master samples MISO as SCK rises.
-    miso |= std::uint64_t(t_.outputs().spi.miso) << (kSpiFrameBits - 1 - i);
+    if (at >= 0) miso |= std::uint64_t(t_.outputs().spi.miso) << at;
     b.spi.sck = true;
     hold(b, half());
     b.spi.sck = false;
