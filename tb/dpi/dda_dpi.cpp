@@ -6,7 +6,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <exception>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,10 +22,21 @@ namespace {
 
 using namespace dda;
 
+// What the bench compares of an iteration: its steps and their directions.
+struct Record {
+  std::uint64_t iter = 0;
+  std::uint32_t piece = 0;
+  bool step[3] = {}, dir_neg[3] = {};
+};
+
+// The golden run is pulled a piece at a time as the bench compares iterations, so the
+// records held are one piece's, not the plan's.
 struct Bench {
   Plan plan;
-  std::vector<Iteration> records;
-  std::size_t next_record = 0;
+  std::unique_ptr<GoldenRun> run;
+  std::size_t fed = 0;  // pieces given to the run
+  bool run_done = false;
+  std::deque<Record> pending;
   CoreModel core;
   PortValues seen{};                // the outputs the bench gave since the last edge
   std::uint64_t cycle = 0;          // edges since dda_plan
@@ -71,6 +84,24 @@ int fail(const std::string& what) {
   return 1;
 }
 
+// The golden run's next iteration, running the next piece when those held are used up;
+// false after the last.
+bool next_record(Bench& b, Record& out) {
+  while (b.pending.empty()) {
+    if (b.fed < b.plan.pieces.size()) {
+      b.run->piece(b.plan.pieces[b.fed++]);
+    } else if (!b.run_done) {
+      b.run->finish();
+      b.run_done = true;
+    } else {
+      return false;
+    }
+  }
+  out = b.pending.front();
+  b.pending.pop_front();
+  return true;
+}
+
 }  // namespace
 
 extern "C" int dda_plan(const char* args) {
@@ -78,12 +109,21 @@ extern "C" int dda_plan(const char* args) {
   try {
     b.plan = cli::plan_from_args(split(args));
     for (const Piece& pc : b.plan.pieces) hw::pack_command(pc.cmd);  // refuses what the widths cannot hold
-    b.records = run_records(b.plan);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "dda_dpi: %s\n", e.what());
     return -1;
   }
-  b.next_record = 0;
+  b.pending.clear();
+  b.fed = 0;
+  b.run_done = false;
+  b.run = std::make_unique<GoldenRun>([&b](const Iteration& it) {
+    Record r;
+    r.iter = it.iter;
+    r.piece = it.piece;
+    r.step[0] = it.step_x, r.step[1] = it.step_y, r.step[2] = it.step_z;
+    r.dir_neg[0] = it.dir_x_neg, r.dir_neg[1] = it.dir_y_neg, r.dir_neg[2] = it.dir_z_neg;
+    b.pending.push_back(r);
+  });
   b.core = CoreModel();
   b.cycle = b.checked_ports = 0;
   b.reset_seen = false;
@@ -141,24 +181,26 @@ extern "C" int dda_ref_output(const char* port, svBit value) {
 
 extern "C" int dda_check_record(svBit step_x, svBit step_y, svBit step_z, svBit dir_x, svBit dir_y, svBit dir_z) {
   Bench& b = bench();
-  if (b.next_record >= b.records.size()) {
-    return fail("cycle " + std::to_string(b.cycle) + ": an iteration past the golden run's " +
-                std::to_string(b.records.size()));
+  Record r;
+  try {
+    if (!next_record(b, r)) {
+      return fail("cycle " + std::to_string(b.cycle) + ": an iteration past the golden run's " +
+                  std::to_string(b.records_compared));
+    }
+  } catch (const std::exception& e) {  // a guard of the golden run
+    return fail(e.what());
   }
-  const Iteration& r = b.records[b.next_record++];
   ++b.records_compared;
   const bool steps[3] = {step_x != 0, step_y != 0, step_z != 0};
   const bool dirs[3] = {dir_x != 0, dir_y != 0, dir_z != 0};
-  const bool want_step[3] = {r.step_x, r.step_y, r.step_z};
-  const bool want_dir[3] = {r.dir_x_neg, r.dir_y_neg, r.dir_z_neg};
   for (int a = 0; a < 3; ++a) {
     // A direction output means something with a step (it changes only with one).
-    if (steps[a] != want_step[a] || (steps[a] && dirs[a] != want_dir[a])) {
+    if (steps[a] != r.step[a] || (steps[a] && dirs[a] != r.dir_neg[a])) {
       const char axis = "xyz"[a];
       return fail("iteration " + std::to_string(r.iter) + " (piece " + std::to_string(r.piece) + ", cycle " +
                   std::to_string(b.cycle) + "): step_" + axis + "/dir_" + axis + ": golden " +
-                  std::to_string(want_step[a]) + "/" + std::to_string(want_dir[a]) + ", dut " +
-                  std::to_string(steps[a]) + "/" + std::to_string(dirs[a]));
+                  std::to_string(r.step[a]) + "/" + std::to_string(r.dir_neg[a]) + ", dut " + std::to_string(steps[a]) +
+                  "/" + std::to_string(dirs[a]));
     }
   }
   return 0;
@@ -166,9 +208,14 @@ extern "C" int dda_check_record(svBit step_x, svBit step_y, svBit step_z, svBit 
 
 extern "C" int dda_finish(void) {
   Bench& b = bench();
-  if (b.next_record != b.records.size()) {
-    fail("the run ended after " + std::to_string(b.next_record) + " of the golden run's " +
-         std::to_string(b.records.size()) + " iterations");
+  Record r;
+  try {
+    if (b.run && next_record(b, r)) {
+      fail("the run ended after " + std::to_string(b.records_compared) + " iterations; the golden run's next is " +
+           std::to_string(r.iter));
+    }
+  } catch (const std::exception& e) {
+    fail(e.what());
   }
   std::printf("dda_dpi: %zu pieces, %llu cycles, %llu port values and %llu iterations compared, %llu mismatches\n",
               b.plan.pieces.size(), static_cast<unsigned long long>(b.cycle),

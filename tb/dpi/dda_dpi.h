@@ -22,7 +22,8 @@ extern "C" {
 
 // Plans an arc, a line or a part program from the `dda` command's options, written as
 // on its command line ("--a 10 --b 6 --bits 4 --preload zero", "--program part.ngc"),
-// resets the reference core and runs the plan on the golden model for the records.
+// resets the reference core; the golden run then goes a piece at a time as the bench
+// compares iterations (it holds one piece's records, whatever the plan's length).
 // Returns the number of pieces (commands), or -1 with the command's message printed.
 int dda_plan(const char* args);
 // Piece `index`'s command word (cmd_i of dda_core, `DDA_CMD_WIDTH bits).
