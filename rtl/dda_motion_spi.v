@@ -5,6 +5,9 @@
 // that shares MISO with other slaves.
 `include "dda_motion_regs.vh"
 
+// The block comes with a top per bus (dda_motion and the two bridged ones): a lint of all
+// of rtl/ at once sees the two bridged ones as tops, by design.
+/* verilator lint_off MULTITOP */
 module dda_motion_spi #(
   parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
 ) (

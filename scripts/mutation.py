@@ -262,6 +262,12 @@ def main():
     if gen.returncode != 0:
         print(gen.stdout[-2000:], file=sys.stderr)
         return 1
+    # A set missing (renamed in tests/rtl_checks.cmake) would fail every run and count
+    # every mutant as killed: refuse to start instead.
+    missing = [x for sets in SETS.values() for x in sets if not (Path(a.build) / "tests" / x / "manifest.json").exists()]
+    if missing:
+        print(f"mutation: vector sets not written by the ctest fixtures: {', '.join(missing)}", file=sys.stderr)
+        return 1
 
     def one(md):
         m, d = md
