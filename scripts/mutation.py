@@ -76,10 +76,11 @@ SETS = {
     "core": ["vec_sets/paper", "vec_sets/paper_ce", "vec_sets/second_quadrant", "vec_sets/back_to_back",
              "vec_sets/paper_half", "bus_vec_sets/helix", "bus_vec_sets/lines_3d", "vec_sets/paper_macro"],
     "motion": ["bus_vec_sets/paper", "bus_vec_sets/paper_timed", "bus_vec_sets/pocket", "bus_vec_sets/queue", "bus_vec_sets/abort",
+               "bus_vec_sets/io_limits", "bus_vec_sets/io_overflow",
                "bus_vec_sets/helix", "bus_vec_sets/paced", "bus_vec_sets/soft_stop", "bus_vec_sets/watchdog",
                "bus_vec_sets/io_estop", "bus_vec_sets/io_limit_hard", "bus_vec_sets/io_limit_decel",
                "bus_vec_sets/io_homing", "bus_vec_sets/io_probing", "bus_vec_sets/io_snapshot",
-               "bus_vec_sets/io_glitches", "bus_vec_sets/drilling", "bus_vec_sets/planes"],
+               "bus_vec_sets/io_glitches", "bus_vec_sets/drilling", "bus_vec_sets/planes", "bus_vec_sets/io_ranges"],
     "axil": ["bus_vec_sets/axil_paper", "bus_vec_sets/axil_queue", "bus_vec_sets/axil_paper_timed"],
     "spi": ["bus_vec_sets/spi_paper", "bus_vec_sets/spi_queue"],
 }

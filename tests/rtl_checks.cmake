@@ -145,7 +145,7 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
 # The machine-input scenarios (model/motion/io_scenarios.hpp, label io): the block on a
 # simulated machine, its input pins in the set.
-foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches)
+foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches overflow limits ranges)
   string(REPLACE "-" "_" _name "io_${_scn}")
   dda_bus_vec_set(${_name} --io-scenario ${_scn})
   set_property(TEST vectors.bus.gen_${_name} vectors.bus.${_name} APPEND PROPERTY LABELS io)

@@ -43,6 +43,9 @@ TEST_CASE("bridges: the same random work over Wishbone, AXI4-Lite and SPI does t
     w.push_back(run_bus_work(h, bus, seed, 8));
     INFO(bus_name(bus) << ": " << w.back().cycles << " cycles, " << w.back().iterations.size() << " iterations");
     CHECK(w.back().end == w.back().want);
+    CHECK(w.back().snap == w.back().end);
+    CHECK(w.back().irq_seen);
+    CHECK(w.back().irq_cleared);
   }
   CHECK(w[0].pieces >= 8);
   CHECK(w[0].iterations.size() > 100);

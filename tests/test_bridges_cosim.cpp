@@ -27,6 +27,9 @@ void same_work(Bus bus, std::uint64_t seed, int arcs) {
   const BusWork want = run_bus_work(ref, Bus::wishbone, seed, arcs);
   INFO(h.cycle() << " cycles");
   CHECK(got.end == got.want);
+  CHECK(got.snap == got.end);
+  CHECK(got.irq_seen);
+  CHECK(got.irq_cleared);
   CHECK(got.iterations.size() > 100);
   CHECK(compare_work(want, got) == "");
 }

@@ -2,8 +2,9 @@
 // The motion block's machine inputs (docs/design.md, "Machine inputs"): the scenarios of
 // model/motion/io_scenarios.hpp (an E-stop in the middle of a piece, limits in both stop
 // modes, homing on each axis, a probing move, the snapshot while two axes run, glitches
-// shorter than the filter) on a simulated machine whose switches and probe follow the
-// pulses the block sends. The RTL runs in lockstep with the reference model
+// shorter than the filter) and the block at the ends of its ranges (a queue overflow,
+// each limit, every field at its full width) on a simulated machine whose switches and
+// probe follow the pulses the block sends. The RTL runs in lockstep with the reference model
 // (MotionHarness) and, in the cases named "three engines", with the SystemC model too
 // (MotionCosim); every check of a scenario is a CHECK here.
 #define CATCH_CONFIG_RUNNER
@@ -83,6 +84,26 @@ TEST_CASE("io: three engines: limits in both modes", "[io]") {
 TEST_CASE("io: three engines: homing, probing, the snapshot and glitches", "[io]") {
   MotionCosim c;
   for (const char* s : {"homing", "probing", "snapshot", "glitches"}) run(c, s);
+}
+
+TEST_CASE("io: a queue filled to its depth refuses one entry more (err_overflow) and runs the rest", "[io]") {
+  MotionHarness h;
+  run(h, "overflow");
+}
+
+TEST_CASE("io: each of the six limits stops a move toward it, and the move away runs", "[io]") {
+  MotionHarness h;
+  run(h, "limits");
+}
+
+TEST_CASE("io: every register, position, command field, speed, filter and timing at its full width", "[io]") {
+  MotionHarness h;
+  run(h, "ranges");
+}
+
+TEST_CASE("io: three engines: the queue overflow, the six limits and the full widths", "[io]") {
+  MotionCosim c;
+  for (const char* s : {"overflow", "limits", "ranges"}) run(c, s);
 }
 
 TEST_CASE("io: a failed check of a scenario is reported", "[io]") {

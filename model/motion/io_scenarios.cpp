@@ -7,46 +7,14 @@
 #include "datapath/errors.hpp"
 #include "motion/homing.hpp"
 #include "motion/machine_sim.hpp"
+#include "motion/scenario_kit.hpp"
 #include "planner/planner.hpp"
 
 namespace dda::motion {
 
 namespace {
 
-// Pacing: 2^-20 steps per clock^2, the minimum speed 1/1024 step per clock; speeds x
-// 2^32 steps per clock, under the pacer's top speed (a stepping iteration every 107
-// clocks at most): from 1/128 step per clock the braking distance is 32 steps.
-constexpr std::uint32_t kAccel = 1u << 28, kVmin = 1u << 22;
-constexpr std::uint32_t kFast = 1u << 25, kSlow = 1u << 23;  // 1/128 and 1/512 step per clock
-
-std::uint32_t in_bit(std::string_view name) { return 1u << input_bit(name); }
-std::int32_t reg32(const BusTarget& t, std::string_view r) { return std::int32_t(t.model().regs()[breg(r)]); }
-std::uint32_t status(MotionDriver& d, std::string_view f) { return get_field("STATUS", f, d.read("STATUS")); }
-
-// A line by `delta` queued unpaced: its feed increment lets the core iterate on one clock
-// in `slowdown`.
-void queue_unpaced(MotionDriver& d, Point delta, std::uint32_t slowdown) {
-  const Plan plan = plan_line(Point{}, delta, Preload::Half);
-  const std::uint32_t feed = std::uint32_t((std::uint64_t{1} << kFeedWidth) / slowdown);
-  for (const auto& piece : plan.pieces) d.queue(piece.cmd, feed, piece.rot);
-}
-
-// A reset of a few edges: every scenario starts from the block's reset state.
-void fresh(BusTarget& t) {
-  t.set_pins(MachinePins{});
-  t.set_reset(false);
-  t.tick(BusIn{});
-  t.tick(BusIn{});
-  t.set_reset(true);
-}
-
-// Runs until `done` holds or `limit` cycles have passed.
-template <typename F>
-void run_until(WishboneMaster& m, F done, int limit, const char* what) {
-  for (int i = 0; i < limit && !done(); ++i) m.idle(1);
-  if (!done())
-    throw GuardError(std::string("machine scenario: not within ") + std::to_string(limit) + " cycles: " + what);
-}
+using namespace scenario;
 
 // Fails on any pulse that starts toward a limit the block had filtered as active before
 // that edge (the hard stop drops such steps: none may reach the pins).
@@ -334,7 +302,7 @@ void glitches(BusTarget& block, const Expect& outer) {
 }
 }  // namespace
 
-const std::array<IoScenario, 7> kIoScenarios{{
+const std::array<IoScenario, 10> kIoScenarios{{
     {"estop", "an E-stop in the middle of a piece", estop_mid_piece},
     {"limit-hard", "a limit hit during a move, stopped as a hard stop", limit_hard},
     {"limit-decel", "a limit hit during a paced move, stopped at ACCEL", limit_decel},
@@ -342,6 +310,9 @@ const std::array<IoScenario, 7> kIoScenarios{{
     {"probing", "a probing move that stops on the probe, and one that never touches", probing},
     {"snapshot", "snapshots while two axes run", snapshot_moving},
     {"glitches", "pulses shorter than the filter on every input", glitches},
+    {"overflow", "the queue filled to its depth and one entry more", queue_overflow},
+    {"limits", "each of the six limits hit on a move toward it", each_limit},
+    {"ranges", "every register, position, command field, speed, filter and timing at its full width", field_ranges},
 }};
 
 const IoScenario* find_io_scenario(std::string_view name) {

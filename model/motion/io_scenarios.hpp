@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The scenarios of the motion block's machine inputs (docs/design.md, "Machine inputs"),
-// written once: tests/test_motion_io.cpp runs them on the RTL beside the reference model
-// and on the three engines, and `dda vectors --bus --io-scenario NAME` records them as
-// bus vector sets from the reference model. Each resets the block, runs a simulated
-// machine around it (MachineSim: its switches and probe follow the block's pulses)
-// driven by the firmware driver, and hands every check of what the block must do to an
+// The scenarios of the motion block's machine inputs (docs/design.md, "Machine inputs")
+// and of the block at the ends of its ranges, written once: tests/test_motion_io.cpp runs them on the RTL beside the
+// reference model and on the three engines, and `dda vectors --bus --io-scenario NAME` records them as bus vector sets
+// from the reference model. Each resets the block, runs a simulated machine around it (MachineSim: its switches and
+// probe follow the block's pulses) driven by the firmware driver, and hands every check of what the block must do to an
 // Expect (the tests report each as a CHECK; the vector writer refuses a set whose
 // scenario fails one).
 #pragma once
@@ -51,8 +50,13 @@ struct IoScenario {
   std::string_view name, what;
   void (*run)(BusTarget& block, const Expect& expect);
 };
-// estop, limit-hard, limit-decel, homing, probing, snapshot, glitches.
-extern const std::array<IoScenario, 7> kIoScenarios;
+// estop, limit-hard, limit-decel, homing, probing, snapshot, glitches; the block at the
+// ends of its ranges (block_scenarios.cpp): overflow, limits, ranges.
+extern const std::array<IoScenario, 10> kIoScenarios;
 const IoScenario* find_io_scenario(std::string_view name);  // nullptr: no such scenario
+
+void queue_overflow(BusTarget& block, const Expect& ex);
+void each_limit(BusTarget& block, const Expect& ex);
+void field_ranges(BusTarget& block, const Expect& ex);
 
 }  // namespace dda::motion

@@ -43,11 +43,37 @@ class Recorder : public BusTap {
   bool last_[3] = {false, false, false};
 };
 
+// Glitches shorter than the input filter on random inputs, edge by edge (the block
+// ignores them): every input pin of the bridged tops toggles too.
+class Glitches : public BusTap {
+ public:
+  static constexpr std::uint32_t kFilter = 8;  // IN_FILTER's clocks, both fields
+  Glitches(BusTarget& inner, std::uint64_t seed) : BusTap(inner), rng_(seed) {}
+  void tick(const BusIn& bus) override {
+    if (on && left_ == 0 && rest_ == 0 && rng_() % 40 == 0) {
+      pin_ = 1u << (rng_() % kNumInputs);
+      left_ = 1 + int(rng_() % (kFilter - 1));
+      rest_ = left_ + int(kFilter) + 2;  // apart: two glitches never make one pulse as long as the filter
+    }
+    rest_ -= rest_ > 0;
+    t_.set_pins(MachinePins::from_bits(MachinePins{}.bits() ^ (left_ > 0 ? pin_ : 0u)));
+    left_ -= left_ > 0;
+    t_.tick(bus);
+  }
+  bool on = false;  // from when IN_FILTER holds kFilter
+
+ private:
+  std::mt19937_64 rng_;
+  std::uint32_t pin_ = 0;
+  int left_ = 0, rest_ = 0;
+};
+
 }  // namespace
 
 BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
   BusWork w;
-  StepDirMonitor timing(t);
+  Glitches glitches(t, seed + 9);
+  StepDirMonitor timing(glitches);
   PieceMonitor mon(timing);
   Recorder rec(mon, w);
   std::mt19937_64 rng(seed), ce_rng(seed + 7);
@@ -58,6 +84,11 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
   rec.set_reset(false);
   m->idle(2);
   rec.set_reset(true);
+  d.set_inputs(0, Glitches::kFilter, Glitches::kFilter, 0);
+  d.read("IN_FILTER");  // (over SPI a write lands after its frame: the next one waits for it)
+  glitches.on = true;
+  // The done interrupt: irq_o rises on the first piece's end, falls when it is cleared.
+  d.write("IRQ_ENABLE", field_bit("IRQ_ENABLE", "done"));
   for (const char axis : kAxes) {
     const auto draw = [&] { return std::uint32_t(rng() % 6); };
     d.set_timings(axis, StageTimings{draw(), draw(), draw(), draw()});
@@ -82,6 +113,10 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
     }
   }
   d.drain();
+  w.snap = d.snapshot().pos;  // (SNAP_* lie above 0x80: every address bit the map uses)
+  w.irq_seen = rec.outputs().irq;
+  d.write("IRQ_STATUS", ~0u);
+  w.irq_cleared = !rec.outputs().irq;
   w.want = at;
   w.end = d.position();
   return w;

@@ -2,7 +2,8 @@
 // The same random work on any of the block's buses: random arcs (as part programs give
 // them, and 3-D ones turned onto any plane of the axes) with random feed increments and
 // step/dir timings, queued back to back over a master of the target's bus while the
-// block runs (ce_i low a tenth of the time), then drained. Every choice is drawn from
+// block runs (ce_i low a tenth of the time, glitches shorter than the input filter on
+// every input, the done interrupt on), then drained. Every choice is drawn from
 // the seed apart from the bus' own timing, so the work is the same on every bus: what
 // the block does with it (each iteration of the core, each pulse at the pins, the
 // positions) must be the same too, however fast the bus brings the commands.
@@ -26,7 +27,9 @@ struct BusWork {
   std::array<std::vector<std::uint8_t>, 3> pulses;
   Point end;   // the position counters at the end
   Point want;  // the arcs' end point
+  Point snap;  // SNAP_* after a CTRL.snapshot at the end
   std::uint64_t cycles = 0, pieces = 0;
+  bool irq_seen = false, irq_cleared = false;  // the done interrupt at the end; off once cleared
 };
 
 // Runs `arcs` random arcs drawn from `seed` on t through a master of `bus`; throws

@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: Apache-2.0
+// The block's scenarios at the ends of its ranges (io_scenarios.hpp): a queue filled past
+// its depth, each of the six limits, and every field at its full width: registers,
+// positions, commands whose capacities and integrands reach the core's contract
+// (0 <= jv <= cap < 2^(AccWidth-1)), the pacer at the top of its speeds and
+// accelerations, a stalled command, the input filters at their longest and the step/dir
+// timings at theirs. The engines that run them are compared with the reference model on
+// every edge; what the block must do besides is an Expect here.
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "motion/io_scenarios.hpp"
+#include "motion/machine_sim.hpp"
+#include "motion/pacer.hpp"
+#include "motion/scenario_kit.hpp"
+
+namespace dda::motion {
+
+using namespace scenario;
+
+namespace {
+
+void ctrl(MotionDriver& d, std::string_view bit) { d.write("CTRL", field_bit("CTRL", bit)); }
+
+// Every field of a register: the bits a write keeps.
+std::uint32_t writable(std::string_view reg) {
+  std::uint32_t mask = 0;
+  for (const Field& f : map().fields) {
+    if (f.reg == reg) mask |= std::uint32_t((std::uint64_t{1} << f.width) - 1) << f.lsb;
+  }
+  return mask;
+}
+
+// The entry words of `c` written and committed by hand (MotionDriver::queue waits for
+// room: these go into a full queue).
+void commit_words(BusMaster& m, const Command& c) {
+  const std::vector<std::uint32_t> w = entry_words(c);
+  for (std::size_t j = 0; j < w.size(); ++j) m.write(reg_offset("ENTRY") + 4 * std::uint32_t(j), w[j]);
+  m.write(reg_offset("CTRL"), field_bit("CTRL", "commit"));
+}
+
+}  // namespace
+
+// A slow line holds the core while single-step entries fill the queue behind it to its
+// depth (SNAP_LEVEL, STATUS.full); one more entry is refused (err_overflow, the level
+// kept); after CTRL.clear everything queued runs and nothing refused does.
+void queue_overflow(BusTarget& block, const Expect& ex) {
+  fresh(block);
+  MachineSim t(block, Point{}, MachineSwitches{});
+  WishboneMaster m(t, 37, true, 0);
+  MotionDriver d(m, 37, false);
+  const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", d.read("CONFIG"));
+  d.write("IRQ_LEVEL", depth - 1);
+  d.write("IRQ_ENABLE", field_bit("IRQ_ENABLE", "low"));
+  queue_unpaced(d, Point{6000, 1500, 0}, 8);
+  const Command one = plan_line(Point{}, Point{1, 0, 0}, Preload::Half).pieces.front().cmd;
+  for (std::uint32_t k = 0; k < depth; ++k) commit_words(m, one);
+  ex.eq(status(d, "full"), 1, "status(d, \"full\") == 1");
+  ex.eq(status(d, "level"), depth, "status(d, \"level\") == depth");
+  ex.eq(d.snapshot().level, depth, "d.snapshot().level == depth");
+  ex.eq(status(d, "err"), 0, "status(d, \"err\") == 0");
+  commit_words(m, one);
+  ex.eq(status(d, "err_overflow"), 1, "status(d, \"err_overflow\") == 1");
+  ex.eq(status(d, "level"), depth, "status(d, \"level\") == depth");
+  d.clear();
+  ex.eq(status(d, "err_overflow"), 0, "status(d, \"err_overflow\") == 0");
+  d.drain();
+  ex.eq(d.position(), Point{6000 + std::int64_t(depth), 1500, 0}, "d.position() == Point{6000 + depth, 1500, 0}");
+  ex.eq(get_field("IRQ_STATUS", "low", d.read("IRQ_STATUS")), 1,
+        "get_field(\"IRQ_STATUS\", \"low\", d.read(\"IRQ_STATUS\")) == 1");
+  ex(t.outputs().irq, "t.outputs().irq");
+}
+
+// Each of the six limits (hard stop): a move toward the switch stops on it with its bit
+// in TRIP (err_limit, LATCH_* at the stop); after CTRL.clear the move away runs to its end.
+void each_limit(BusTarget& block, const Expect& outer) {
+  fresh(block);
+  MachineSim t(block, Point{}, MachineSwitches{});
+  WishboneMaster m(t, 41, false, 3);
+  MotionDriver d(m, 41);
+  d.set_inputs(0, 2, 1, 0);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    for (const int sign : {-1, 1}) {
+      const std::string name = std::string("limit_") + kAxes[axis] + (sign < 0 ? "_neg" : "_pos");
+      const Expect ex([&](bool ok, const std::string& what) { outer(ok, name + ": " + what); });
+      const Point here = t.physical();
+      const std::int64_t at[3] = {here.x, here.y, here.z};
+      auto& sw = sign < 0 ? t.switches().limit_neg : t.switches().limit_pos;
+      sw[axis] = at[axis] + sign * 30;
+      Point toward, away;
+      (axis == 0 ? toward.x : axis == 1 ? toward.y : toward.z) = sign * 100;
+      (axis == 0 ? away.x : axis == 1 ? away.y : away.z) = -sign * 100;
+      toward = toward + Point{7, -5, 3};  // another axis moves too
+      queue_unpaced(d, toward, 4);
+      d.wait_rest();
+      ex.eq(d.read("TRIP"), in_bit(name), "d.read(\"TRIP\") == in_bit(name)");
+      ex.eq(status(d, "err_limit"), 1, "status(d, \"err_limit\") == 1");
+      const Point stopped = d.position();
+      ex.eq(d.positions("LATCH"), stopped, "d.positions(\"LATCH\") == stopped");
+      ex.eq(t.physical(), stopped, "t.physical() == stopped");
+      d.clear();
+      queue_unpaced(d, away, 2);
+      d.drain();
+      ex.eq(d.position(), stopped + away, "d.position() == stopped + away");
+      sw[axis].reset();
+      m.idle(8);
+      d.clear();
+      ex.eq(status(d, "err"), 0, "status(d, \"err\") == 0");
+    }
+  }
+}
+
+namespace {
+
+// Every read/write register but the positions at all ones, at random values and at 0:
+// each reads back what it keeps (OVERRIDE at most 200%); the watchdog written 0 last (off).
+void register_ranges(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  for (const Register& r : kRegisters) {
+    if (r.access != Access::RW || r.name.substr(0, 4) == "POS_") continue;
+    const std::string name(r.name);
+    const std::uint32_t mask = writable(name);
+    for (const std::uint32_t v : {~0u, std::uint32_t(rng()), std::uint32_t(rng()), 0u}) {
+      d.write(name, v);
+      const std::uint32_t kept = name == "OVERRIDE" ? std::min(v & mask, 2 * kOverrideOne) : v & mask;
+      ex.eq(d.read(name), kept, name + " reads back what a write keeps");
+    }
+  }
+  d.write("OVERRIDE", kOverrideOne);
+  d.clear();
+}
+
+// The positions preset to a value and to its complement (every bit both ways): POS_*,
+// SNAP_* and PROBE_* (the probe's edge while armed) read them.
+void position_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  const auto s32 = [](std::uint32_t v) { return std::int64_t(std::int32_t(v)); };
+  const std::uint32_t vx = std::uint32_t(rng()), vy = std::uint32_t(rng()), vz = std::uint32_t(rng());
+  d.set_inputs(0, 2, 2, 0);
+  for (const Point p : {Point{s32(vx), s32(vy), s32(vz)}, Point{s32(~vx), s32(~vy), s32(~vz)}}) {
+    d.preset(p);
+    ex.eq(d.position(), p, "d.position() == p");
+    ex.eq(d.snapshot().pos, p, "d.snapshot().pos == p");
+    d.arm_probe();
+    t.force = [](MachinePins& pins) { pins.probe = true; };
+    m.idle(8);
+    t.force = nullptr;
+    m.idle(8);
+    ex.eq(status(d, "probed"), 1, "status(d, \"probed\") == 1");
+    ex.eq(d.positions("PROBE"), p, "d.positions(\"PROBE\") == p");
+  }
+  d.preset(Point{});
+}
+
+// A command that can never go on (X still to step, its integrand 0 and never corrected):
+// the core stops it (STATUS.err_stall, ERR_COUNT counts it) and the block takes the next.
+void stalled_command(MotionDriver& d, const Expect& ex) {
+  Command c;
+  c.cap = 16;
+  c.cnt_x = 3;
+  d.queue(c);
+  queue_unpaced(d, Point{5, 2, 0}, 1);
+  d.drain();
+  ex.eq(status(d, "err_stall"), 1, "status(d, \"err_stall\") == 1");
+  ex.eq(d.read("ERR_COUNT"), 1, "d.read(\"ERR_COUNT\") == 1");
+  ex.eq(d.position(), Point{5, 2, 0}, "d.position() == Point{5, 2, 0}");
+  d.clear();
+  d.preset(Point{});
+}
+
+// A paced entry of `c` at a random top speed (1/64 to 1 step per clock) and minimum
+// speed (1/256 step per clock and up, no faster), at a random acceleration.
+PaceEntry fast_pacing(MotionDriver& d, const Command& c, std::mt19937_64& rng) {
+  const std::uint32_t cruise = (1u << 26) + std::uint32_t(rng() % ((1ull << 32) - (1u << 26)));
+  const std::uint32_t vmin = std::min(cruise, (1u << 24) + std::uint32_t(rng() % (1u << 28)));
+  const std::uint32_t accel = std::uint32_t(rng());
+  d.set_pacing(accel, vmin);
+  return pace_entries({c}, cruise, vmin, accel).front();
+}
+
+// Arcs whose capacity 2^n a b reaches the top of the contract (the largest n below
+// 2^(AccWidth-1), one less every other arc): each piece started unpaced or paced at the
+// top of the pacer's ranges, run a few hundred clocks and aborted.
+void wide_arcs(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  for (int k = 0; k < 8; ++k) {
+    ArcSpec s;
+    s.a = 16384 + std::int64_t(rng() % 16385);
+    s.b = 16384 + std::int64_t(rng() % 16385);
+    int n = 0;
+    while ((std::uint64_t(s.a * s.b) << (n + 1)) < (std::uint64_t{1} << (hw::kAccWidth - 1))) ++n;
+    s.bits = n - k % 2;
+    s.preload = k % 3 == 0 ? Preload::Zero : Preload::Half;
+    s.dir = k % 4 < 2 ? Direction::Ccw : Direction::Cw;
+    const Plan plan = plan_arc(s);
+    const Command& c = plan.pieces.front().cmd;
+    d.preset(plan.from);
+    d.queue(c, 0, 0, k % 2 ? fast_pacing(d, c, rng) : PaceEntry{});
+    m.idle(300 + int(rng() % 600));
+    ctrl(d, "abort");
+    ex.eq(status(d, "aborted"), 1, "status(d, \"aborted\") == 1");
+    d.clear();
+  }
+  d.preset(Point{});
+}
+
+// Third-axis moves whose capacity, integrand and preload are drawn over the contract's
+// whole range (capacities 2^40 .. 2^(AccWidth-1) - 1, integrands of at least half the
+// capacity: a step every other iteration at most), on each of the block's axes (the
+// entry's axes), unpaced or paced: each ends its steps on its axis.
+void wide_third_axis(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  const std::uint64_t top = std::uint64_t{1} << (hw::kAccWidth - 1), low = std::uint64_t{1} << 40;
+  Point want = d.position();
+  for (int k = 0; k < 12; ++k) {
+    Command c;
+    c.cap_z = std::int64_t(low + rng() % (top - low));
+    c.jv_z = c.cap_z - std::int64_t(rng() % std::uint64_t(c.cap_z / 2));
+    c.jr_z = std::int64_t(rng() % std::uint64_t(c.cap_z));
+    c.cnt_z = 1 + std::int64_t(rng() % 12);
+    c.dir_z_neg = rng() % 2 == 0;
+    const int rot = k % 3;
+    d.queue(c, 0, rot, k % 2 ? fast_pacing(d, c, rng) : PaceEntry{});
+    want = want + to_run_axes(Point{0, 0, c.dir_z_neg ? -c.cnt_z : c.cnt_z}, rot);
+  }
+  d.drain();
+  ex.eq(d.position(), want, "d.position() == want");
+}
+
+// A long 3-D line: its first two pieces (the longest a piece may be) paced at the top of
+// the pacer's ranges, aborted after a few thousand clocks.
+void long_line(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  const Plan plan = plan_line(Point{}, Point{1 << 22, -(3 << 20), 5 << 19}, Preload::Half);
+  const std::vector<Command> cmds{plan.pieces[0].cmd, plan.pieces[1].cmd};
+  const std::uint32_t accel = std::uint32_t(rng()) | 1u << 31;
+  d.set_pacing(accel, 1u << 26);
+  const std::vector<PaceEntry> pace = pace_entries(cmds, 0xFFFFFFFFu, 1u << 26, accel);
+  for (std::size_t k = 0; k < cmds.size(); ++k) d.queue(cmds[k], 0, plan.pieces[k].rot, pace[k]);
+  m.idle(3000 + int(rng() % 3000));
+  ctrl(d, "abort");
+  ex.eq(status(d, "level"), 0, "status(d, \"level\") == 0");
+  d.clear();
+  d.preset(Point{});
+}
+
+// IN_FILTER at its longest: an input held active is seen (INPUTS) only after the whole
+// filter, and released only after it again.
+void filter_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, const Expect& outer) {
+  const std::uint32_t top = (1u << kFilterWidth) - 1;
+  d.set_inputs(0, top, top, 0);
+  for (const char* in : {"home_z", "probe"}) {
+    const Expect ex([&](bool ok, const std::string& what) { outer(ok, std::string(in) + ": " + what); });
+    t.force = [&](MachinePins& p) { p = MachinePins::from_bits(p.bits() | in_bit(in)); };
+    m.idle(int(top) - 64);
+    ex.eq(d.read("INPUTS") & in_bit(in), 0, "not seen before the filter's clocks");
+    m.idle(128);
+    ex.eq(d.read("INPUTS") & in_bit(in), in_bit(in), "seen after them");
+    t.force = nullptr;
+    m.idle(int(top) - 64);
+    ex.eq(d.read("INPUTS") & in_bit(in), in_bit(in), "still seen before the filter's clocks");
+    m.idle(128);
+    ex.eq(d.read("INPUTS") & in_bit(in), 0, "released after them");
+  }
+  d.set_inputs(0, 2, 2, 0);
+}
+
+// The step/dir timings near their maximum on every axis: a move that reverses each
+// axis ends on its point.
+void timing_ranges(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  constexpr std::uint32_t top = (1u << kTimingWidth) - 1;
+  const auto near = [&] { return top - std::uint32_t(rng() % 256); };
+  for (const char axis : kAxes) d.set_timings(axis, StageTimings{near(), near(), near(), near()});
+  const Point from = d.position();
+  queue_unpaced(d, Point{2, 2, -2}, 1);
+  queue_unpaced(d, Point{-1, -1, 1}, 1);
+  d.drain();
+  ex.eq(d.position(), from + Point{1, 1, -1}, "d.position() == from + Point{1, 1, -1}");
+  for (const char axis : kAxes) d.set_timings(axis, StageTimings{});
+}
+
+}  // namespace
+
+// Every field at its full width, the block compared with the reference model on every
+// edge: the registers, the positions, a stalled command, capacities and integrands at
+// the top of the core's contract, the pacer at the top of its ranges, the input filters
+// and the step/dir timings at their longest.
+void field_ranges(BusTarget& block, const Expect& ex) {
+  fresh(block);
+  MachineSim t(block, Point{}, MachineSwitches{});
+  WishboneMaster m(t, 43, true, 2);
+  MotionDriver d(m, 43);
+  std::mt19937_64 rng(43);
+  register_ranges(d, rng, ex);
+  position_ranges(t, m, d, rng, ex);
+  stalled_command(d, ex);
+  wide_arcs(m, d, rng, ex);
+  wide_third_axis(d, rng, ex);
+  long_line(m, d, rng, ex);
+  filter_ranges(t, m, d, ex);
+  timing_ranges(d, rng, ex);
+}
+
+}  // namespace dda::motion
