@@ -44,6 +44,8 @@ TEST_CASE("bridges: the same random work over Wishbone, AXI4-Lite and SPI does t
     INFO(bus_name(bus) << ": " << w.back().cycles << " cycles, " << w.back().iterations.size() << " iterations");
     CHECK(w.back().end == w.back().want);
     CHECK(w.back().snap == w.back().end);
+    CHECK(w.back().entry_read == 0);
+    CHECK(w.back().snap_after_write == w.back().snap);
     CHECK(w.back().irq_seen);
     CHECK(w.back().irq_cleared);
   }

@@ -28,6 +28,8 @@ void same_work(Bus bus, std::uint64_t seed, int arcs) {
   INFO(h.cycle() << " cycles");
   CHECK(got.end == got.want);
   CHECK(got.snap == got.end);
+  CHECK(got.entry_read == 0);
+  CHECK(got.snap_after_write == got.snap);
   CHECK(got.irq_seen);
   CHECK(got.irq_cleared);
   CHECK(got.iterations.size() > 100);

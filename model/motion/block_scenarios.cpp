@@ -44,7 +44,7 @@ void commit_words(BusMaster& m, const Command& c) {
 }  // namespace
 
 // A slow line holds the core while single-step entries fill the queue behind it to its
-// depth (SNAP_LEVEL, STATUS.full); one more entry is refused (err_overflow, the level
+// depth (SNAP_LEVEL one short of it and at it, STATUS.full); one more entry is refused (err_overflow, the level
 // kept); after CTRL.clear everything queued runs and nothing refused does.
 void queue_overflow(BusTarget& block, const Expect& ex) {
   fresh(block);
@@ -56,7 +56,10 @@ void queue_overflow(BusTarget& block, const Expect& ex) {
   d.write("IRQ_ENABLE", field_bit("IRQ_ENABLE", "low"));
   queue_unpaced(d, Point{6000, 1500, 0}, 8);
   const Command one = plan_line(Point{}, Point{1, 0, 0}, Preload::Half).pieces.front().cmd;
-  for (std::uint32_t k = 0; k < depth; ++k) commit_words(m, one);
+  for (std::uint32_t k = 0; k + 1 < depth; ++k) commit_words(m, one);
+  ex.eq(d.snapshot().level, depth - 1, "d.snapshot().level == depth - 1");
+  ex.eq(status(d, "full"), 0, "status(d, \"full\") == 0");
+  commit_words(m, one);
   ex.eq(status(d, "full"), 1, "status(d, \"full\") == 1");
   ex.eq(status(d, "level"), depth, "status(d, \"level\") == depth");
   ex.eq(d.snapshot().level, depth, "d.snapshot().level == depth");
@@ -152,19 +155,37 @@ void position_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, std::mt19937_
   d.preset(Point{});
 }
 
-// A command that can never go on (X still to step, its integrand 0 and never corrected):
-// the core stops it (STATUS.err_stall, ERR_COUNT counts it) and the block takes the next.
-void stalled_command(MotionDriver& d, const Expect& ex) {
+// Commands that can never go on (X still to step, its integrand 0 and never corrected):
+// the core stops each (STATUS.err_stall, ERR_COUNT counts them) and the block takes the
+// next; an empty command (no step on any axis) ends at once and is counted as done.
+void stalled_commands(MotionDriver& d, const Expect& ex) {
   Command c;
   c.cap = 16;
   c.cnt_x = 3;
-  d.queue(c);
+  const std::uint32_t done = d.read("DONE_COUNT");
+  for (int k = 0; k < 4; ++k) d.queue(c);
+  d.queue(Command{});
   queue_unpaced(d, Point{5, 2, 0}, 1);
   d.drain();
   ex.eq(status(d, "err_stall"), 1, "status(d, \"err_stall\") == 1");
-  ex.eq(d.read("ERR_COUNT"), 1, "d.read(\"ERR_COUNT\") == 1");
+  ex.eq(d.read("ERR_COUNT"), 4, "d.read(\"ERR_COUNT\") == 4");
+  ex.eq(d.read("DONE_COUNT"), done + 2, "d.read(\"DONE_COUNT\") == done + 2");
   ex.eq(d.position(), Point{5, 2, 0}, "d.position() == Point{5, 2, 0}");
   d.clear();
+  d.preset(Point{});
+}
+
+// DONE_COUNT and SNAP_DONE through 2^9 - 1 to 2^9 (every bit below both ways): single
+// steps, each counted, snapshots at both counts.
+void done_counts(MotionDriver& d, const Expect& ex) {
+  const Command one = plan_line(Point{}, Point{1, 0, 0}, Preload::Half).pieces.front().cmd;
+  const std::uint32_t top = 1u << 9;
+  for (std::uint32_t n = d.read("DONE_COUNT"); n < top - 1; ++n) d.queue(one);
+  d.drain();
+  ex.eq(d.snapshot().done, top - 1, "d.snapshot().done == top - 1");
+  d.queue(one);
+  d.drain();
+  ex.eq(d.snapshot().done, top, "d.snapshot().done == top");
   d.preset(Point{});
 }
 
@@ -189,8 +210,13 @@ void wide_arcs(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect
     int n = 0;
     while ((std::uint64_t(s.a * s.b) << (n + 1)) < (std::uint64_t{1} << (hw::kAccWidth - 1))) ++n;
     s.bits = n - k % 2;
-    s.preload = k % 3 == 0 ? Preload::Zero : Preload::Half;
     s.dir = k % 4 < 2 ? Direction::Ccw : Direction::Cw;
+    // From each quadrant's start (either integrand at its top); every other arc from an
+    // angle off the lattice, the rest of its point in the preloads.
+    const std::int64_t deg = 1000000;
+    s.preload = k % 3 == 0 && k % 2 == 0 ? Preload::Zero : Preload::Half;
+    s.from_theta = 90 * deg * (k % 4) + (k % 2 ? std::int64_t(rng() % (89 * deg)) : 0);
+    s.to_theta = *s.from_theta + 45 * deg;
     const Plan plan = plan_arc(s);
     const Command& c = plan.pieces.front().cmd;
     d.preset(plan.from);
@@ -241,6 +267,31 @@ void long_line(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect
   d.preset(Point{});
 }
 
+// A hand-made entry at the top of every pacing field (cruise and limit 2^32 - 1: a step
+// per clock, the override at 200%, a random length, exit and braking distance) on a long
+// line at the largest acceleration: the speed ramps up past half a step per clock and the
+// phase saturates (the norm unit's latency holds the steps back) before the abort.
+void top_speed(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  const Plan plan = plan_line(Point{}, Point{1 << 22, 1 << 21, -(1 << 20)}, Preload::Half);
+  d.set_pacing(~0u, 1u << 24);
+  d.set_override(2 * kOverrideOne);
+  for (int k = 0; k < 2; ++k) {
+    PaceEntry e;
+    e.cruise = e.limit = ~0u;
+    e.exit = std::uint32_t(rng());
+    e.length = std::uint32_t(rng()) | 1u << 31;
+    e.brake_exit = std::uint32_t(rng()) >> 1;
+    d.queue(plan.pieces[std::size_t(k)].cmd, 0, 0, e);
+  }
+  m.idle(40000);
+  ex(d.read("STATUS") != 0, "the block runs");
+  ctrl(d, "abort");
+  ex.eq(status(d, "level"), 0, "status(d, \"level\") == 0");
+  d.set_override(kOverrideOne);
+  d.clear();
+  d.preset(Point{});
+}
+
 // IN_FILTER at its longest: an input held active is seen (INPUTS) only after the whole
 // filter, and released only after it again.
 void filter_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, const Expect& outer) {
@@ -279,7 +330,7 @@ void timing_ranges(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
 }  // namespace
 
 // Every field at its full width, the block compared with the reference model on every
-// edge: the registers, the positions, a stalled command, capacities and integrands at
+// edge: the registers, the positions, stalled commands, the done count, capacities and integrands at
 // the top of the core's contract, the pacer at the top of its ranges, the input filters
 // and the step/dir timings at their longest.
 void field_ranges(BusTarget& block, const Expect& ex) {
@@ -290,12 +341,16 @@ void field_ranges(BusTarget& block, const Expect& ex) {
   std::mt19937_64 rng(43);
   register_ranges(d, rng, ex);
   position_ranges(t, m, d, rng, ex);
-  stalled_command(d, ex);
+  stalled_commands(d, ex);
+  done_counts(d, ex);
   wide_arcs(m, d, rng, ex);
   wide_third_axis(d, rng, ex);
   long_line(m, d, rng, ex);
+  top_speed(m, d, rng, ex);
   filter_ranges(t, m, d, ex);
   timing_ranges(d, rng, ex);
+  const MotionDriver::Snapshot last = d.snapshot();  // (SNAP_CYCLE's bits up to the run's length)
+  ex(last.cycle > (1u << 18), "last.cycle > (1u << 18)");
 }
 
 }  // namespace dda::motion

@@ -113,7 +113,10 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
     }
   }
   d.drain();
-  w.snap = d.snapshot().pos;  // (SNAP_* lie above 0x80: every address bit the map uses)
+  w.snap = d.snapshot().pos;  // (SNAP_* lie above 0x80, ENTRY above 0x100: every address bit)
+  w.entry_read = d.read("ENTRY");
+  d.write("SNAP_X", ~std::uint32_t(w.snap.x));  // read-only: the write changes nothing
+  w.snap_after_write = d.positions("SNAP");
   w.irq_seen = rec.outputs().irq;
   d.write("IRQ_STATUS", ~0u);
   w.irq_cleared = !rec.outputs().irq;

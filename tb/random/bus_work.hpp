@@ -25,9 +25,11 @@ struct BusWork {
   // Each axis' step pulses at the pins (x, y, z), in order: 1 when the direction pin was
   // high (the axes' pulses interleave as their stages' timings and ce_i let them out).
   std::array<std::vector<std::uint8_t>, 3> pulses;
-  Point end;   // the position counters at the end
-  Point want;  // the arcs' end point
-  Point snap;  // SNAP_* after a CTRL.snapshot at the end
+  Point end;                       // the position counters at the end
+  Point want;                      // the arcs' end point
+  Point snap;                      // SNAP_* after a CTRL.snapshot at the end
+  Point snap_after_write;          // SNAP_* again after a write to SNAP_X (read-only)
+  std::uint32_t entry_read = ~0u;  // ENTRY read at the end (write-only: reads 0)
   std::uint64_t cycles = 0, pieces = 0;
   bool irq_seen = false, irq_cleared = false;  // the done interrupt at the end; off once cleared
 };
