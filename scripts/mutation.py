@@ -154,10 +154,12 @@ CORE_BUILDS = [[], ["--impl", "fast"], ["--ice40"]]
 
 
 def run_sets(d, m, build, timeout):
-    """The first set that fails (killed), or None (survived)."""
+    """The first set that fails (killed), or None (survived). Each set runs on every
+    build before the next set, so a mutant of code one build alone simulates (the fast
+    implementation's, the iCE40 cells') meets the fastest set first there too."""
     for top in tops_of(m["file"]):
-        for opts in CORE_BUILDS if top == "core" else [[]]:
-            for s in SETS[top]:
+        for s in SETS[top]:
+            for opts in CORE_BUILDS if top == "core" else [[]]:
                 killer = run_set(d, s, opts, build, timeout)
                 if killer:
                     return killer
