@@ -87,16 +87,26 @@ SETS = {
 
 
 def code_lines(path):
-    """(number, text) of the lines that compute: not declarations, comments or the
-    assertions' blocks (`ifndef SYNTHESIS ... `endif)."""
-    skip = 0  # depth of the conditional blocks inside an `ifndef SYNTHESIS
+    """(number, text) of the lines that compute: not declarations, comments, the
+    assertions' blocks (`ifndef SYNTHESIS ... `endif) or the formal proofs' abstractions
+    (`ifdef DDA_FORMAL_ABSTRACT ... `else: plain sums no bench simulates, which the
+    proof "lemmas" of scripts/formal.sh holds equal to the code after `else)."""
+    skip = 0  # depth of the conditional blocks inside a skipped one
+    abstract = False  # the skipped block is an abstraction: its `else branch is simulated
     for n, text in enumerate(path.read_text().splitlines(), 1):
         t = text.strip()
-        if t.startswith("`ifndef SYNTHESIS") or (skip and (t.startswith("`ifdef") or t.startswith("`ifndef"))):
+        if t.startswith("`ifndef SYNTHESIS") or t.startswith("`ifdef DDA_FORMAL_ABSTRACT") or \
+                (skip and (t.startswith("`ifdef") or t.startswith("`ifndef"))):
             skip += 1
+        elif skip == 1 and t.startswith("`else") and abstract:
+            skip = 0
+            abstract = False
+            continue
         elif skip and t.startswith("`endif"):
             skip -= 1
             continue
+        if t.startswith("`ifdef DDA_FORMAL_ABSTRACT") and skip == 1:
+            abstract = True
         if skip or DECLARATION.match(text):
             continue
         code = text.split("//")[0]

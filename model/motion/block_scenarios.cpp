@@ -155,15 +155,19 @@ void position_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, std::mt19937_
   d.preset(Point{});
 }
 
-// Commands that can never go on (X still to step, its integrand 0 and never corrected):
+// Commands that can never go on (X or Z still to step, its integrand 0 and never corrected):
 // the core stops each (STATUS.err_stall, ERR_COUNT counts them) and the block takes the
 // next; an empty command (no step on any axis) ends at once and is counted as done.
 void stalled_commands(MotionDriver& d, const Expect& ex) {
   Command c;
   c.cap = 16;
   c.cnt_x = 3;
+  Command z;  // the third axis likewise: a step to make, its integrand 0
+  z.cap_z = 16;
+  z.cnt_z = 2;
   const std::uint32_t done = d.read("DONE_COUNT");
-  for (int k = 0; k < 4; ++k) d.queue(c);
+  for (int k = 0; k < 3; ++k) d.queue(c);
+  d.queue(z);
   d.queue(Command{});
   queue_unpaced(d, Point{5, 2, 0}, 1);
   d.drain();
@@ -172,6 +176,27 @@ void stalled_commands(MotionDriver& d, const Expect& ex) {
   ex.eq(d.read("DONE_COUNT"), done + 2, "d.read(\"DONE_COUNT\") == done + 2");
   ex.eq(d.position(), Point{5, 2, 0}, "d.position() == Point{5, 2, 0}");
   d.clear();
+  d.preset(Point{});
+}
+
+// Paced pieces where one axis ends its steps first, its integrand not 0: from then on the
+// norm unit leaves that axis out (the pacer's d is the others' alone), each piece ends on
+// its point.
+void uneven_axes(MotionDriver& d, const Expect& ex) {
+  d.set_pacing(kAccel, kVmin);
+  Point want = d.position();
+  for (int axis = 0; axis < 3; ++axis) {
+    Command c;
+    c.cap = c.cap_z = 1024;
+    c.jv_x = c.jv_y = c.jv_z = 1024;
+    c.cnt_x = c.cnt_y = c.cnt_z = 40;
+    (axis == 0 ? c.jv_x : axis == 1 ? c.jv_y : c.jv_z) = 512;   // a step every other iteration
+    (axis == 0 ? c.cnt_x : axis == 1 ? c.cnt_y : c.cnt_z) = 8;  // done after 16 of 40
+    d.queue(c, 0, 0, pace_entries({c}, kFast, kVmin, kAccel).front());
+    want = want + Point{c.cnt_x, c.cnt_y, c.cnt_z};
+  }
+  d.drain();
+  ex.eq(d.position(), want, "d.position() == want");
   d.preset(Point{});
 }
 
@@ -342,6 +367,7 @@ void field_ranges(BusTarget& block, const Expect& ex) {
   register_ranges(d, rng, ex);
   position_ranges(t, m, d, rng, ex);
   stalled_commands(d, ex);
+  uneven_axes(d, ex);
   done_counts(d, ex);
   wide_arcs(m, d, rng, ex);
   wide_third_axis(d, rng, ex);
