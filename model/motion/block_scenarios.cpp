@@ -162,6 +162,8 @@ void stalled_commands(MotionDriver& d, const Expect& ex) {
   Command c;
   c.cap = 16;
   c.cnt_x = 3;
+  c.cap_z = 16;  // the third axis idle (no step to make) with an integrand: it cannot go on
+  c.jv_z = 5;
   Command z;  // the third axis likewise: a step to make, its integrand 0
   z.cap_z = 16;
   z.cnt_z = 2;
