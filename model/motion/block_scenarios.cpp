@@ -256,23 +256,37 @@ void wide_arcs(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect
   d.preset(Point{});
 }
 
-// Third-axis moves whose capacity, integrand and preload are drawn over the contract's
-// whole range (capacities 2^40 .. 2^(AccWidth-1) - 1, integrands of at least half the
-// capacity: a step every other iteration at most), on each of the block's axes (the
-// entry's axes), unpaced or paced: each ends its steps on its axis.
-void wide_third_axis(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+// Lines whose capacities, integrands and preloads are drawn over the contract's whole
+// range (capacities 2^40 .. 2^(AccWidth-1) - 1, integrands of at least half the
+// capacity: a step every other iteration at most), on the plane's integrators and the
+// third axis, every other line with capacities just below the contract's top (a
+// preload plus an integrand then reaches 2^(AccWidth-1) and past: the compare needs
+// every bit of the sum), on each of the block's axes (the entry's axes), unpaced or
+// paced: each ends its steps on its axes.
+void wide_lines(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
   const std::uint64_t top = std::uint64_t{1} << (hw::kAccWidth - 1), low = std::uint64_t{1} << 40;
+  const auto capacity = [&](int k) { return std::int64_t(k % 2 ? top - 1 - rng() % low : low + rng() % (top - low)); };
+  const auto draw = [&](std::int64_t cap, std::int64_t& jv, std::int64_t& jr, std::int64_t& cnt) {
+    jv = cap - std::int64_t(rng() % std::uint64_t(cap / 2));
+    jr = std::int64_t(rng() % std::uint64_t(cap));
+    cnt = 1 + std::int64_t(rng() % 12);
+  };
   Point want = d.position();
   for (int k = 0; k < 12; ++k) {
     Command c;
-    c.cap_z = std::int64_t(low + rng() % (top - low));
-    c.jv_z = c.cap_z - std::int64_t(rng() % std::uint64_t(c.cap_z / 2));
-    c.jr_z = std::int64_t(rng() % std::uint64_t(c.cap_z));
-    c.cnt_z = 1 + std::int64_t(rng() % 12);
+    c.cap = capacity(k);
+    c.cap_z = capacity(k);
+    draw(c.cap, c.jv_x, c.jr_x, c.cnt_x);
+    draw(c.cap, c.jv_y, c.jr_y, c.cnt_y);
+    draw(c.cap_z, c.jv_z, c.jr_z, c.cnt_z);
+    c.dir_x_neg = rng() % 2 == 0;
+    c.dir_y_neg = rng() % 2 == 0;
     c.dir_z_neg = rng() % 2 == 0;
     const int rot = k % 3;
     d.queue(c, 0, rot, k % 2 ? fast_pacing(d, c, rng) : PaceEntry{});
-    want = want + to_run_axes(Point{0, 0, c.dir_z_neg ? -c.cnt_z : c.cnt_z}, rot);
+    const Point moved{c.dir_x_neg ? -c.cnt_x : c.cnt_x, c.dir_y_neg ? -c.cnt_y : c.cnt_y,
+                      c.dir_z_neg ? -c.cnt_z : c.cnt_z};
+    want = want + to_run_axes(moved, rot);
   }
   d.drain();
   ex.eq(d.position(), want, "d.position() == want");
@@ -372,7 +386,7 @@ void field_ranges(BusTarget& block, const Expect& ex) {
   uneven_axes(d, ex);
   done_counts(d, ex);
   wide_arcs(m, d, rng, ex);
-  wide_third_axis(d, rng, ex);
+  wide_lines(d, rng, ex);
   long_line(m, d, rng, ex);
   top_speed(m, d, rng, ex);
   filter_ranges(t, m, d, ex);
