@@ -80,7 +80,8 @@ SETS = {
                "bus_vec_sets/helix", "bus_vec_sets/paced", "bus_vec_sets/soft_stop", "bus_vec_sets/watchdog",
                "bus_vec_sets/io_estop", "bus_vec_sets/io_limit_hard", "bus_vec_sets/io_limit_decel",
                "bus_vec_sets/io_homing", "bus_vec_sets/io_probing", "bus_vec_sets/io_snapshot",
-               "bus_vec_sets/io_glitches", "bus_vec_sets/drilling", "bus_vec_sets/planes", "bus_vec_sets/io_ranges"],
+               "bus_vec_sets/io_glitches", "bus_vec_sets/drilling", "bus_vec_sets/planes", "bus_vec_sets/feeds",
+               "bus_vec_sets/io_ranges"],
     "axil": ["bus_vec_sets/axil_paper", "bus_vec_sets/axil_queue", "bus_vec_sets/axil_paper_timed"],
     "spi": ["bus_vec_sets/spi_paper", "bus_vec_sets/spi_queue"],
 }
@@ -253,6 +254,9 @@ def main():
     ap.add_argument("--floor", type=float, default=95.0)
     ap.add_argument("--list", action="store_true", help="print the drawn mutants and stop")
     a = ap.parse_args()
+    # Absolute: iverilog reads a nested file list's relative paths from the list's own
+    # folder (rtl/), so a relative mutant folder would fail every block mutant's compile.
+    a.build = str(Path(a.build).resolve())
     work = Path(a.build) / "mutation"
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
@@ -274,6 +278,11 @@ def main():
             print(f"{m['file']}:{m['line']} {m['op']} #{m['k']}: {m['text']}")
         return 0
     print(f"mutation: {stillborn} stillborn (did not compile) replaced")
+    # The operators rarely break the syntax: many stillborn mutants mean the compile
+    # itself fails (a path, a tool), which would leave whole files undrawn.
+    if stillborn > len(chosen) // 10:
+        print("mutation: more than one mutant in ten does not compile: check the compile step", file=sys.stderr)
+        return 1
     gen = subprocess.run(["ctest", "--test-dir", a.build, "-R", r"^vectors\.(bus\.)?gen_"], capture_output=True,
                          text=True, check=False)
     if gen.returncode != 0:

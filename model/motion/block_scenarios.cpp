@@ -74,6 +74,18 @@ void queue_overflow(BusTarget& block, const Expect& ex) {
   ex.eq(get_field("IRQ_STATUS", "low", d.read("IRQ_STATUS")), 1,
         "get_field(\"IRQ_STATUS\", \"low\", d.read(\"IRQ_STATUS\")) == 1");
   ex(t.outputs().irq, "t.outputs().irq");
+  // A commit before every word of an entry is written, then an entry word on two byte
+  // lanes: each refused with its cause and the sticky error.
+  m.write(reg_offset("ENTRY"), 1);
+  m.write(reg_offset("CTRL"), field_bit("CTRL", "commit"));
+  ex.eq(status(d, "err_partial"), 1, "status(d, \"err_partial\") == 1");
+  ex.eq(status(d, "err"), 1, "status(d, \"err\") == 1");
+  d.clear();
+  m.write(reg_offset("ENTRY"), 1, 0x3);
+  ex.eq(status(d, "err_lanes"), 1, "status(d, \"err_lanes\") == 1");
+  ex.eq(status(d, "err"), 1, "status(d, \"err\") == 1");
+  ex.eq(status(d, "level"), 0, "status(d, \"level\") == 0");
+  d.clear();
 }
 
 // Each of the six limits (hard stop): a move toward the switch stops on it with its bit
@@ -333,6 +345,49 @@ void top_speed(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect
   d.preset(Point{});
 }
 
+// Pairs of lines queued back to back, the first one's exit 0 under a VMIN above it: the
+// pacer lands on VMIN before the first ends, its braking sum keeping what the ramps left
+// over (a cruise speed off the acceleration's lattice), and the second accelerates from
+// VMIN with it, its braking point depending on it.
+void vmin_corners(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  Point want = d.position();
+  for (int k = 0; k < 4; ++k) {
+    const std::uint32_t cruise = (1u << 26) + std::uint32_t(rng() % (1u << 26));  // 1/64 .. 1/32 step per clock
+    const std::uint32_t vmin = (1u << 22) + std::uint32_t(rng() % (1u << 24));
+    const std::uint32_t accel = (1u << 31) + std::uint32_t(rng() % (1u << 31));  // 2^-17 .. 2^-16 step/clock^2
+    d.set_pacing(accel, vmin);
+    const Point a{150 + std::int64_t(rng() % 100), std::int64_t(rng() % 100), 0};
+    const Point b{-std::int64_t(rng() % 100), 150 + std::int64_t(rng() % 100), 0};
+    const Command c1 = plan_line(Point{}, a, Preload::Half).pieces.front().cmd;
+    const Command c2 = plan_line(Point{}, b, Preload::Half).pieces.front().cmd;
+    d.queue(c1, 0, 0, pace_entries({c1}, cruise, vmin, accel).front());
+    d.queue(c2, 0, 0, pace_entries({c2}, cruise, vmin, accel).front());
+    d.drain();
+    want = want + a + b;
+  }
+  ex.eq(d.position(), want, "d.position() == want");
+}
+
+// Soft stops of a slow line whose X pulses are long (400 clocks at a step per 1,000 or
+// more) at the largest acceleration: the speed reaches rest within some 60 clocks of the
+// stop, often while the X pulse is out and no other; the flush waits for it.
+void soft_stops(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
+  d.set_timings('x', StageTimings{400, 2, 1, 1});
+  d.set_pacing(~0u, 1u << 20);
+  const Command c = plan_line(Point{}, Point{3000, 2000, 0}, Preload::Half).pieces.front().cmd;
+  for (int k = 0; k < 6; ++k) {
+    d.preset(Point{});
+    d.queue(c, 0, 0, pace_entries({c}, 1u << 22, 1u << 20, ~0u).front());
+    m.idle(2000 + int(rng() % 6000));
+    ctrl(d, "soft_stop");
+    d.wait_rest();
+    ex.eq(status(d, "aborted"), 1, "status(d, \"aborted\") == 1");
+    d.clear();
+  }
+  d.set_timings('x', StageTimings{});
+  d.preset(Point{});
+}
+
 // IN_FILTER at its longest: an input held active is seen (INPUTS) only after the whole
 // filter, and released only after it again.
 void filter_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, const Expect& outer) {
@@ -389,6 +444,8 @@ void field_ranges(BusTarget& block, const Expect& ex) {
   wide_lines(d, rng, ex);
   long_line(m, d, rng, ex);
   top_speed(m, d, rng, ex);
+  vmin_corners(d, rng, ex);
+  soft_stops(m, d, rng, ex);
   filter_ranges(t, m, d, ex);
   timing_ranges(d, rng, ex);
   const MotionDriver::Snapshot last = d.snapshot();  // (SNAP_CYCLE's bits up to the run's length)
