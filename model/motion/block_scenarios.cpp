@@ -348,7 +348,8 @@ void top_speed(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expect
 // Pairs of lines queued back to back, the first one's exit 0 under a VMIN above it: the
 // pacer lands on VMIN before the first ends, its braking sum keeping what the ramps left
 // over (a cruise speed off the acceleration's lattice), and the second accelerates from
-// VMIN with it, its braking point depending on it.
+// VMIN carrying it into its own braking sum. (A sum off by VMIN's distance of one clock
+// seldom moves a braking point: docs/verification.md, "Mutation testing".)
 void vmin_corners(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
   Point want = d.position();
   for (int k = 0; k < 4; ++k) {
