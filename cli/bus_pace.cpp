@@ -11,6 +11,7 @@
 #include <functional>
 
 #include "datapath/errors.hpp"
+#include "motion/motion_driver.hpp"
 #include "vectors.hpp"
 
 namespace dda::vec {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda vectors --bus (docs/vectors.md, "Bus-level sets"): per-cycle vectors of the motion
 // block, from its reference model (dda/motion_model.hpp) driven over the Wishbone bus by
-// the firmware driver of dda/motion_bus.hpp: Wishbone cycles in; acknowledge, read data,
+// the firmware driver of model/motion/motion_driver.hpp: Wishbone cycles in; acknowledge, read data,
 // steps, directions, interrupt, positions and queue level out.
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 
 #include "motion/feed.hpp"
 #include "motion/io_scenarios.hpp"
-#include "motion/motion_bus.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion_harness.hpp"
 #include "vectors.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "accuracy/golden.hpp"
 #include "datapath/hw_params.hpp"
-#include "motion/motion_bus.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion/motion_model.hpp"
 #include "report/pace_report.hpp"
 #include "vector_set.hpp"

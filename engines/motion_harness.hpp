@@ -3,7 +3,7 @@
 // model (MotionModel) after every edge: the output ports, the block's registers
 // (kBlockRegs) and the core's register table. On its Wishbone bus (rtl/dda_motion.v) or
 // behind a bridge (rtl/dda_motion_axil.v, rtl/dda_motion_spi.v: then the bridge's
-// registers too, against its reference model). A bus master (motion/motion_bus.hpp)
+// registers too, against its reference model). A bus master (motion/bus_master.hpp)
 // drives it.
 #pragma once
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "vl_sampler.hpp"
 

@@ -9,6 +9,7 @@
 
 #include "bus_work.hpp"
 #include "dda_random.hpp"
+#include "motion/bus_master.hpp"
 #include "motion_harness.hpp"
 
 using namespace dda;

@@ -13,6 +13,7 @@
 
 #include "accuracy/golden.hpp"
 #include "dda_random.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion/motion_map.hpp"
 #include "motion_harness.hpp"
 #include "motion_mix.hpp"

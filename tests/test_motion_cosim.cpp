@@ -10,6 +10,8 @@
 #include <systemc>
 
 #include "dda_random.hpp"
+#include "motion/bus_monitors.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion_cosim.hpp"
 #include "motion_mix.hpp"
 #include "paced_program.hpp"

@@ -10,7 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_monitors.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion_harness.hpp"
 #include "planner/planner.hpp"
 #include "report/pace_report.hpp"

@@ -20,6 +20,7 @@
 
 #include "accuracy/golden.hpp"
 #include "dda_random.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion/speed_monitor.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "motion_harness.hpp"

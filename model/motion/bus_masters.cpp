@@ -1,12 +1,42 @@
 // SPDX-License-Identifier: Apache-2.0
-// The AXI4-Lite and SPI masters of motion_bus.hpp.
+// The bus masters of bus_master.hpp.
 #include <algorithm>
 #include <string>
 
 #include "datapath/errors.hpp"
-#include "motion/motion_bus.hpp"
+#include "motion/bus_master.hpp"
 
 namespace dda::motion {
+
+std::uint32_t WishboneMaster::run(const Transfer& t) {
+  std::uniform_int_distribution<int> pct(0, 99);
+  while (pct(rng_) < idle_percent_) idle(1);
+  bool taken = false;
+  for (int guard = 0; guard < 64; ++guard) {
+    BusIn b;
+    b.cyc = true;
+    b.stb = pipelined_ ? !taken : true;
+    b.we = t.we;
+    b.adr = t.adr;
+    b.dat = t.dat;
+    b.sel = t.sel;
+    const bool stall = t_.outputs().stall;
+    tick(b);
+    if (b.stb && !stall) taken = true;
+    if (taken && t_.outputs().ack) {
+      const std::uint32_t data = t.we ? 0 : t_.outputs().dat;
+      // Classic: the request stays on the bus through the ack cycle (the block stalls
+      // it, so it is not taken twice). Pipelined: the next request may start now.
+      if (!pipelined_) tick(b);
+      return data;
+    }
+  }
+  throw GuardError("Wishbone master: no ack within 64 cycles");
+}
+
+void BusMaster::idle(int cycles) {
+  for (int i = 0; i < cycles; ++i) tick(BusIn{});
+}
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 
 namespace dda::motion {
 

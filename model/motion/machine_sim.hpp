@@ -12,7 +12,7 @@
 #include <functional>
 #include <optional>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 
 namespace dda::motion {
 

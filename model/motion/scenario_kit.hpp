@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "datapath/errors.hpp"
-#include "motion/motion_bus.hpp"
+#include "motion/motion_driver.hpp"
 #include "planner/planner.hpp"
 
 namespace dda::motion::scenario {

@@ -17,7 +17,7 @@
 #include <array>
 #include <cstdint>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 
 namespace dda::motion {
 

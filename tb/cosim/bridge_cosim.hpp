@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "motion_harness.hpp"
 #include "sc_sampler.hpp"

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "motion/bus_monitors.hpp"
+#include "motion/motion_driver.hpp"
 #include "speed/segments.hpp"
 
 namespace dda::motion {

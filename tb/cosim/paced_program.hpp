@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 #include "motion/speed_monitor.hpp"
 #include "speed/pace_plan.hpp"
 

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "dda_random.hpp"
+#include "motion/bus_monitors.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "planner/planner.hpp"
 

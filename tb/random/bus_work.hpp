@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 
 namespace dda::motion {
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "datapath/errors.hpp"
+#include "motion/motion_driver.hpp"
 
 namespace dda::motion {
 

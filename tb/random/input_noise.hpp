@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <random>
 
-#include "motion/motion_bus.hpp"
+#include "motion/motion_driver.hpp"
 
 namespace dda::motion {
 

@@ -10,6 +10,8 @@
 #include "datapath/errors.hpp"
 #include "dda_random.hpp"
 #include "input_noise.hpp"
+#include "motion/bus_monitors.hpp"
+#include "motion/motion_driver.hpp"
 #include "motion/stepdir_monitor.hpp"
 #include "planner/planner.hpp"
 

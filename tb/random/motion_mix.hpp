@@ -21,7 +21,7 @@
 
 #include <cstdint>
 
-#include "motion/motion_bus.hpp"
+#include "motion/bus_target.hpp"
 
 namespace dda::motion {
 
