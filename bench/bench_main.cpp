@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "bench_main.hpp"
+#include "bench/bench_main.hpp"
 
 #include <chrono>
 #include <cstdio>

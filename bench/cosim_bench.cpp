@@ -2,8 +2,8 @@
 // scripts/bench: the three-way co-simulation's speed (see bench_main.hpp).
 #include <systemc>
 
-#include "bench_main.hpp"
-#include "cosim_harness.hpp"
+#include "bench/bench_main.hpp"
+#include "tb/cosim/cosim_harness.hpp"
 
 int main(int argc, char* argv[]) {
   dda::cosim::CosimHarness h;

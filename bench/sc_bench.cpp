@@ -2,8 +2,8 @@
 // scripts/bench: the SystemC model's speed (see bench_main.hpp).
 #include <systemc>
 
-#include "bench_main.hpp"
-#include "sc_harness.hpp"
+#include "bench/bench_main.hpp"
+#include "engines/sc_harness.hpp"
 
 int main(int argc, char* argv[]) {
   dda::sc::ScHarness h;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The options every arc command shares, and how they become a plan (arc_options.hpp).
-#include "arc_options.hpp"
+#include "cli/arc_options.hpp"
 
 #include <CLI/CLI.hpp>
 #include <charconv>
@@ -8,8 +8,8 @@
 #include <limits>
 #include <utility>
 
-#include "engines.hpp"
-#include "geometry/fixed_trig.hpp"
+#include "cli/engines.hpp"
+#include "model/geometry/fixed_trig.hpp"
 
 namespace dda::cli {
 

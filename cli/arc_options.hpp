@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "datapath/errors.hpp"
-#include "planner/planner.hpp"
-#include "program_cmd.hpp"
+#include "cli/program_cmd.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/planner/planner.hpp"
 
 namespace CLI {
 class App;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda blocks: each motion block as the reader gives it, streamed (one row per block).
-#include "blocks_cmd.hpp"
+#include "cli/blocks_cmd.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "output.hpp"
-#include "program/program.hpp"
+#include "cli/output.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::cli {
 

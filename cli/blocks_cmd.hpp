@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "program_cmd.hpp"
+#include "cli/program_cmd.hpp"
 
 namespace CLI {
 class App;

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <functional>
 
-#include "datapath/errors.hpp"
-#include "motion/motion_driver.hpp"
-#include "vectors.hpp"
+#include "cli/vectors.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/motion_driver.hpp"
 
 namespace dda::vec {
 

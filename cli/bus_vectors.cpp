@@ -11,14 +11,14 @@
 #include <random>
 #include <sstream>
 
-#include "motion/feed.hpp"
-#include "motion/io_scenarios.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion_harness.hpp"
-#include "vectors.hpp"
+#include "cli/vectors.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/motion/feed.hpp"
+#include "model/motion/io_scenarios.hpp"
+#include "model/motion/motion_driver.hpp"
 
-#include "vector_set.hpp"
-#include "vector_words.hpp"
+#include "cli/vector_set.hpp"
+#include "cli/vector_words.hpp"
 
 namespace dda::vec {
 

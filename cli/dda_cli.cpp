@@ -4,7 +4,7 @@
 // Exit status: 0 success; 1 run-time failure (I/O error, guard tripped, cross-check
 // mismatch); 2 bad usage or bad input. Every error is one line on stderr. Output goes
 // to stdout, or with --out to a file written atomically (temporary file, then rename).
-#include "dda_cli.hpp"
+#include "cli/dda_cli.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -27,29 +27,29 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "arc_options.hpp"
-#include "blocks_cmd.hpp"
-#include "datapath/hw_command.hpp"
-#include "datapath/hw_params.hpp"
-#include "engines.hpp"
-#include "gen_params_cmd.hpp"
-#include "motion/motion_map.hpp"
-#include "motion/motion_model.hpp"
-#include "output.hpp"
-#include "pace_cmd.hpp"
-#include "pipeline/pipeline.hpp"
-#include "program/program.hpp"
-#include "program_cmd.hpp"
-#include "report/feed_report.hpp"
-#include "report/pace_report.hpp"
-#include "report/program_report.hpp"
-#include "report/report.hpp"
-#include "speed/pace_plan.hpp"
-#include "speed_cmd.hpp"
-#include "temp_files.hpp"
-#include "vectors.hpp"
-#include "vectors_cmd.hpp"
+#include "cli/arc_options.hpp"
+#include "cli/blocks_cmd.hpp"
+#include "cli/engines.hpp"
+#include "cli/gen_params_cmd.hpp"
+#include "cli/output.hpp"
+#include "cli/pace_cmd.hpp"
+#include "cli/program_cmd.hpp"
+#include "cli/speed_cmd.hpp"
+#include "cli/temp_files.hpp"
+#include "cli/vectors.hpp"
+#include "cli/vectors_cmd.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/motion/motion_model.hpp"
+#include "model/pipeline/pipeline.hpp"
+#include "model/program/program.hpp"
+#include "model/report/feed_report.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/report/program_report.hpp"
+#include "model/report/report.hpp"
+#include "model/speed/pace_plan.hpp"
 
 namespace dda::cli {
 

@@ -3,7 +3,7 @@
 // without the SystemC model and the RTL.
 #include <string>
 
-#include "engines.hpp"
+#include "cli/engines.hpp"
 
 namespace dda::cli {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines.hpp"
+#include "cli/engines.hpp"
 
 #include <iterator>
 #include <utility>
 
-#include "core_driver.hpp"
-#include "datapath/hw_command.hpp"
-#include "rtl_harness.hpp"
-#include "sc_harness.hpp"
+#include "engines/core_driver.hpp"
+#include "engines/rtl_harness.hpp"
+#include "engines/sc_harness.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda::cli {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "pipeline/pipeline.hpp"
+#include "model/pipeline/pipeline.hpp"
 
 namespace dda::cli {
 

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda gen-params (gen_params_cmd.hpp).
-#include "gen_params_cmd.hpp"
+#include "cli/gen_params_cmd.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "arc_options.hpp"
-#include "datapath/hw_command.hpp"
-#include "motion/motion_map.hpp"
-#include "motion/motion_model.hpp"
-#include "output.hpp"
-#include "vectors.hpp"
+#include "cli/arc_options.hpp"
+#include "cli/output.hpp"
+#include "cli/vectors.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::cli {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "datapath/hw_params.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace CLI {
 class App;

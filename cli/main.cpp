@@ -8,7 +8,7 @@
 // and runs the same command.
 #include <systemc>  // declares sc_main with the linkage libsystemc expects
 
-#include "dda_cli.hpp"
+#include "cli/dda_cli.hpp"
 
 int main(int argc, char* argv[]) { return dda::cli::main(argc, argv); }
 

@@ -13,8 +13,8 @@
 #include <ostream>
 #include <string>
 
-#include "datapath/errors.hpp"
-#include "temp_files.hpp"
+#include "cli/temp_files.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::cli {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "report/pace_report.hpp"
+#include "model/report/pace_report.hpp"
 
 namespace CLI {
 class App;

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // `--program FILE`: the options of a part program's run.
-#include "program_cmd.hpp"
+#include "cli/program_cmd.hpp"
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <utility>
 
-#include "arc_options.hpp"
-#include "program/program.hpp"
+#include "cli/arc_options.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::cli {
 

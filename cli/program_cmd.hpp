@@ -7,10 +7,10 @@
 
 #include <string>
 #include <vector>
-#include "accuracy/golden.hpp"
-#include "pipeline/pipeline.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/pipeline/pipeline.hpp"
 
-#include "program_plan/program_plan.hpp"
+#include "model/program_plan/program_plan.hpp"
 
 namespace CLI {
 class App;

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed_cmd.hpp"
+#include "cli/speed_cmd.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <cmath>
 
-#include "output.hpp"
-#include "report/pace_report.hpp"
-#include "report/speed_report.hpp"
-#include "speed/pace_plan.hpp"
+#include "cli/output.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/report/speed_report.hpp"
+#include "model/speed/pace_plan.hpp"
 
 namespace dda::cli {
 

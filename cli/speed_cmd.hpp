@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "arc_options.hpp"
-#include "speed/machine_limits.hpp"
+#include "cli/arc_options.hpp"
+#include "model/speed/machine_limits.hpp"
 
 namespace CLI {
 class App;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // A vector set's directory, written atomically (vector_set.hpp).
-#include "vector_set.hpp"
+#include "cli/vector_set.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -9,8 +9,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "datapath/errors.hpp"
-#include "temp_files.hpp"
+#include "cli/temp_files.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::vec {
 

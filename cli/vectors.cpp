@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda vectors (docs/vectors.md): the files of a vector set, from the cycle-level
 // reference model (dda/core_model.hpp) running the planner's commands.
-#include "vectors.hpp"
+#include "cli/vectors.hpp"
 
-#include "vector_set.hpp"
-#include "vector_words.hpp"
+#include "cli/vector_set.hpp"
+#include "cli/vector_words.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -18,10 +18,10 @@
 #include <random>
 #include <sstream>
 
-#include "datapath/core_model.hpp"
-#include "datapath/hw_command.hpp"
-#include "datapath/hw_params.hpp"
-#include "report/report.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/report/report.hpp"
 
 namespace dda::vec {
 

@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "datapath/hw_params.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion/motion_model.hpp"
-#include "report/pace_report.hpp"
-#include "vector_set.hpp"
+#include "cli/vector_set.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/motion/motion_model.hpp"
+#include "model/report/pace_report.hpp"
 
 namespace CLI {
 class App;

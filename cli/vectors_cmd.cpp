@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "vectors_cmd.hpp"
+#include "cli/vectors_cmd.hpp"
 
 #include <CLI/CLI.hpp>
 #include <utility>
 
-#include "datapath/hw_command.hpp"
-#include "output.hpp"
-#include "speed/pace_plan.hpp"
+#include "cli/output.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/speed/pace_plan.hpp"
 
 namespace dda::cli {
 

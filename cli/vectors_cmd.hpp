@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "arc_options.hpp"
-#include "speed_cmd.hpp"
-#include "vectors.hpp"
+#include "cli/arc_options.hpp"
+#include "cli/speed_cmd.hpp"
+#include "cli/vectors.hpp"
 
 namespace CLI {
 class App;

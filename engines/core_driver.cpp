@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "core_driver.hpp"
+#include "engines/core_driver.hpp"
 
 #include <sstream>
 #include <utility>
 
-#include "datapath/hw_command.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda {
 

@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "datapath/core_model.hpp"
-#include "scoreboard.hpp"
+#include "engines/scoreboard.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/datapath/core_model.hpp"
 
 namespace dda {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion_harness.hpp"
+#include "engines/motion_harness.hpp"
 
 #include <verilated.h>
 #include <verilated_syms.h>
@@ -9,10 +9,10 @@
 #include "Vdda_motion_axil.h"
 #include "Vdda_motion_spi.h"
 #endif
-#include "datapath/errors.hpp"
-#include "vl_coverage.hpp"
-#include "vl_sampler.hpp"
-#include "vl_waveform.hpp"
+#include "engines/vl_coverage.hpp"
+#include "engines/vl_sampler.hpp"
+#include "engines/vl_waveform.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "motion/bus_target.hpp"
-#include "motion/stepdir_monitor.hpp"
-#include "vl_sampler.hpp"
+#include "engines/vl_sampler.hpp"
+#include "model/motion/bus_target.hpp"
+#include "model/motion/stepdir_monitor.hpp"
 
 class VerilatedContext;
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "rtl_harness.hpp"
+#include "engines/rtl_harness.hpp"
 
 #include <verilated.h>
 
 #include "Vdda_core.h"
-#include "datapath/hw_command.hpp"
-#include "vl_coverage.hpp"
-#include "vl_waveform.hpp"
+#include "engines/vl_coverage.hpp"
+#include "engines/vl_waveform.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda::rtl {
 

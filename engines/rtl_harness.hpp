@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "core_driver.hpp"
-#include "vl_sampler.hpp"
+#include "engines/core_driver.hpp"
+#include "engines/vl_sampler.hpp"
 
 class VerilatedContext;
 class VerilatedVcdC;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "sc_harness.hpp"
+#include "engines/sc_harness.hpp"
 
 #include <cstdio>
 
-#include "datapath/hw_command.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda::sc {
 

@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "core_driver.hpp"
-#include "dda_core.hpp"
-#include "sc_sampler.hpp"
+#include "engines/core_driver.hpp"
+#include "engines/sc_sampler.hpp"
+#include "model/systemc/dda_core.hpp"
 
 namespace dda::sc {
 

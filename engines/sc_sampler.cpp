@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "sc_sampler.hpp"
+#include "engines/sc_sampler.hpp"
 
 #include <systemc>
 

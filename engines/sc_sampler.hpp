@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "datapath/core_model.hpp"
+#include "model/datapath/core_model.hpp"
 
 namespace dda::sc {
 

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <string>
 
-#include "accuracy/golden.hpp"
-#include "datapath/core_model.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/datapath/core_model.hpp"
 
 namespace dda {
 

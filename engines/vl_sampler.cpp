@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "vl_sampler.hpp"
+#include "engines/vl_sampler.hpp"
 
 #include <verilated.h>
 #include <verilated_syms.h>

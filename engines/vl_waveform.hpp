@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda {
 

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "arc_options.hpp"
-#include "datapath/core_model.hpp"
-#include "datapath/hw_command.hpp"
-#include "pipeline/pipeline.hpp"
-#include "program/program.hpp"
-#include "program_cmd.hpp"
-#include "report/report.hpp"
+#include "cli/arc_options.hpp"
+#include "cli/program_cmd.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/pipeline/pipeline.hpp"
+#include "model/program/program.hpp"
+#include "model/report/report.hpp"
 
 namespace py = pybind11;
 

@@ -13,10 +13,10 @@
 #include <sstream>
 #include <string>
 
-#include "core_driver.hpp"
-#include "datapath/hw_command.hpp"
-#include "dda_random.hpp"
-#include "report/report.hpp"
+#include "engines/core_driver.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/report/report.hpp"
+#include "tb/random/dda_random.hpp"
 
 namespace dda::checks {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::program::testing {
 

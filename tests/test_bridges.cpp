@@ -7,10 +7,10 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
-#include "bus_work.hpp"
-#include "dda_random.hpp"
-#include "motion/bus_master.hpp"
-#include "motion_harness.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/motion/bus_master.hpp"
+#include "tb/random/bus_work.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 using namespace dda::motion;

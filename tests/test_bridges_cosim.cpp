@@ -8,9 +8,9 @@
 #include <catch2/catch.hpp>
 #include <systemc>
 
-#include "bridge_cosim.hpp"
-#include "bus_work.hpp"
-#include "dda_random.hpp"
+#include "tb/cosim/bridge_cosim.hpp"
+#include "tb/random/bus_work.hpp"
+#include "tb/random/dda_random.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

@@ -14,8 +14,8 @@
 
 #include <sstream>
 #include <string>
-#include "accuracy/golden.hpp"
-#include "cli_helpers.hpp"
+#include "model/accuracy/golden.hpp"
+#include "tests/cli_helpers.hpp"
 
 namespace {
 

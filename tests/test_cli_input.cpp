@@ -14,7 +14,7 @@
 #include <tuple>
 #include <vector>
 
-#include "cli_helpers.hpp"
+#include "tests/cli_helpers.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli_helpers.hpp"
+#include "tests/cli_helpers.hpp"
 
 namespace {
 

@@ -4,9 +4,9 @@
 // follows docs/design.md (load on the finishing edge, idle after the last piece).
 #include <catch2/catch.hpp>
 
-#include "datapath/core_model.hpp"
-#include "datapath/hw_command.hpp"
-#include "dda_random.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

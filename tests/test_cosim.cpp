@@ -5,9 +5,9 @@
 #define CATCH_CONFIG_RUNNER
 #include <systemc>
 
-#include "core_checks.hpp"
-#include "cosim_harness.hpp"
-#include "regress.hpp"
+#include "tb/cosim/cosim_harness.hpp"
+#include "tb/random/regress.hpp"
+#include "tests/core_checks.hpp"
 
 using namespace dda;
 using namespace dda::checks;

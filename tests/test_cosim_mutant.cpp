@@ -4,8 +4,8 @@
 #define CATCH_CONFIG_RUNNER
 #include <systemc>
 
-#include "core_checks.hpp"
-#include "cosim_harness.hpp"
+#include "tb/cosim/cosim_harness.hpp"
+#include "tests/core_checks.hpp"
 
 using namespace dda;
 using namespace dda::checks;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "accuracy/golden.hpp"
+#include "model/accuracy/golden.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "report/report.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/report/report.hpp"
 
 using namespace dda;
 

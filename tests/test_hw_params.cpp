@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "datapath/hw_command.hpp"
-#include "datapath/hw_params.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace {
 std::string read_file(const std::string& p) {

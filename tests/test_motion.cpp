@@ -11,12 +11,12 @@
 #include <random>
 #include <sstream>
 
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion/motion_map.hpp"
-#include "motion_harness.hpp"
-#include "motion_mix.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/motion/motion_map.hpp"
+#include "tb/random/dda_random.hpp"
+#include "tb/random/motion_mix.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -9,15 +9,15 @@
 #include <catch2/catch.hpp>
 #include <systemc>
 
-#include "dda_random.hpp"
-#include "motion/bus_monitors.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion_cosim.hpp"
-#include "motion_mix.hpp"
-#include "paced_program.hpp"
-#include "planner/planner.hpp"
-#include "report/pace_report.hpp"
-#include "speed/pace_plan.hpp"
+#include "model/motion/bus_monitors.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/planner/planner.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/speed/pace_plan.hpp"
+#include "tb/cosim/motion_cosim.hpp"
+#include "tb/cosim/paced_program.hpp"
+#include "tb/random/dda_random.hpp"
+#include "tb/random/motion_mix.hpp"
 
 #include <fstream>
 

@@ -6,8 +6,8 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
-#include "motion/io_scenarios.hpp"
-#include "motion_harness.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/motion/io_scenarios.hpp"
 
 using namespace dda::motion;
 

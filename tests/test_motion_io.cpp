@@ -11,9 +11,9 @@
 #include <catch2/catch.hpp>
 #include <systemc>
 
-#include "motion/io_scenarios.hpp"
-#include "motion_cosim.hpp"
-#include "motion_harness.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/motion/io_scenarios.hpp"
+#include "tb/cosim/motion_cosim.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

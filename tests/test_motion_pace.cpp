@@ -10,11 +10,11 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "motion/bus_monitors.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion_harness.hpp"
-#include "planner/planner.hpp"
-#include "report/pace_report.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/motion/bus_monitors.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/planner/planner.hpp"
+#include "model/report/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -11,8 +11,8 @@
 #include <random>
 
 #include "Vdda_norm.h"
-#include "accuracy/golden.hpp"
-#include "motion/pacer.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/motion/pacer.hpp"
 
 using namespace dda;
 using namespace dda::motion;

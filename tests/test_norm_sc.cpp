@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "datapath/hw_params.hpp"
-#include "dda_norm.hpp"
-#include "motion/pacer.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/systemc/dda_norm.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

@@ -17,10 +17,10 @@
 
 #include "Vdda_pace.h"
 #include "Vdda_pace___024root.h"
-#include "accuracy/golden.hpp"
-#include "motion/pacer.hpp"
-#include "planner/planner.hpp"
-#include "report/pace_report.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/planner/planner.hpp"
+#include "model/report/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

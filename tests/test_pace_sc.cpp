@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "dda_pace.hpp"
-#include "planner/planner.hpp"
-#include "report/pace_report.hpp"
+#include "model/planner/planner.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/systemc/dda_pace.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

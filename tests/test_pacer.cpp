@@ -14,11 +14,11 @@
 #include <optional>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "motion/pacer.hpp"
-#include "motion/speed_monitor.hpp"
-#include "planner/planner.hpp"
-#include "report/pace_report.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/motion/speed_monitor.hpp"
+#include "model/planner/planner.hpp"
+#include "model/report/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

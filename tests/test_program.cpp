@@ -11,8 +11,8 @@
 #include <random>
 #include <sstream>
 
-#include "geometry/det_math.hpp"
-#include "program/program.hpp"
+#include "model/geometry/det_math.hpp"
+#include "model/program/program.hpp"
 
 using namespace dda::program;
 

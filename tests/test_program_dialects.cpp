@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 using namespace dda::program;
 

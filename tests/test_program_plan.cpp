@@ -13,11 +13,11 @@
 #include <random>
 #include <sstream>
 
-#include "pipeline/pipeline.hpp"
-#include "planner/planner.hpp"
-#include "program_plan/program_plan.hpp"
-#include "report/program_report.hpp"
-#include "runner/runner.hpp"
+#include "model/pipeline/pipeline.hpp"
+#include "model/planner/planner.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/report/program_report.hpp"
+#include "model/runner/runner.hpp"
 
 using namespace dda;
 using namespace dda::program;

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "program/program.hpp"
-#include "program_helpers.hpp"
+#include "model/program/program.hpp"
+#include "tests/program_helpers.hpp"
 
 using namespace dda::program;
 using dda::program::testing::error_in;

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
+#include "model/accuracy/golden.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "cosim_harness.hpp"
-#include "datapath/hw_params.hpp"
-#include "vectors.hpp"
+#include "cli/vectors.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "tb/cosim/cosim_harness.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "accuracy/golden.hpp"
+#include "model/accuracy/golden.hpp"
 
 using namespace dda;
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "random_program.hpp"
-#include "speed/speed_run.hpp"
+#include "model/speed/speed_run.hpp"
+#include "tb/random/random_program.hpp"
 
 using namespace dda;
 using namespace dda::speed;

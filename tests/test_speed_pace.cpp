@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "report/pace_report.hpp"
-#include "speed/pace_plan.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/speed/pace_plan.hpp"
 
 using namespace dda;
 using namespace dda::speed;

@@ -18,12 +18,12 @@
 #include <sstream>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion/speed_monitor.hpp"
-#include "motion/stepdir_monitor.hpp"
-#include "motion_harness.hpp"
+#include "engines/motion_harness.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/motion/speed_monitor.hpp"
+#include "model/motion/stepdir_monitor.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -4,8 +4,8 @@
 #define CATCH_CONFIG_RUNNER
 #include <systemc>
 
-#include "core_checks.hpp"
-#include "sc_harness.hpp"
+#include "engines/sc_harness.hpp"
+#include "tests/core_checks.hpp"
 
 using namespace dda;
 using namespace dda::checks;

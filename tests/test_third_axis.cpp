@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <random>
 
-#include "accuracy/golden.hpp"
-#include "datapath/hw_command.hpp"
-#include "dda_random.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

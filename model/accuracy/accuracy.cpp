@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // Documented deviation bounds of a plan (docs/golden-model.md, "Deviation bound").
-#include "accuracy/accuracy.hpp"
+#include "model/accuracy/accuracy.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <tuple>
 
-#include "geometry/geometry.hpp"
-#include "planner/planner.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/planner/planner.hpp"
 
 namespace dda {
 

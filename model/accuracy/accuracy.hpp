@@ -3,7 +3,7 @@
 // "Deviation bound"): the documented bounds the property tests hold the runner to.
 #pragma once
 
-#include "planner/plan.hpp"
+#include "model/planner/plan.hpp"
 
 namespace dda {
 

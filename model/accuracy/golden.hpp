@@ -8,11 +8,11 @@
 // of the core's control around the same datapath.
 #pragma once
 
-#include "accuracy/accuracy.hpp"
-#include "datapath/datapath.hpp"
-#include "datapath/errors.hpp"
-#include "geometry/fixed_trig.hpp"
-#include "geometry/geometry.hpp"
-#include "planner/plan.hpp"
-#include "planner/planner.hpp"
-#include "runner/runner.hpp"
+#include "model/accuracy/accuracy.hpp"
+#include "model/datapath/datapath.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/planner/plan.hpp"
+#include "model/planner/planner.hpp"
+#include "model/runner/runner.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The cycle-level reference model: the next-state code of every register of the table.
-#include "datapath/core_model.hpp"
+#include "model/datapath/core_model.hpp"
 
 #include <iterator>
 

@@ -9,8 +9,8 @@
 #include <array>
 #include <cstdint>
 
-#include "datapath/datapath.hpp"
-#include "datapath/hw_params.hpp"
+#include "model/datapath/datapath.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace dda {
 

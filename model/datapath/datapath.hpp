@@ -9,7 +9,7 @@
 
 #include <cstdint>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda {
 

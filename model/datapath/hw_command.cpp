@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "datapath/hw_command.hpp"
+#include "model/datapath/hw_command.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "datapath/core_model.hpp"
-#include "datapath/hw_params.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace dda::hw {
 

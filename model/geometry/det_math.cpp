@@ -2,7 +2,7 @@
 // Deterministic sine, cosine, tangent and arc tangent (det_math.hpp): IEEE 754 + - * /
 // and sqrt only, each correctly rounded by the standard, evaluated in a fixed order
 // (the library is built with -ffp-contract=off, so no fused multiply-add changes a bit).
-#include "geometry/det_math.hpp"
+#include "model/geometry/det_math.hpp"
 
 #include <cmath>
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Deterministic fixed-point trigonometry (see fixed_trig.hpp).
-#include "geometry/fixed_trig.hpp"
+#include "model/geometry/fixed_trig.hpp"
 
 #include <array>
 
 #include <cctype>
 #include <cstdlib>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Geometry for measurement: distance to an ellipse, turning into its frame.
-#include "geometry/geometry.hpp"
+#include "model/geometry/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/fixed_trig.hpp"
+#include "model/geometry/fixed_trig.hpp"
 
 namespace dda {
 

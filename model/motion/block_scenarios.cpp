@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "motion/io_scenarios.hpp"
-#include "motion/machine_sim.hpp"
-#include "motion/pacer.hpp"
-#include "motion/scenario_kit.hpp"
+#include "model/motion/io_scenarios.hpp"
+#include "model/motion/machine_sim.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/motion/scenario_kit.hpp"
 
 namespace dda::motion {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/bridges.hpp"
+#include "model/motion/bridges.hpp"
 
 namespace dda::motion {
 

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "motion/motion_map.hpp"
-#include "motion/motion_model.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::motion {
 

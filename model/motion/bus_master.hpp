@@ -9,7 +9,7 @@
 #include <memory>
 #include <random>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
-#include "datapath/errors.hpp"
-#include "motion/bus_master.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/bus_master.hpp"
 
 namespace dda::motion {
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/bus_monitors.hpp"
+#include "model/motion/bus_monitors.hpp"
 
 #include <string>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "motion/bus_target.hpp"
-#include "motion/speed_monitor.hpp"
+#include "model/motion/bus_target.hpp"
+#include "model/motion/speed_monitor.hpp"
 
 namespace dda::motion {
 

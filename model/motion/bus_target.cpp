@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

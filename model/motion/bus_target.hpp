@@ -10,8 +10,8 @@
 #include <functional>
 #include <memory>
 
-#include "motion/bridges.hpp"
-#include "motion/motion_model.hpp"
+#include "model/motion/bridges.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::motion {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/feed.hpp"
+#include "model/motion/feed.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <limits>
 
-#include "datapath/errors.hpp"
-#include "motion/motion_map.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/motion_map.hpp"
 
 namespace dda::feed {
 

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "datapath/datapath.hpp"
+#include "model/datapath/datapath.hpp"
 
 namespace dda::feed {
 

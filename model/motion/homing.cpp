@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/homing.hpp"
+#include "model/motion/homing.hpp"
 
 #include <string>
 
-#include "datapath/errors.hpp"
-#include "motion/pacer.hpp"
-#include "planner/planner.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/planner/planner.hpp"
 
 namespace dda::motion {
 

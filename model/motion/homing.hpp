@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "motion/motion_driver.hpp"
+#include "model/motion/motion_driver.hpp"
 
 namespace dda::motion {
 

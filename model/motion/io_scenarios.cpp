@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/io_scenarios.hpp"
+#include "model/motion/io_scenarios.hpp"
 
 #include <map>
 #include <string>
 
-#include "datapath/errors.hpp"
-#include "motion/homing.hpp"
-#include "motion/machine_sim.hpp"
-#include "motion/scenario_kit.hpp"
-#include "planner/planner.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/homing.hpp"
+#include "model/motion/machine_sim.hpp"
+#include "model/motion/scenario_kit.hpp"
+#include "model/planner/planner.hpp"
 
 namespace dda::motion {
 

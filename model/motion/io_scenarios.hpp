@@ -15,7 +15,7 @@
 #include <string_view>
 #include <type_traits>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

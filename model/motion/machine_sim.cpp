@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/machine_sim.hpp"
+#include "model/motion/machine_sim.hpp"
 
 namespace dda::motion {
 

@@ -12,7 +12,7 @@
 #include <functional>
 #include <optional>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

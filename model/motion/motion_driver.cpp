@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/motion_driver.hpp"
+#include "model/motion/motion_driver.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <numeric>
 #include <string>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

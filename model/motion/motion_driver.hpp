@@ -8,7 +8,7 @@
 #include <random>
 #include <string_view>
 
-#include "motion/bus_master.hpp"
+#include "model/motion/bus_master.hpp"
 
 namespace dda::motion {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block's GTKWave save file (docs/dda_motion.gtkw).
-#include "motion/motion_model.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::motion {
 

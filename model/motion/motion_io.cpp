@@ -2,9 +2,9 @@
 // The motion block's reference model, its machine side (rtl/dda_motion_io.v, u_io): the
 // E-stop, limit, home and probe inputs through their synchronizers and filters
 // (rtl/dda_input.v), the stops they make, the trip, probe and snapshot latches.
-#include "datapath/hw_params.hpp"
-#include "motion/motion_model.hpp"
-#include "motion/motion_wires.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_model.hpp"
+#include "model/motion/motion_wires.hpp"
 
 namespace dda::motion {
 

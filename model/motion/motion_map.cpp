@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/motion_map.hpp"
+#include "model/motion/motion_map.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <cctype>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

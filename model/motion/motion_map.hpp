@@ -21,8 +21,8 @@
 #include <string_view>
 #include <vector>
 
-#include "datapath/hw_params.hpp"
-#include "motion/pace_params.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/pace_params.hpp"
 
 namespace dda::motion {
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/motion_model.hpp"
-#include "motion/motion_wires.hpp"
+#include "model/motion/motion_model.hpp"
+#include "model/motion/motion_wires.hpp"
 
-#include "datapath/errors.hpp"
-#include "datapath/hw_command.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda::motion {
 

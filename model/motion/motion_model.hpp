@@ -12,10 +12,10 @@
 #include <string_view>
 #include <vector>
 
-#include "datapath/core_model.hpp"
-#include "motion/bus_wires.hpp"
-#include "motion/motion_map.hpp"
-#include "motion/pacer.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/motion/bus_wires.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/motion/pacer.hpp"
 
 namespace dda::motion {
 

@@ -2,9 +2,9 @@
 // The motion block's reference model, its pacing (rtl/dda_motion.v, "pace"): the pacer
 // (motion::Pacer, rtl/dda_pace.v's u_pace), the pacing settings ACCEL, VMIN, OVERRIDE,
 // the feed hold, the soft stop and the watchdog.
-#include "datapath/hw_params.hpp"
-#include "motion/motion_model.hpp"
-#include "motion/motion_wires.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_model.hpp"
+#include "model/motion/motion_wires.hpp"
 
 namespace dda::motion {
 

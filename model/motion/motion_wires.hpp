@@ -3,8 +3,8 @@
 // motion_pace.cpp).
 #pragma once
 
-#include "datapath/hw_params.hpp"
-#include "motion/motion_model.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::motion {
 

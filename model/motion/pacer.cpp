@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/pacer.hpp"
+#include "model/motion/pacer.hpp"
 
 #include <algorithm>
 #include <cmath>

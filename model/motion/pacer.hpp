@@ -36,8 +36,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "datapath/datapath.hpp"
-#include "motion/pace_params.hpp"
+#include "model/datapath/datapath.hpp"
+#include "model/motion/pace_params.hpp"
 
 namespace dda::motion {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/speed_monitor.hpp"
+#include "model/motion/speed_monitor.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion/stepdir_monitor.hpp"
+#include "model/motion/stepdir_monitor.hpp"
 
 #include <algorithm>
 #include <string>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

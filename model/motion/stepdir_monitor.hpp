@@ -17,7 +17,7 @@
 #include <array>
 #include <cstdint>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

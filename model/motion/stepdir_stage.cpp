@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "motion/motion_model.hpp"
+#include "model/motion/motion_model.hpp"
 
 namespace dda::motion {
 

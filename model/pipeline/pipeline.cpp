@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "pipeline/pipeline.hpp"
+#include "model/pipeline/pipeline.hpp"
 
 #include <condition_variable>
 #include <deque>
@@ -9,8 +9,8 @@
 #include <thread>
 #include <utility>
 
-#include "datapath/errors.hpp"
-#include "program/program.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/program/program.hpp"
 
 namespace dda {
 

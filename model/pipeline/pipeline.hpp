@@ -12,9 +12,9 @@
 #include <memory>
 #include <string>
 
-#include "planner/plan.hpp"
-#include "program_plan/program_plan.hpp"
-#include "runner/runner.hpp"
+#include "model/planner/plan.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/runner/runner.hpp"
 
 namespace dda {
 

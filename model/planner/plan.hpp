@@ -8,8 +8,8 @@
 #include <variant>
 #include <vector>
 
-#include "datapath/datapath.hpp"
-#include "datapath/hw_params.hpp"
+#include "model/datapath/datapath.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace dda {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda::detail {
 

@@ -10,7 +10,7 @@
 #include <tuple>
 #include <utility>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda {
 

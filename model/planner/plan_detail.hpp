@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "datapath/rounding.hpp"
-#include "planner/planner.hpp"
+#include "model/datapath/rounding.hpp"
+#include "model/planner/planner.hpp"
 
 namespace dda::detail {
 

@@ -3,7 +3,7 @@
 // iterations, counted by the golden datapath, on the core's linear integrator.
 #include <string>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda {
 

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <utility>
 
-#include "datapath/hw_params.hpp"
-#include "plan_detail.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda {
 

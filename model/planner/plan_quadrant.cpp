@@ -2,7 +2,7 @@
 // The planner for quarter turns: monotone pieces that meet at the ellipse's vertices.
 #include <cstdlib>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda::detail {
 

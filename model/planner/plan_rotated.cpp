@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda::detail {
 

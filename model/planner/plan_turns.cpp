@@ -3,7 +3,7 @@
 // ideal curve's tangent is parallel to an axis.
 #include <vector>
 
-#include "plan_detail.hpp"
+#include "model/planner/plan_detail.hpp"
 
 namespace dda::detail {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The planner: validation, end points, parametric angles, and the cut into pieces
 // (plan_quadrant.cpp, plan_rotated.cpp).
-#include "planner/planner.hpp"
+#include "model/planner/planner.hpp"
 
 #include <array>
 #include <cmath>
@@ -10,10 +10,10 @@
 #include <tuple>
 #include <utility>
 
-#include "datapath/hw_params.hpp"
-#include "geometry/geometry.hpp"
-#include "plan_detail.hpp"
-#include "runner/runner.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/planner/plan_detail.hpp"
+#include "model/runner/runner.hpp"
 
 namespace dda {
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/fixed_trig.hpp"
-#include "planner/plan.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/planner/plan.hpp"
 
 namespace dda {
 

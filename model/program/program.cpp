@@ -2,7 +2,7 @@
 // The program reader's entry points (program.hpp): a text or a stream through the
 // interpreter (program_reader.hpp), and the files it reads, standard input through a
 // temporary file.
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 #include <array>
 #include <cerrno>
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "program_reader.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program {
 

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::program {
 

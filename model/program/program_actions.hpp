@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "program_detail.hpp"
-#include "program_rules.hpp"
+#include "model/program/program_detail.hpp"
+#include "model/program/program_rules.hpp"
 
 namespace dda::program::detail::rules {
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "datapath/rounding.hpp"
-#include "program_reader.hpp"
+#include "model/datapath/rounding.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "program_reader.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

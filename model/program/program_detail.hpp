@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::program::detail {
 

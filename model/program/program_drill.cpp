@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "program_reader.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

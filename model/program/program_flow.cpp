@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-#include "program_reader.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

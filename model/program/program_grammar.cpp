@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "program_actions.hpp"
-#include "program_detail.hpp"
-#include "program_rules.hpp"
+#include "model/program/program_actions.hpp"
+#include "model/program/program_detail.hpp"
+#include "model/program/program_rules.hpp"
 
 namespace dda::program::detail {
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <string>
 
-#include "program_detail.hpp"
+#include "model/program/program_detail.hpp"
 
 namespace dda::program::detail {
 

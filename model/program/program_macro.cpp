@@ -3,7 +3,7 @@
 // variables (numbered, LinuxCNC's named ones and its calls' own #1-#30), expressions in
 // IEEE double with the deterministic sines (det_math.hpp) in the dialect's angle unit.
 // The programs' structure is program_structure.cpp's.
-#include "program_macro.hpp"
+#include "model/program/program_macro.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 #include <map>
 #include <optional>
 
-#include "geometry/det_math.hpp"
+#include "model/geometry/det_math.hpp"
 
 namespace dda::program::detail {
 

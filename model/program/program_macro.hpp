@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
-#include "program_detail.hpp"
+#include "model/program/program_detail.hpp"
 
 namespace dda::program::detail {
 

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 
-#include "geometry/fixed_trig.hpp"
-#include "program_reader.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

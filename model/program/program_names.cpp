@@ -2,7 +2,7 @@
 // The reader's error type and the names of its motion kinds and dialects (program.hpp).
 #include <fmt/format.h>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::program {
 

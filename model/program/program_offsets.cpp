@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 
-#include "geometry/det_math.hpp"
-#include "program_reader.hpp"
+#include "model/geometry/det_math.hpp"
+#include "model/program/program_reader.hpp"
 
 namespace dda::program::detail {
 

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "program/program.hpp"
-#include "program_detail.hpp"
-#include "program_macro.hpp"
-#include "program_turning.hpp"
+#include "model/program/program.hpp"
+#include "model/program/program_detail.hpp"
+#include "model/program/program_macro.hpp"
+#include "model/program/program_turning.hpp"
 
 namespace dda::program::detail {
 

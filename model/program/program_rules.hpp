@@ -13,7 +13,7 @@
 
 #include <tao/pegtl.hpp>
 
-#include "program_detail.hpp"
+#include "model/program/program_detail.hpp"
 
 namespace dda::program::detail::rules {
 

@@ -9,7 +9,7 @@
 #include <map>
 #include <optional>
 
-#include "program_macro.hpp"
+#include "model/program/program_macro.hpp"
 
 namespace dda::program::detail {
 

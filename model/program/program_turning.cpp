@@ -5,7 +5,7 @@
 // pass mapped back.
 // Where LinuxCNC's cycle would loop for ever or read outside its list, this one stops
 // with a CycleError.
-#include "program_turning.hpp"
+#include "model/program/program_turning.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "program_turning.hpp"
+#include "model/program/program_turning.hpp"
 
 namespace dda::program::detail::turning {
 

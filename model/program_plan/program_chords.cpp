@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/planner.hpp"
-#include "program_plan/program_plan.hpp"
+#include "model/planner/planner.hpp"
+#include "model/program_plan/program_plan.hpp"
 
 namespace dda::program {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The planner for part programs (docs/programs.md, "From blocks to commands").
-#include "program_plan/program_plan.hpp"
+#include "model/program_plan/program_plan.hpp"
 
 #include <fmt/format.h>
 
@@ -9,12 +9,12 @@
 #include <limits>
 #include <utility>
 
-#include "accuracy/accuracy.hpp"
-#include "datapath/hw_command.hpp"
-#include "datapath/rounding.hpp"
-#include "geometry/fixed_trig.hpp"
-#include "geometry/geometry.hpp"
-#include "planner/planner.hpp"
+#include "model/accuracy/accuracy.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/datapath/rounding.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/planner/planner.hpp"
 
 namespace dda::program {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "planner/plan.hpp"
-#include "program/program.hpp"
+#include "model/planner/plan.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::program {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/feed_report.hpp"
+#include "model/report/feed_report.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <limits>
 
-#include "motion/feed.hpp"
+#include "model/motion/feed.hpp"
 
 namespace dda {
 

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include "planner/plan.hpp"
+#include "model/planner/plan.hpp"
 
 namespace dda {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/pace_report.hpp"
+#include "model/report/pace_report.hpp"
 
 #include <fmt/format.h>
 
@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "datapath/errors.hpp"
-#include "motion/feed.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/feed.hpp"
 
 namespace dda {
 

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "motion/pacer.hpp"
-#include "motion/speed_monitor.hpp"
-#include "planner/plan.hpp"
-#include "speed/pace_plan.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/motion/speed_monitor.hpp"
+#include "model/planner/plan.hpp"
+#include "model/speed/pace_plan.hpp"
 
 namespace dda {
 

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "report/report.hpp"
+#include "model/report/report.hpp"
 
 namespace dda {
 

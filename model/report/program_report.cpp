@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/program_report.hpp"
+#include "model/report/program_report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -8,9 +8,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "geometry/fixed_trig.hpp"
-#include "geometry/geometry.hpp"
-#include "json_stream.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/report/json_stream.hpp"
 
 namespace dda::program {
 

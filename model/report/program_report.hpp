@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "pipeline/pipeline.hpp"
-#include "program_plan/program_plan.hpp"
-#include "report/report.hpp"
+#include "model/pipeline/pipeline.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/report/report.hpp"
 
 namespace dda::program {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/report.hpp"
+#include "model/report/report.hpp"
 
-#include "datapath/core_model.hpp"
-#include "json_stream.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/report/json_stream.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "accuracy/golden.hpp"
-#include "pipeline/pipeline.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/pipeline/pipeline.hpp"
 
 namespace dda {
 

@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "report/pace_report.hpp"
-#include "speed/pace_plan.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/speed/pace_plan.hpp"
 
 namespace dda {
 

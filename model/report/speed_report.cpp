@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/speed_report.hpp"
+#include "model/report/speed_report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
 #include <nlohmann/json.hpp>
 
-#include "json_stream.hpp"
+#include "model/report/json_stream.hpp"
 
 namespace dda::speed {
 

@@ -9,8 +9,8 @@
 #include <ostream>
 #include <string>
 
-#include "report/program_report.hpp"
-#include "speed/speed_run.hpp"
+#include "model/report/program_report.hpp"
+#include "model/speed/speed_run.hpp"
 
 namespace dda::speed {
 

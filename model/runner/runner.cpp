@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The runner: a plan's pieces through the golden datapath, with the run-time guards.
-#include "runner/runner.hpp"
+#include "model/runner/runner.hpp"
 
 #include <sstream>
 #include <string>

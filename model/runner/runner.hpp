@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "planner/plan.hpp"
+#include "model/planner/plan.hpp"
 
 namespace dda {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed/lookahead.hpp"
+#include "model/speed/lookahead.hpp"
 
 #include <algorithm>
 #include <cmath>

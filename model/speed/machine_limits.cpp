@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed/machine_limits.hpp"
+#include "model/speed/machine_limits.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "datapath/errors.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::speed {
 

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <string>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 namespace dda::speed {
 

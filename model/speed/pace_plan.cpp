@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed/pace_plan.hpp"
+#include "model/speed/pace_plan.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "datapath/errors.hpp"
-#include "motion/pace_params.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/pace_params.hpp"
 
 namespace dda::speed {
 

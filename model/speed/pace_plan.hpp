@@ -10,11 +10,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "motion/pacer.hpp"
-#include "planner/plan.hpp"
-#include "speed/lookahead.hpp"
-#include "speed/machine_limits.hpp"
-#include "speed/speed_run.hpp"
+#include "model/motion/pacer.hpp"
+#include "model/planner/plan.hpp"
+#include "model/speed/lookahead.hpp"
+#include "model/speed/machine_limits.hpp"
+#include "model/speed/speed_run.hpp"
 
 namespace dda::speed {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed/segments.hpp"
+#include "model/speed/segments.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "datapath/datapath.hpp"
+#include "model/datapath/datapath.hpp"
 
 namespace dda::speed {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "program_plan/program_plan.hpp"
-#include "speed/lookahead.hpp"
-#include "speed/machine_limits.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/speed/lookahead.hpp"
+#include "model/speed/machine_limits.hpp"
 
 namespace dda::speed {
 

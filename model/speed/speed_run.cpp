@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "speed/speed_run.hpp"
+#include "model/speed/speed_run.hpp"
 
 #include <algorithm>
 #include <cmath>

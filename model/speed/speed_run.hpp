@@ -10,10 +10,10 @@
 #include <istream>
 #include <string>
 
-#include "program_plan/program_plan.hpp"
-#include "speed/lookahead.hpp"
-#include "speed/machine_limits.hpp"
-#include "speed/segments.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/speed/lookahead.hpp"
+#include "model/speed/machine_limits.hpp"
+#include "model/speed/segments.hpp"
 
 namespace dda::speed {
 

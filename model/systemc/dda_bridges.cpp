@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_bridges.hpp"
+#include "model/systemc/dda_bridges.hpp"
 
-#include "motion/bridges.hpp"
+#include "model/motion/bridges.hpp"
 
 namespace dda::sc {
 

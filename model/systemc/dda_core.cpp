@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_core.hpp"
+#include "model/systemc/dda_core.hpp"
 
 namespace dda::sc {
 

@@ -6,10 +6,10 @@
 #include <functional>
 #include <memory>
 
-#include "dda_counter.hpp"
-#include "dda_ctrl.hpp"
-#include "dda_integrator.hpp"
-#include "dda_linear.hpp"
+#include "model/systemc/dda_counter.hpp"
+#include "model/systemc/dda_ctrl.hpp"
+#include "model/systemc/dda_integrator.hpp"
+#include "model/systemc/dda_linear.hpp"
 
 namespace dda::sc {
 

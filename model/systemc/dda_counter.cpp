@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_counter.hpp"
+#include "model/systemc/dda_counter.hpp"
 
 namespace dda::sc {
 

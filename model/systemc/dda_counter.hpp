@@ -2,7 +2,7 @@
 // One axis' remaining-step counter (end-point judgement). Mirrors rtl/dda_counter.v.
 #pragma once
 
-#include "dda_sc_types.hpp"
+#include "model/systemc/dda_sc_types.hpp"
 
 namespace dda::sc {
 

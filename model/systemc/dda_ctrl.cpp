@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_ctrl.hpp"
+#include "model/systemc/dda_ctrl.hpp"
 
 namespace dda::sc {
 

@@ -3,7 +3,7 @@
 // Mirrors rtl/dda_ctrl.v.
 #pragma once
 
-#include "dda_sc_types.hpp"
+#include "model/systemc/dda_sc_types.hpp"
 
 namespace dda::sc {
 

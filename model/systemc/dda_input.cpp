@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_input.hpp"
+#include "model/systemc/dda_input.hpp"
 
 namespace dda::sc {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_integrator.hpp"
+#include "model/systemc/dda_integrator.hpp"
 
 namespace dda::sc {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_linear.hpp"
+#include "model/systemc/dda_linear.hpp"
 
 namespace dda::sc {
 

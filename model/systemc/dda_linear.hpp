@@ -3,7 +3,7 @@
 // own capacity cap_q (Bresenham's rule). Mirrors rtl/dda_linear.v register for register.
 #pragma once
 
-#include "dda_sc_types.hpp"
+#include "model/systemc/dda_sc_types.hpp"
 
 namespace dda::sc {
 

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "dda_core.hpp"
-#include "dda_motion_io.hpp"
-#include "dda_pace.hpp"
-#include "dda_stepdir.hpp"
-#include "motion/motion_map.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/systemc/dda_core.hpp"
+#include "model/systemc/dda_motion_io.hpp"
+#include "model/systemc/dda_pace.hpp"
+#include "model/systemc/dda_stepdir.hpp"
 
 namespace dda::sc {
 

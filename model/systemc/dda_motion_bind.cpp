@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The SystemC motion block's submodules bound to its wires: the step/dir stages, the
 // pacer and the machine side (u_io), with the wires u_io takes.
-#include "dda_motion.hpp"
+#include "model/systemc/dda_motion.hpp"
 
 namespace dda::sc {
 

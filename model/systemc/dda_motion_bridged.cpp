@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_motion_bridged.hpp"
+#include "model/systemc/dda_motion_bridged.hpp"
 
 namespace dda::sc {
 

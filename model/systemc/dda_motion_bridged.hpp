@@ -8,8 +8,8 @@
 
 #include <cstdint>
 
-#include "dda_bridges.hpp"
-#include "dda_motion.hpp"
+#include "model/systemc/dda_bridges.hpp"
+#include "model/systemc/dda_motion.hpp"
 
 namespace dda::sc {
 

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "dda_input.hpp"
-#include "motion/motion_map.hpp"
+#include "model/motion/motion_map.hpp"
+#include "model/systemc/dda_input.hpp"
 
 namespace dda::sc {
 

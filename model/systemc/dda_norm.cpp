@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_norm.hpp"
+#include "model/systemc/dda_norm.hpp"
 
 namespace dda::sc {
 

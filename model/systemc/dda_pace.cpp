@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_pace.hpp"
+#include "model/systemc/dda_pace.hpp"
 
 #include <algorithm>
 
-#include "motion/pace_params.hpp"
+#include "model/motion/pace_params.hpp"
 
 namespace dda::sc {
 

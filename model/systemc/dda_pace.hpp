@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "dda_norm.hpp"
+#include "model/systemc/dda_norm.hpp"
 
 namespace dda::sc {
 

@@ -4,7 +4,7 @@
 
 #include <systemc>
 
-#include "datapath/hw_params.hpp"
+#include "model/datapath/hw_params.hpp"
 
 namespace dda::sc {
 

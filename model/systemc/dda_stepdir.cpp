@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_stepdir.hpp"
+#include "model/systemc/dda_stepdir.hpp"
 
-#include "motion/motion_map.hpp"
+#include "model/motion/motion_map.hpp"
 
 namespace dda::sc {
 

@@ -12,8 +12,8 @@
 #include <iostream>
 #include <string>
 
-#include "datapath/hw_params.hpp"
-#include "motion/motion_map.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "model/motion/motion_map.hpp"
 
 namespace {
 

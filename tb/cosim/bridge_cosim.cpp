@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "bridge_cosim.hpp"
+#include "tb/cosim/bridge_cosim.hpp"
 
 #include <verilated.h>
 
 #include "Vdda_motion_axil_sc.h"
 #include "Vdda_motion_spi_sc.h"
-#include "datapath/errors.hpp"
-#include "dda_motion_bridged.hpp"
-#include "motion_cosim.hpp"
-#include "vl_coverage.hpp"
+#include "engines/vl_coverage.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/systemc/dda_motion_bridged.hpp"
+#include "tb/cosim/motion_cosim.hpp"
 
 namespace dda::motion {
 

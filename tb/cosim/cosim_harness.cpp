@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cosim_harness.hpp"
+#include "tb/cosim/cosim_harness.hpp"
 
 #include <verilated.h>
 
 #include <sstream>
 
 #include "Vdda_core_sc.h"
-#include "sc_harness.hpp"
-#include "vl_coverage.hpp"
+#include "engines/sc_harness.hpp"
+#include "engines/vl_coverage.hpp"
 
 namespace dda::cosim {
 

@@ -11,10 +11,10 @@
 #include <memory>
 #include <string>
 
-#include "core_driver.hpp"
-#include "dda_core.hpp"
-#include "sc_sampler.hpp"
-#include "vl_sampler.hpp"
+#include "engines/core_driver.hpp"
+#include "engines/sc_sampler.hpp"
+#include "engines/vl_sampler.hpp"
+#include "model/systemc/dda_core.hpp"
 
 class Vdda_core_sc;
 

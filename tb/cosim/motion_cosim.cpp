@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion_cosim.hpp"
+#include "tb/cosim/motion_cosim.hpp"
 
 #include <verilated.h>
 
 #include "Vdda_motion_sc.h"
-#include "datapath/errors.hpp"
-#include "vl_coverage.hpp"
+#include "engines/vl_coverage.hpp"
+#include "model/datapath/errors.hpp"
 
 namespace dda::motion {
 

@@ -10,11 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "dda_motion.hpp"
-#include "motion/bus_target.hpp"
-#include "motion/stepdir_monitor.hpp"
-#include "motion_harness.hpp"
-#include "sc_sampler.hpp"
+#include "engines/motion_harness.hpp"
+#include "engines/sc_sampler.hpp"
+#include "model/motion/bus_target.hpp"
+#include "model/motion/stepdir_monitor.hpp"
+#include "model/systemc/dda_motion.hpp"
 
 class Vdda_motion_sc;
 

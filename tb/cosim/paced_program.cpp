@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "paced_program.hpp"
+#include "tb/cosim/paced_program.hpp"
 
 #include <algorithm>
 
-#include "motion/bus_monitors.hpp"
-#include "motion/motion_driver.hpp"
-#include "speed/segments.hpp"
+#include "model/motion/bus_monitors.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/speed/segments.hpp"
 
 namespace dda::motion {
 

@@ -27,12 +27,12 @@
 #include <sstream>
 #include <systemc>
 
-#include "datapath/errors.hpp"
-#include "motion_cosim.hpp"
-#include "paced_program.hpp"
-#include "program_plan/program_plan.hpp"
-#include "random_program.hpp"
-#include "report/pace_report.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/report/pace_report.hpp"
+#include "tb/cosim/motion_cosim.hpp"
+#include "tb/cosim/paced_program.hpp"
+#include "tb/random/random_program.hpp"
 
 using namespace dda;
 

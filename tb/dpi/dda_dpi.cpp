@@ -2,7 +2,7 @@
 // The golden model as DPI-C functions (dda_dpi.h): the plan and its records from the
 // golden model, the reference core (CoreModel) stepped by the bench, each output port
 // and each iteration compared as the bench reports them.
-#include "dda_dpi.h"
+#include "tb/dpi/dda_dpi.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "arc_options.hpp"
-#include "datapath/core_model.hpp"
-#include "datapath/hw_command.hpp"
-#include "runner/runner.hpp"
+#include "cli/arc_options.hpp"
+#include "model/datapath/core_model.hpp"
+#include "model/datapath/hw_command.hpp"
+#include "model/runner/runner.hpp"
 
 namespace {
 

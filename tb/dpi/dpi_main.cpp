@@ -11,8 +11,8 @@
 #include <string>
 
 #include "Vdda_dpi_tb.h"
-#include "dda_dpi.h"
-#include "vl_coverage.hpp"
+#include "engines/vl_coverage.hpp"
+#include "tb/dpi/dda_dpi.h"
 
 int main(int argc, char** argv) {
   auto ctx = std::make_unique<VerilatedContext>();

@@ -16,8 +16,8 @@
 #include <random>
 #include <string>
 
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
+#include "model/accuracy/golden.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

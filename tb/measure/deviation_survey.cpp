@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <map>
 
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
+#include "model/accuracy/golden.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

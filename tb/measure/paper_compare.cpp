@@ -27,13 +27,13 @@
 
 #include <fmt/format.h>
 
-#include "geometry/fixed_trig.hpp"
-#include "geometry/geometry.hpp"
-#include "program_plan/program_plan.hpp"
-#include "report/pace_report.hpp"
-#include "report/report.hpp"
-#include "runner/runner.hpp"
-#include "speed/pace_plan.hpp"
+#include "model/geometry/fixed_trig.hpp"
+#include "model/geometry/geometry.hpp"
+#include "model/program_plan/program_plan.hpp"
+#include "model/report/pace_report.hpp"
+#include "model/report/report.hpp"
+#include "model/runner/runner.hpp"
+#include "model/speed/pace_plan.hpp"
 
 using namespace dda;
 using namespace dda::program;

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/accuracy.hpp"
-#include "accuracy/golden.hpp"
-#include "dda_random.hpp"
+#include "model/accuracy/accuracy.hpp"
+#include "model/accuracy/golden.hpp"
+#include "tb/random/dda_random.hpp"
 
 using namespace dda;
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "bus_work.hpp"
+#include "tb/random/bus_work.hpp"
 
 #include <random>
 #include <string>
 
-#include "dda_random.hpp"
-#include "motion/bus_monitors.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion/stepdir_monitor.hpp"
-#include "planner/planner.hpp"
+#include "model/motion/bus_monitors.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/motion/stepdir_monitor.hpp"
+#include "model/planner/planner.hpp"
+#include "tb/random/dda_random.hpp"
 
 namespace dda::motion {
 

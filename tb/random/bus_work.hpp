@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

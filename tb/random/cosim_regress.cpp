@@ -3,8 +3,8 @@
 //   usage: cosim_regress [--arcs N] [--seed S]
 #include <systemc>
 
-#include "cosim_harness.hpp"
-#include "regress.hpp"
+#include "tb/cosim/cosim_harness.hpp"
+#include "tb/random/regress.hpp"
 
 int main(int argc, char* argv[]) {
   dda::cosim::CosimHarness h;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "dda_random.hpp"
+#include "tb/random/dda_random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "datapath/hw_command.hpp"
+#include "model/datapath/hw_command.hpp"
 
 namespace dda {
 

@@ -11,8 +11,8 @@
 #include <random>
 #include <string>
 
-#include "accuracy/golden.hpp"
-#include "report/report.hpp"
+#include "model/accuracy/golden.hpp"
+#include "model/report/report.hpp"
 
 namespace dda {
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "input_noise.hpp"
+#include "tb/random/input_noise.hpp"
 
 #include <string>
 
-#include "datapath/errors.hpp"
-#include "motion/motion_driver.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/motion_driver.hpp"
 
 namespace dda::motion {
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <random>
 
-#include "motion/motion_driver.hpp"
+#include "model/motion/motion_driver.hpp"
 
 namespace dda::motion {
 

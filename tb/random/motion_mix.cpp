@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "motion_mix.hpp"
+#include "tb/random/motion_mix.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "datapath/errors.hpp"
-#include "dda_random.hpp"
-#include "input_noise.hpp"
-#include "motion/bus_monitors.hpp"
-#include "motion/motion_driver.hpp"
-#include "motion/stepdir_monitor.hpp"
-#include "planner/planner.hpp"
+#include "model/datapath/errors.hpp"
+#include "model/motion/bus_monitors.hpp"
+#include "model/motion/motion_driver.hpp"
+#include "model/motion/stepdir_monitor.hpp"
+#include "model/planner/planner.hpp"
+#include "tb/random/dda_random.hpp"
+#include "tb/random/input_noise.hpp"
 
 namespace dda::motion {
 

@@ -21,7 +21,7 @@
 
 #include <cstdint>
 
-#include "motion/bus_target.hpp"
+#include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
 

@@ -10,9 +10,9 @@
 #include <iostream>
 #include <systemc>
 
-#include "datapath/errors.hpp"
-#include "motion_cosim.hpp"
-#include "motion_mix.hpp"
+#include "model/datapath/errors.hpp"
+#include "tb/cosim/motion_cosim.hpp"
+#include "tb/random/motion_mix.hpp"
 
 int sc_main(int argc, char* argv[]) {
   CLI::App app{"motion block regression: SystemC model and RTL co-simulated under random queued work"};

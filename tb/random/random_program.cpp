@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "random_program.hpp"
+#include "tb/random/random_program.hpp"
 
 #include <cmath>
 #include <cstdio>

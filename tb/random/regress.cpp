@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "regress.hpp"
+#include "tb/random/regress.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "datapath/hw_params.hpp"
-#include "dda_random.hpp"
+#include "model/datapath/hw_params.hpp"
+#include "tb/random/dda_random.hpp"
 
 namespace dda {
 

@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core_driver.hpp"
-#include "dda_random.hpp"
+#include "engines/core_driver.hpp"
+#include "tb/random/dda_random.hpp"
 
 namespace dda {
 

@@ -3,8 +3,8 @@
 //   usage: sc_regress [--arcs N] [--seed S]
 #include <systemc>
 
-#include "regress.hpp"
-#include "sc_harness.hpp"
+#include "engines/sc_harness.hpp"
+#include "tb/random/regress.hpp"
 
 int main(int argc, char* argv[]) {
   dda::sc::ScHarness h;

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string_view>
 
-#include "program/program.hpp"
+#include "model/program/program.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
