@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "cli/engines.hpp"
-#include "model/geometry/fixed_trig.hpp"
+#include "host/geometry/fixed_trig.hpp"
 
 namespace dda::cli {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli/program_cmd.hpp"
+#include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/planner/planner.hpp"
 
 namespace CLI {
 class App;

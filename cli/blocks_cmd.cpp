@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "cli/output.hpp"
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 
 namespace dda::cli {
 

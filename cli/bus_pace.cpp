@@ -11,8 +11,8 @@
 #include <functional>
 
 #include "cli/vectors.hpp"
+#include "host/driver/motion_driver.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/motion_driver.hpp"
 
 namespace dda::vec {
 

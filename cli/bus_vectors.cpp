@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda vectors --bus (docs/vectors.md, "Bus-level sets"): per-cycle vectors of the motion
 // block, from its reference model (dda/motion_model.hpp) driven over the Wishbone bus by
-// the firmware driver of model/motion/motion_driver.hpp: Wishbone cycles in; acknowledge, read data,
+// the firmware driver of host/driver/motion_driver.hpp: Wishbone cycles in; acknowledge, read data,
 // steps, directions, interrupt, positions and queue level out.
 #include <fmt/format.h>
 
@@ -13,9 +13,9 @@
 
 #include "cli/vectors.hpp"
 #include "engines/motion_harness.hpp"
-#include "model/motion/feed.hpp"
+#include "host/driver/feed.hpp"
+#include "host/driver/motion_driver.hpp"
 #include "model/motion/io_scenarios.hpp"
-#include "model/motion/motion_driver.hpp"
 
 #include "cli/vector_set.hpp"
 #include "cli/vector_words.hpp"

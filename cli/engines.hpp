@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "model/pipeline/pipeline.hpp"
+#include "host/pipeline/pipeline.hpp"
 
 namespace dda::cli {
 

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "cli/arc_options.hpp"
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 
 namespace dda::cli {
 

@@ -7,10 +7,10 @@
 
 #include <string>
 #include <vector>
-#include "model/accuracy/golden.hpp"
-#include "model/pipeline/pipeline.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/pipeline/pipeline.hpp"
 
-#include "model/program_plan/program_plan.hpp"
+#include "host/program_plan/program_plan.hpp"
 
 namespace CLI {
 class App;

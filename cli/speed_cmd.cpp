@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "cli/output.hpp"
-#include "model/report/pace_report.hpp"
-#include "model/report/speed_report.hpp"
-#include "model/speed/pace_plan.hpp"
+#include "host/report/pace_report.hpp"
+#include "host/report/speed_report.hpp"
+#include "host/speed/pace_plan.hpp"
 
 namespace dda::cli {
 

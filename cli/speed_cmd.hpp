@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli/arc_options.hpp"
-#include "model/speed/machine_limits.hpp"
+#include "host/speed/machine_limits.hpp"
 
 namespace CLI {
 class App;

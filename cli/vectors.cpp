@@ -18,10 +18,10 @@
 #include <random>
 #include <sstream>
 
+#include "host/report/report.hpp"
 #include "model/datapath/core_model.hpp"
 #include "model/datapath/hw_command.hpp"
 #include "model/datapath/hw_params.hpp"
-#include "model/report/report.hpp"
 
 namespace dda::vec {
 

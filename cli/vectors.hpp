@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "cli/vector_set.hpp"
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/driver/motion_driver.hpp"
+#include "host/report/pace_report.hpp"
 #include "model/datapath/hw_params.hpp"
-#include "model/motion/motion_driver.hpp"
 #include "model/motion/motion_model.hpp"
-#include "model/report/pace_report.hpp"
 
 namespace CLI {
 class App;

@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "cli/output.hpp"
+#include "host/speed/pace_plan.hpp"
 #include "model/datapath/hw_command.hpp"
-#include "model/speed/pace_plan.hpp"
 
 namespace dda::cli {
 

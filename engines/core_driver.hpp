@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "engines/scoreboard.hpp"
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "model/datapath/core_model.hpp"
 
 namespace dda {

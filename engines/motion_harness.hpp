@@ -3,7 +3,7 @@
 // model (MotionModel) after every edge: the output ports, the block's registers
 // (kBlockRegs) and the core's register table. On its Wishbone bus (rtl/dda_motion.v) or
 // behind a bridge (rtl/dda_motion_axil.v, rtl/dda_motion_spi.v: then the bridge's
-// registers too, against its reference model). A bus master (motion/bus_master.hpp)
+// registers too, against its reference model). A bus master (host/port/bus_master.hpp)
 // drives it.
 #pragma once
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "model/datapath/core_model.hpp"
 
 namespace dda {

@@ -13,11 +13,11 @@
 
 #include "cli/arc_options.hpp"
 #include "cli/program_cmd.hpp"
+#include "host/pipeline/pipeline.hpp"
+#include "host/program/program.hpp"
+#include "host/report/report.hpp"
 #include "model/datapath/core_model.hpp"
 #include "model/datapath/hw_command.hpp"
-#include "model/pipeline/pipeline.hpp"
-#include "model/program/program.hpp"
-#include "model/report/report.hpp"
 
 namespace py = pybind11;
 

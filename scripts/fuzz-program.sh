@@ -15,7 +15,7 @@ seconds=${1:-600}
 out=${DDA_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 cp "$root"/tests/fuzz/corpus/* "$root"/tests/programs/dda/*.ngc "$out/corpus/"
-# The fuzz target and the sanitized tests are CMake targets (DDA_FUZZ: the model's
+# The fuzz target and the sanitized tests are CMake targets (DDA_FUZZ: the reader's
 # libraries only, built with clang).
 CXX=clang++ cmake -S "$root" -B "$out/build" -DDDA_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$out/build" --target fuzz_program test_program_san test_program_dialects_san \

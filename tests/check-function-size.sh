@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# No function over 80 lines in the project's own C++ (model/, cli/, tb/, bench/ and the
+# No function over 80 lines in the project's own C++ (model/, host/, cli/, tb/, bench/ and the
 # fuzz target; tests and generated code aside): clang-tidy's readability-function-size
 # over every such source of BUILD_DIR/compile_commands.json, two at a time.
 #   usage: tests/check-function-size.sh BUILD_DIR          (fails naming each function)
@@ -28,7 +28,7 @@ fi
 build=$1
 [ -f "$build/compile_commands.json" ] || { echo "function-size: no $build/compile_commands.json" >&2; exit 1; }
 cd "$root"
-mapfile -t files < <(git ls-files 'model/*.cpp' 'cli/*.cpp' 'tb/*.cpp' 'bench/*.cpp' 'tests/fuzz/*.cpp')
+mapfile -t files < <(git ls-files 'model/*.cpp' 'host/*.cpp' 'cli/*.cpp' 'tb/*.cpp' 'bench/*.cpp' 'tests/fuzz/*.cpp')
 [ "${#files[@]}" -gt 0 ] || { echo "function-size: no sources found" >&2; exit 1; }
 out=$(printf '%s\n' "${files[@]}" | xargs -P 2 -n 4 "$tidy" -p "$build" --quiet -checks='-*,readability-function-size' \
   -config="$config" 2>/dev/null | grep "warning: function" | sed "s|$root/||" || true)

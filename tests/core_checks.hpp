@@ -14,8 +14,8 @@
 #include <string>
 
 #include "engines/core_driver.hpp"
+#include "host/report/report.hpp"
 #include "model/datapath/hw_command.hpp"
-#include "model/report/report.hpp"
 #include "tb/random/dda_random.hpp"
 
 namespace dda::checks {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 
 namespace dda::program::testing {
 

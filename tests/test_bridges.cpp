@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "engines/motion_harness.hpp"
-#include "model/motion/bus_master.hpp"
+#include "host/port/bus_master.hpp"
 #include "tb/random/bus_work.hpp"
 #include "tb/random/dda_random.hpp"
 

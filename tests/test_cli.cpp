@@ -14,7 +14,7 @@
 
 #include <sstream>
 #include <string>
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "tests/cli_helpers.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 
 namespace {
 

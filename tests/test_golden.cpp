@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "model/accuracy/golden.hpp"
-#include "model/report/report.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/report/report.hpp"
 
 using namespace dda;
 

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "engines/motion_harness.hpp"
-#include "model/accuracy/golden.hpp"
-#include "model/motion/motion_driver.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/driver/motion_driver.hpp"
 #include "model/motion/motion_map.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/motion_mix.hpp"

@@ -9,11 +9,11 @@
 #include <catch2/catch.hpp>
 #include <systemc>
 
+#include "host/driver/motion_driver.hpp"
+#include "host/planner/planner.hpp"
+#include "host/report/pace_report.hpp"
+#include "host/speed/pace_plan.hpp"
 #include "model/motion/bus_monitors.hpp"
-#include "model/motion/motion_driver.hpp"
-#include "model/planner/planner.hpp"
-#include "model/report/pace_report.hpp"
-#include "model/speed/pace_plan.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/cosim/paced_program.hpp"
 #include "tb/random/dda_random.hpp"

@@ -11,10 +11,10 @@
 #include <cstdlib>
 
 #include "engines/motion_harness.hpp"
+#include "host/driver/motion_driver.hpp"
+#include "host/planner/planner.hpp"
+#include "host/report/pace_report.hpp"
 #include "model/motion/bus_monitors.hpp"
-#include "model/motion/motion_driver.hpp"
-#include "model/planner/planner.hpp"
-#include "model/report/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "Vdda_norm.h"
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "model/motion/pacer.hpp"
 
 using namespace dda;

@@ -14,11 +14,11 @@
 #include <optional>
 #include <vector>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/planner/planner.hpp"
+#include "host/report/pace_report.hpp"
 #include "model/motion/pacer.hpp"
 #include "model/motion/speed_monitor.hpp"
-#include "model/planner/planner.hpp"
-#include "model/report/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The part-program reader (model/program/program.hpp, docs/programs.md): the G-code
+// The part-program reader (host/program/program.hpp, docs/programs.md): the G-code
 // it accepts becomes the motion blocks the program describes, in nanometres of the
 // plane; every class of bad input is one "FILE:LINE:COLUMN: message" at the right place.
 #define CATCH_CONFIG_MAIN
@@ -11,8 +11,8 @@
 #include <random>
 #include <sstream>
 
-#include "model/geometry/det_math.hpp"
-#include "model/program/program.hpp"
+#include "host/geometry/det_math.hpp"
+#include "host/program/program.hpp"
 
 using namespace dda::program;
 

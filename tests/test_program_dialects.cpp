@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 
 using namespace dda::program;
 

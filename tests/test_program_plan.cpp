@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Part programs onto the lattice (model/program_plan/program_plan.hpp, docs/programs.md):
+// Part programs onto the lattice (host/program_plan/program_plan.hpp, docs/programs.md):
 // geometry between lattice points through the planner, and the programs of examples/
 // on the golden model: every block on its rounded end, a continuous path, and each
 // block within the accuracy targets of docs/results.md against the programmed geometry.
@@ -13,11 +13,11 @@
 #include <random>
 #include <sstream>
 
-#include "model/pipeline/pipeline.hpp"
-#include "model/planner/planner.hpp"
-#include "model/program_plan/program_plan.hpp"
-#include "model/report/program_report.hpp"
-#include "model/runner/runner.hpp"
+#include "host/pipeline/pipeline.hpp"
+#include "host/planner/planner.hpp"
+#include "host/program_plan/program_plan.hpp"
+#include "host/report/program_report.hpp"
+#include "host/runner/runner.hpp"
 
 using namespace dda;
 using namespace dda::program;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 #include "tests/program_helpers.hpp"
 
 using namespace dda::program;

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "tb/random/dda_random.hpp"
 
 using namespace dda;

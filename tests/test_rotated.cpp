@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 
 using namespace dda;
 

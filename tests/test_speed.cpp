@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The speed planner (model/speed/, docs/programs.md "Feeds and speeds"): each rule on a
+// The speed planner (host/speed/, docs/programs.md "Feeds and speeds"): each rule on a
 // small program (F in mm and inch, inverse time, rapids, dwell, exact stop and
 // continuous, a corner at its junction speed, a reversal at rest, a tight arc held by
 // its curvature, a window too short to reach the feed), and on random programs the
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "model/speed/speed_run.hpp"
+#include "host/speed/speed_run.hpp"
 #include "tb/random/random_program.hpp"
 
 using namespace dda;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A program's planned speeds on the motion block's pacer (model/speed/pace_plan.hpp): the
+// A program's planned speeds on the motion block's pacer (host/speed/pace_plan.hpp): the
 // examples' pieces, with the entries the driver writes from the plan, run through the
 // pacer's reference model on the golden datapath clock by clock. The speed monitor reads
 // the step pins alone and fails the run on a path acceleration above the plan's (5%
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "model/report/pace_report.hpp"
-#include "model/speed/pace_plan.hpp"
+#include "host/report/pace_report.hpp"
+#include "host/speed/pace_plan.hpp"
 
 using namespace dda;
 using namespace dda::speed;

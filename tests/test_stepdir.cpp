@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "engines/motion_harness.hpp"
-#include "model/accuracy/golden.hpp"
-#include "model/motion/motion_driver.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/driver/motion_driver.hpp"
 #include "model/motion/speed_monitor.hpp"
 #include "model/motion/stepdir_monitor.hpp"
 #include "tb/random/dda_random.hpp"

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "model/datapath/hw_command.hpp"
 #include "tb/random/dda_random.hpp"
 

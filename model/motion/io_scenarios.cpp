@@ -4,11 +4,11 @@
 #include <map>
 #include <string>
 
+#include "host/driver/homing.hpp"
+#include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/homing.hpp"
 #include "model/motion/machine_sim.hpp"
 #include "model/motion/scenario_kit.hpp"
-#include "model/planner/planner.hpp"
 
 namespace dda::motion {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "host/driver/motion_driver.hpp"
+#include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/motion_driver.hpp"
-#include "model/planner/planner.hpp"
 
 namespace dda::motion::scenario {
 

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
+#include "host/driver/motion_driver.hpp"
+#include "host/speed/segments.hpp"
 #include "model/motion/bus_monitors.hpp"
-#include "model/motion/motion_driver.hpp"
-#include "model/speed/segments.hpp"
 
 namespace dda::motion {
 

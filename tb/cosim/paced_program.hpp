@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <string>
 
+#include "host/speed/pace_plan.hpp"
 #include "model/motion/bus_target.hpp"
 #include "model/motion/speed_monitor.hpp"
-#include "model/speed/pace_plan.hpp"
 
 namespace dda::motion {
 

@@ -27,9 +27,9 @@
 #include <sstream>
 #include <systemc>
 
+#include "host/program_plan/program_plan.hpp"
+#include "host/report/pace_report.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/program_plan/program_plan.hpp"
-#include "model/report/pace_report.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/cosim/paced_program.hpp"
 #include "tb/random/random_program.hpp"

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "cli/arc_options.hpp"
+#include "host/runner/runner.hpp"
 #include "model/datapath/core_model.hpp"
 #include "model/datapath/hw_command.hpp"
-#include "model/runner/runner.hpp"
 
 namespace {
 

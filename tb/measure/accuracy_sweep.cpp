@@ -16,7 +16,7 @@
 #include <random>
 #include <string>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "tb/random/dda_random.hpp"
 
 using namespace dda;

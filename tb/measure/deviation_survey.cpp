@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/golden.hpp"
 #include "tb/random/dda_random.hpp"
 
 using namespace dda;

@@ -27,13 +27,13 @@
 
 #include <fmt/format.h>
 
-#include "model/geometry/fixed_trig.hpp"
-#include "model/geometry/geometry.hpp"
-#include "model/program_plan/program_plan.hpp"
-#include "model/report/pace_report.hpp"
-#include "model/report/report.hpp"
-#include "model/runner/runner.hpp"
-#include "model/speed/pace_plan.hpp"
+#include "host/geometry/fixed_trig.hpp"
+#include "host/geometry/geometry.hpp"
+#include "host/program_plan/program_plan.hpp"
+#include "host/report/pace_report.hpp"
+#include "host/report/report.hpp"
+#include "host/runner/runner.hpp"
+#include "host/speed/pace_plan.hpp"
 
 using namespace dda;
 using namespace dda::program;

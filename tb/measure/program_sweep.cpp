@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "model/accuracy/accuracy.hpp"
-#include "model/accuracy/golden.hpp"
+#include "host/accuracy/accuracy.hpp"
+#include "host/accuracy/golden.hpp"
 #include "tb/random/dda_random.hpp"
 
 using namespace dda;

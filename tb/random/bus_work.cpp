@@ -4,10 +4,10 @@
 #include <random>
 #include <string>
 
+#include "host/driver/motion_driver.hpp"
+#include "host/planner/planner.hpp"
 #include "model/motion/bus_monitors.hpp"
-#include "model/motion/motion_driver.hpp"
 #include "model/motion/stepdir_monitor.hpp"
-#include "model/planner/planner.hpp"
 #include "tb/random/dda_random.hpp"
 
 namespace dda::motion {

@@ -11,8 +11,8 @@
 #include <random>
 #include <string>
 
-#include "model/accuracy/golden.hpp"
-#include "model/report/report.hpp"
+#include "host/accuracy/golden.hpp"
+#include "host/report/report.hpp"
 
 namespace dda {
 

@@ -3,8 +3,8 @@
 
 #include <string>
 
+#include "host/driver/motion_driver.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/motion_driver.hpp"
 
 namespace dda::motion {
 

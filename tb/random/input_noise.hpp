@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <random>
 
-#include "model/motion/motion_driver.hpp"
+#include "host/driver/motion_driver.hpp"
 
 namespace dda::motion {
 

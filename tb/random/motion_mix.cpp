@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "host/driver/motion_driver.hpp"
+#include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
 #include "model/motion/bus_monitors.hpp"
-#include "model/motion/motion_driver.hpp"
 #include "model/motion/stepdir_monitor.hpp"
-#include "model/planner/planner.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/input_noise.hpp"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// libFuzzer target of the part-program reader (model/program/program.hpp): any bytes,
+// libFuzzer target of the part-program reader (host/program/program.hpp): any bytes,
 // read on a mill and on a lathe in the dialect detected, and on a mill in each dialect
 // (the switch of block delete on in those). Bad input must end in ProgramError (an InputError);
 // any other exception, a crash or a sanitizer report is a bug. Macro loops stop after
@@ -11,7 +11,7 @@
 #include <optional>
 #include <string_view>
 
-#include "model/program/program.hpp"
+#include "host/program/program.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

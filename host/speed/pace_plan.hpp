@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+// A program's planned speeds as the motion block's pacing (docs/design.md, "Pacing in
+// the block"): ACCEL the path acceleration, VMIN the machine's minimum speed, and per
+// piece an entry whose cruise speed and limit are the speed the piece may reach, whose
+// exit speed is the plan's (a rest: 0, the pacer ends at VMIN), with the piece's length
+// as the pacer counts it and the exit's braking distance. Speeds in path steps: mm/s
+// over the step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "host/planner/plan.hpp"
+#include "host/speed/lookahead.hpp"
+#include "host/speed/machine_limits.hpp"
+#include "host/speed/speed_run.hpp"
+#include "model/motion/pacer.hpp"
+
+namespace dda::speed {
+
+struct PaceSetup {
+  double clock_hz = 0;
+  double step_mm = 0;
+  std::uint64_t accel = 0;  // ACCEL
+  std::uint32_t vmin = 0;   // VMIN
+};
+// The block's settings for the plan at a clock (InputError when a speed or the
+// acceleration does not fit the pacer's fields at that clock).
+PaceSetup pace_setup(const PlannerLimits& plim, const MachineLimits& lim, program::Length step, double clock_hz);
+// A speed in mm/s as an entry's field (x 2^kSpeedFrac path steps per clock).
+std::uint32_t speed_word(double mm_s, const PaceSetup& s);
+motion::PaceEntry pace_entry(const PlannedSegment& p, const Piece& pc, const PaceSetup& s);
+
+// A whole program planned in memory (tests and vector sets): its pieces after the cuts,
+// back to back, and their planned segments in the same order.
+struct PlannedProgram {
+  Plan plan;
+  std::vector<PlannedSegment> segments;
+  std::vector<BlockSpeeds> blocks;
+  SpeedTotals totals;
+};
+PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, const program::ReadOptions& read,
+                                   const program::LatticeOptions& lattice, const MachineLimits& lim);
+
+// The slowest block clock that follows a plan at a step, Hz. Each piece at its peak
+// speed v (path steps/s) asks up to v / d iterations per second, each at least 2
+// clocks, d the piece's shortest path per iteration (min_iteration_distance: this runs
+// each piece through the datapath once), and among them up to v * min(axes_factor,
+// 1 / d) stepping ones, each taking kNormLatency + 1 clocks (the norm unit recomputes
+// the path length per iteration after it); the path acceleration must also fit ACCEL
+// (pace_setup). A slower clock leaves a backlog the core then works off above the
+// commanded speed. At 100% override: an override above it needs the clock raised as
+// much; step/dir timings longer than 107 clocks a step are not counted.
+double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm);
+// InputError, with the clock needed, for a setup's clock below slowest_clock.
+void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz);
+
+// The block's pacing of a planned program at a clock: ACCEL, VMIN and one entry per
+// piece, in the plan's order (InputError as pace_setup and check_clock).
+struct ProgramPacing {
+  PaceSetup setup;
+  std::vector<motion::PaceEntry> entries;
+};
+// Every piece's entry (pace_entry), the exits lowered by motion::limit_exits where the
+// pacer's own lengths (the DDA's path, which at a coarse step can be shorter than the
+// programmed one a piece was planned on) leave too little room to slow down to the next
+// pieces' exits.
+std::vector<motion::PaceEntry> program_entries(const PlannedProgram& pp, const PaceSetup& s);
+// The time the entries take on their own terms, s: each piece from its predecessor's
+// exit speed to its own (at least VMIN; the first from rest, the last to VMIN) at
+// ACCEL under its cruise speed, over the pacer's length, a ramp down ending the pacer's
+// margin (2^-kMarginShift step) early: the plan's profile on the DDA's path with drives
+// that stop at VMIN, as the pacer runs it but for its clocks. GuardError for a setup
+// without ACCEL, VMIN or a clock.
+double entries_seconds(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
+// The pieces' path as the pacer counts it (the DDA's), mm.
+double entries_length(const std::vector<motion::PaceEntry>& entries, const PaceSetup& s);
+ProgramPacing program_pacing(const PlannedProgram& pp, const PlannerLimits& plim, const MachineLimits& lim,
+                             program::Length step, double clock_hz);
+
+}  // namespace dda::speed
