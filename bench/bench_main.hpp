@@ -6,7 +6,7 @@
 // generation use); the others run through the shared driver with the scoreboard off.
 #pragma once
 
-#include "engines/core_driver.hpp"
+#include "tb/engines/core_driver.hpp"
 
 namespace dda {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // scripts/bench: the Verilated RTL's speed, tracing off (see bench_main.hpp).
 #include "bench/bench_main.hpp"
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 
 int main(int argc, char* argv[]) {
   dda::rtl::RtlHarness h;

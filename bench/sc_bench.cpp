@@ -3,7 +3,7 @@
 #include <systemc>
 
 #include "bench/bench_main.hpp"
-#include "engines/sc_harness.hpp"
+#include "tb/engines/sc_harness.hpp"
 
 int main(int argc, char* argv[]) {
   dda::sc::ScHarness h;

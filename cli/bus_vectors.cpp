@@ -12,10 +12,10 @@
 #include <sstream>
 
 #include "cli/vectors.hpp"
-#include "engines/motion_harness.hpp"
 #include "host/driver/feed.hpp"
 #include "host/driver/motion_driver.hpp"
-#include "model/motion/io_scenarios.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/scenarios/io_scenarios.hpp"
 
 #include "cli/vector_set.hpp"
 #include "cli/vector_words.hpp"

@@ -42,7 +42,6 @@
 #include "host/pipeline/pipeline.hpp"
 #include "host/program/program.hpp"
 #include "host/report/feed_report.hpp"
-#include "host/report/pace_report.hpp"
 #include "host/report/program_report.hpp"
 #include "host/report/report.hpp"
 #include "host/speed/pace_plan.hpp"
@@ -50,6 +49,7 @@
 #include "model/datapath/hw_params.hpp"
 #include "model/motion/motion_map.hpp"
 #include "model/motion/motion_model.hpp"
+#include "tb/measure/pace_report.hpp"
 
 namespace dda::cli {
 

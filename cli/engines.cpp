@@ -4,10 +4,10 @@
 #include <iterator>
 #include <utility>
 
-#include "engines/core_driver.hpp"
-#include "engines/rtl_harness.hpp"
-#include "engines/sc_harness.hpp"
 #include "model/datapath/hw_command.hpp"
+#include "tb/engines/core_driver.hpp"
+#include "tb/engines/rtl_harness.hpp"
+#include "tb/engines/sc_harness.hpp"
 
 namespace dda::cli {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pacer's options (`dda feed --feed-rate`, `dda plot --speed`), checked into the
-// reference model's run (host/report/pace_report.hpp), and the picture files' names.
+// reference model's run (tb/measure/pace_report.hpp), and the picture files' names.
 #pragma once
 
 #include <string>
 
-#include "host/report/pace_report.hpp"
+#include "tb/measure/pace_report.hpp"
 
 namespace CLI {
 class App;

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "cli/output.hpp"
-#include "host/report/pace_report.hpp"
 #include "host/report/speed_report.hpp"
 #include "host/speed/pace_plan.hpp"
+#include "tb/measure/pace_report.hpp"
 
 namespace dda::cli {
 

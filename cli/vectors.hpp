@@ -10,9 +10,9 @@
 #include "cli/vector_set.hpp"
 #include "host/accuracy/golden.hpp"
 #include "host/driver/motion_driver.hpp"
-#include "host/report/pace_report.hpp"
 #include "model/datapath/hw_params.hpp"
 #include "model/motion/motion_model.hpp"
+#include "tb/measure/pace_report.hpp"
 
 namespace CLI {
 class App;

@@ -37,7 +37,7 @@ find_package(verilator REQUIRED)
 
 # verilate() with the build's coverage choice: with -DDDA_COVERAGE=ON every verilated
 # model counts Verilator's line, toggle and user coverage points, and the harnesses
-# write them (engines/vl_coverage.hpp) for scripts/coverage.sh.
+# write them (tb/engines/vl_coverage.hpp) for scripts/coverage.sh.
 option(DDA_COVERAGE "verilate every model with --coverage (scripts/coverage.sh)" OFF)
 macro(dda_verilate)
   if(DDA_COVERAGE)
@@ -48,11 +48,11 @@ macro(dda_verilate)
 endmacro()
 
 # A harness library around a verilated copy of the RTL in `rtl_dir` (tests verilate a
-# mutated copy too): `cc` is the C++ model and RtlHarness (engines/, shipped), `sc` the
-# SystemC model and the co-simulation harness (tb/cosim/, verification only). Immediate
+# mutated copy too): `cc` is the C++ model and RtlHarness (tb/engines/, run by the dda
+# command), `sc` the SystemC model and the co-simulation harness (tb/cosim/). Immediate
 # assertions in the RTL are on (--assert). Extra arguments go to verilator.
 function(dda_verilated_harness target mode rtl_dir)
-  set(eng ${PROJECT_SOURCE_DIR}/engines)
+  set(eng ${PROJECT_SOURCE_DIR}/tb/engines)
   if(mode STREQUAL "cc")
     set(src ${eng}/rtl_harness.cpp ${eng}/vl_sampler.cpp)
     set(prefix Vdda_core)
@@ -91,18 +91,18 @@ if(NOT DDA_WIDTHS_DEFAULT)
   set(DDA_MOTION_PARAMS ${DDA_RTL_PARAMS_DIR})
 endif()
 
-# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES]): the motion block's harness (engines/)
+# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES]): the motion block's harness (tb/engines/)
 # around the RTL verilated with that queue depth (MotionHarness compiled with the same
 # depth); "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the
 # generated header). BRIDGES: the block behind its AXI4-Lite and SPI bridges too
 # (dda_motion_axil, dda_motion_spi), each verilated on its own.
 function(dda_motion_harness_lib target depth_log2)
-  set(eng ${PROJECT_SOURCE_DIR}/engines)
+  set(eng ${PROJECT_SOURCE_DIR}/tb/engines)
   set(src ${eng}/motion_harness.cpp ${eng}/vl_sampler.cpp)
   add_library(${target} STATIC ${src})
   set_source_files_properties(${src} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS "${DDA_WARNINGS}")
   target_include_directories(${target} SYSTEM PRIVATE ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
-  target_link_libraries(${target} PUBLIC dda_motion_map dda_golden)
+  target_link_libraries(${target} PUBLIC dda_motion_map dda_monitors dda_golden)
   if(depth_log2 STREQUAL "default")
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_DEPTH_LOG2=dda::motion::kMaxDepthLog2)
     set(gparam "")

@@ -13,9 +13,9 @@
 #include <sstream>
 #include <string>
 
-#include "engines/core_driver.hpp"
 #include "host/report/report.hpp"
 #include "model/datapath/hw_command.hpp"
+#include "tb/engines/core_driver.hpp"
 #include "tb/random/dda_random.hpp"
 
 namespace dda::checks {

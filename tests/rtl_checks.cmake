@@ -143,7 +143,7 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
-# The machine-input scenarios (model/motion/io_scenarios.hpp, label io): the block on a
+# The machine-input scenarios (tb/scenarios/io_scenarios.hpp, label io): the block on a
 # simulated machine, its input pins in the set.
 foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches overflow limits ranges)
   string(REPLACE "-" "_" _name "io_${_scn}")

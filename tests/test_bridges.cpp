@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block behind its AXI4-Lite and SPI bridges (rtl/dda_motion_axil.v,
 // rtl/dda_motion_spi.v), the RTL in lockstep with the reference models of the block and
-// the bridge every edge (engines/motion_harness.hpp): the same random work over the
+// the bridge every edge (tb/engines/motion_harness.hpp): the same random work over the
 // three buses does the same, iteration by iteration; the SPI frame rules; the AXI4-Lite
 // channel orders and held responses; the register map the same on every bus.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
-#include "engines/motion_harness.hpp"
 #include "host/port/bus_master.hpp"
+#include "tb/engines/motion_harness.hpp"
 #include "tb/random/bus_work.hpp"
 #include "tb/random/dda_random.hpp"
 

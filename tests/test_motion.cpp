@@ -11,10 +11,10 @@
 #include <random>
 #include <sstream>
 
-#include "engines/motion_harness.hpp"
 #include "host/accuracy/golden.hpp"
 #include "host/driver/motion_driver.hpp"
 #include "model/motion/motion_map.hpp"
+#include "tb/engines/motion_harness.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/motion_mix.hpp"
 

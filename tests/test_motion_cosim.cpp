@@ -11,11 +11,11 @@
 
 #include "host/driver/motion_driver.hpp"
 #include "host/planner/planner.hpp"
-#include "host/report/pace_report.hpp"
 #include "host/speed/pace_plan.hpp"
-#include "model/motion/bus_monitors.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/cosim/paced_program.hpp"
+#include "tb/measure/pace_report.hpp"
+#include "tb/monitors/bus_monitors.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/motion_mix.hpp"
 

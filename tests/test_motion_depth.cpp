@@ -2,12 +2,12 @@
 // The block at the queue depth every user builds (rtl/dda_motion.v's default DepthLog2,
 // 128 entries; the other lockstep tests run a queue of 8 to keep their runs short): the
 // queue filled to its depth behind a slow line and one entry more refused, the RTL in
-// lockstep with the reference model (engines/motion_harness.hpp at the default depth).
+// lockstep with the reference model (tb/engines/motion_harness.hpp at the default depth).
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
-#include "engines/motion_harness.hpp"
-#include "model/motion/io_scenarios.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/scenarios/io_scenarios.hpp"
 
 using namespace dda::motion;
 

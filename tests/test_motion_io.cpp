@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block's machine inputs (docs/design.md, "Machine inputs"): the scenarios of
-// model/motion/io_scenarios.hpp (an E-stop in the middle of a piece, limits in both stop
+// tb/scenarios/io_scenarios.hpp (an E-stop in the middle of a piece, limits in both stop
 // modes, homing on each axis, a probing move, the snapshot while two axes run, glitches
 // shorter than the filter) and the block at the ends of its ranges (a queue overflow,
 // each limit, every field at its full width) on a simulated machine whose switches and
@@ -11,9 +11,9 @@
 #include <catch2/catch.hpp>
 #include <systemc>
 
-#include "engines/motion_harness.hpp"
-#include "model/motion/io_scenarios.hpp"
 #include "tb/cosim/motion_cosim.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/scenarios/io_scenarios.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

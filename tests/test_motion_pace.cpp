@@ -10,11 +10,11 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "engines/motion_harness.hpp"
 #include "host/driver/motion_driver.hpp"
 #include "host/planner/planner.hpp"
-#include "host/report/pace_report.hpp"
-#include "model/motion/bus_monitors.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/measure/pace_report.hpp"
+#include "tb/monitors/bus_monitors.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pacer in RTL (rtl/dda_pace.v, with its norm unit) in lockstep with its reference
 // model (motion::Pacer) while the model paces the golden datapath through planned arcs
-// and lines (host/report/pace_report.hpp, clock by clock): on every clock the RTL gets the
+// and lines (tb/measure/pace_report.hpp, clock by clock): on every clock the RTL gets the
 // model's inputs and the core's registers, its iterate_o must equal the model's
 // decision, and after every edge each of its registers the model's state: the speed,
 // the phase, the braking distance, the distance to go, the entry's fields, the norm
@@ -19,8 +19,8 @@
 #include "Vdda_pace___024root.h"
 #include "host/accuracy/golden.hpp"
 #include "host/planner/planner.hpp"
-#include "host/report/pace_report.hpp"
 #include "model/motion/pacer.hpp"
+#include "tb/measure/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::motion;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pacer's SystemC model (model/systemc/dda_pace.hpp) and its RTL (rtl/dda_pace.v,
 // Verilator) on the same inputs, the reference model's while it paces the golden
-// datapath (host/report/pace_report.hpp, clock by clock, with a hold and overrides of 100%,
+// datapath (tb/measure/pace_report.hpp, clock by clock, with a hold and overrides of 100%,
 // 0 (the speed sits on the minimum), 50% and 200%): the
 // decision on every clock and every register after every edge, the pacer's and its norm
 // unit's, a difference named with its register and clock.
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "host/planner/planner.hpp"
-#include "host/report/pace_report.hpp"
 #include "model/systemc/dda_pace.hpp"
+#include "tb/measure/pace_report.hpp"
 
 int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
 int sc_main(int argc, char* argv[]) { return main(argc, argv); }

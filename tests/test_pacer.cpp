@@ -16,9 +16,9 @@
 
 #include "host/accuracy/golden.hpp"
 #include "host/planner/planner.hpp"
-#include "host/report/pace_report.hpp"
 #include "model/motion/pacer.hpp"
-#include "model/motion/speed_monitor.hpp"
+#include "tb/measure/pace_report.hpp"
+#include "tb/monitors/speed_monitor.hpp"
 
 using namespace dda;
 using namespace dda::motion;

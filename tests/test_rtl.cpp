@@ -2,7 +2,7 @@
 // The RTL (Verilator --cc) against the golden model, register by register, iteration by
 // iteration. Each harness has its own VerilatedContext, so tests share one process.
 #define CATCH_CONFIG_MAIN
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 #include "tests/core_checks.hpp"
 
 using namespace dda;

@@ -3,7 +3,7 @@
 // rtl/dda_counter.v so that its counter never stops: active_o stays high at 0) must be
 // caught by the golden-model scoreboard with a message naming the register.
 #define CATCH_CONFIG_MAIN
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 #include "tests/core_checks.hpp"
 
 using namespace dda;

@@ -4,7 +4,7 @@
 // catches as cmd_ready_o low in the cycle of piece 0's last iteration (edge 30: two reset
 // edges, the load, 27 iterations), where the reference model is ready for the next.
 #define CATCH_CONFIG_MAIN
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 #include "tests/core_checks.hpp"
 
 using namespace dda;

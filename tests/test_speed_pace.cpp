@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "host/report/pace_report.hpp"
 #include "host/speed/pace_plan.hpp"
+#include "tb/measure/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::speed;

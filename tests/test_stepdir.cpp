@@ -18,11 +18,11 @@
 #include <sstream>
 #include <vector>
 
-#include "engines/motion_harness.hpp"
 #include "host/accuracy/golden.hpp"
 #include "host/driver/motion_driver.hpp"
-#include "model/motion/speed_monitor.hpp"
-#include "model/motion/stepdir_monitor.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/monitors/speed_monitor.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 #include "tb/random/dda_random.hpp"
 
 using namespace dda;

@@ -4,7 +4,7 @@
 #define CATCH_CONFIG_RUNNER
 #include <systemc>
 
-#include "engines/sc_harness.hpp"
+#include "tb/engines/sc_harness.hpp"
 #include "tests/core_checks.hpp"
 
 using namespace dda;

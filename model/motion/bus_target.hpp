@@ -3,7 +3,7 @@
 // interface (reset, ce_i, the machine's input pins, the bus, the outputs after each
 // edge), the taps that sit between a master and a target, and the reference model alone
 // as a target (ModelTarget: `dda vectors --bus` records its cycles). The RTL beside the
-// model is another target (engines/motion_harness.hpp).
+// model is another target (tb/engines/motion_harness.hpp).
 #pragma once
 
 #include <cstdint>

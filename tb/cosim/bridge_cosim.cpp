@@ -5,10 +5,10 @@
 
 #include "Vdda_motion_axil_sc.h"
 #include "Vdda_motion_spi_sc.h"
-#include "engines/vl_coverage.hpp"
 #include "model/datapath/errors.hpp"
 #include "model/systemc/dda_motion_bridged.hpp"
 #include "tb/cosim/motion_cosim.hpp"
+#include "tb/engines/vl_coverage.hpp"
 
 namespace dda::motion {
 

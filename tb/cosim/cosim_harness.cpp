@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "Vdda_core_sc.h"
-#include "engines/sc_harness.hpp"
-#include "engines/vl_coverage.hpp"
+#include "tb/engines/sc_harness.hpp"
+#include "tb/engines/vl_coverage.hpp"
 
 namespace dda::cosim {
 

@@ -11,10 +11,10 @@
 #include <memory>
 #include <string>
 
-#include "engines/core_driver.hpp"
-#include "engines/sc_sampler.hpp"
-#include "engines/vl_sampler.hpp"
 #include "model/systemc/dda_core.hpp"
+#include "tb/engines/core_driver.hpp"
+#include "tb/engines/sc_sampler.hpp"
+#include "tb/engines/vl_sampler.hpp"
 
 class Vdda_core_sc;
 

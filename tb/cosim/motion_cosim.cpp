@@ -4,8 +4,8 @@
 #include <verilated.h>
 
 #include "Vdda_motion_sc.h"
-#include "engines/vl_coverage.hpp"
 #include "model/datapath/errors.hpp"
+#include "tb/engines/vl_coverage.hpp"
 
 namespace dda::motion {
 

@@ -10,11 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "engines/motion_harness.hpp"
-#include "engines/sc_sampler.hpp"
 #include "model/motion/bus_target.hpp"
-#include "model/motion/stepdir_monitor.hpp"
 #include "model/systemc/dda_motion.hpp"
+#include "tb/engines/motion_harness.hpp"
+#include "tb/engines/sc_sampler.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 
 class Vdda_motion_sc;
 

@@ -5,7 +5,7 @@
 
 #include "host/driver/motion_driver.hpp"
 #include "host/speed/segments.hpp"
-#include "model/motion/bus_monitors.hpp"
+#include "tb/monitors/bus_monitors.hpp"
 
 namespace dda::motion {
 

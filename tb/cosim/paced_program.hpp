@@ -11,7 +11,7 @@
 
 #include "host/speed/pace_plan.hpp"
 #include "model/motion/bus_target.hpp"
-#include "model/motion/speed_monitor.hpp"
+#include "tb/monitors/speed_monitor.hpp"
 
 namespace dda::motion {
 

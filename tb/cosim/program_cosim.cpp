@@ -28,10 +28,10 @@
 #include <systemc>
 
 #include "host/program_plan/program_plan.hpp"
-#include "host/report/pace_report.hpp"
 #include "model/datapath/errors.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/cosim/paced_program.hpp"
+#include "tb/measure/pace_report.hpp"
 #include "tb/random/random_program.hpp"
 
 using namespace dda;

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "Vdda_dpi_tb.h"
-#include "engines/vl_coverage.hpp"
 #include "tb/dpi/dda_dpi.h"
+#include "tb/engines/vl_coverage.hpp"
 
 int main(int argc, char** argv) {
   auto ctx = std::make_unique<VerilatedContext>();

@@ -30,10 +30,10 @@
 #include "host/geometry/fixed_trig.hpp"
 #include "host/geometry/geometry.hpp"
 #include "host/program_plan/program_plan.hpp"
-#include "host/report/pace_report.hpp"
 #include "host/report/report.hpp"
 #include "host/runner/runner.hpp"
 #include "host/speed/pace_plan.hpp"
+#include "tb/measure/pace_report.hpp"
 
 using namespace dda;
 using namespace dda::program;

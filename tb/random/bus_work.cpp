@@ -6,8 +6,8 @@
 
 #include "host/driver/motion_driver.hpp"
 #include "host/planner/planner.hpp"
-#include "model/motion/bus_monitors.hpp"
-#include "model/motion/stepdir_monitor.hpp"
+#include "tb/monitors/bus_monitors.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 #include "tb/random/dda_random.hpp"
 
 namespace dda::motion {

@@ -10,8 +10,8 @@
 #include "host/driver/motion_driver.hpp"
 #include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/bus_monitors.hpp"
-#include "model/motion/stepdir_monitor.hpp"
+#include "tb/monitors/bus_monitors.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/input_noise.hpp"
 

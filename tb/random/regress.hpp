@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "engines/core_driver.hpp"
+#include "tb/engines/core_driver.hpp"
 #include "tb/random/dda_random.hpp"
 
 namespace dda {

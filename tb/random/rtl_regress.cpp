@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Regression of the RTL (Verilator --cc) against the golden model (scripts/regress.sh).
 //   usage: rtl_regress [--arcs N] [--seed S]
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 #include "tb/random/regress.hpp"
 
 int main(int argc, char* argv[]) {

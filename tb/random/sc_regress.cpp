@@ -3,7 +3,7 @@
 //   usage: sc_regress [--arcs N] [--seed S]
 #include <systemc>
 
-#include "engines/sc_harness.hpp"
+#include "tb/engines/sc_harness.hpp"
 #include "tb/random/regress.hpp"
 
 int main(int argc, char* argv[]) {

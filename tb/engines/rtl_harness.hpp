@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "engines/core_driver.hpp"
-#include "engines/vl_sampler.hpp"
+#include "tb/engines/core_driver.hpp"
+#include "tb/engines/vl_sampler.hpp"
 
 class VerilatedContext;
 class VerilatedVcdC;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/vl_sampler.hpp"
+#include "tb/engines/vl_sampler.hpp"
 
 #include <verilated.h>
 #include <verilated_syms.h>

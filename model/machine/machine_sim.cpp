@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "model/motion/machine_sim.hpp"
+#include "model/machine/machine_sim.hpp"
 
 namespace dda::motion {
 

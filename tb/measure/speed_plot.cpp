@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "host/report/pace_report.hpp"
 #include "host/speed/pace_plan.hpp"
+#include "tb/measure/pace_report.hpp"
 
 namespace dda {
 

@@ -19,7 +19,7 @@
 #include "host/planner/plan.hpp"
 #include "host/speed/pace_plan.hpp"
 #include "model/motion/pacer.hpp"
-#include "model/motion/speed_monitor.hpp"
+#include "tb/monitors/speed_monitor.hpp"
 
 namespace dda {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/sc_sampler.hpp"
+#include "tb/engines/sc_sampler.hpp"
 
 #include <systemc>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "host/report/pace_report.hpp"
+#include "tb/measure/pace_report.hpp"
 
 #include <fmt/format.h>
 

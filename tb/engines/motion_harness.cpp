@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/motion_harness.hpp"
+#include "tb/engines/motion_harness.hpp"
 
 #include <verilated.h>
 #include <verilated_syms.h>
@@ -9,10 +9,10 @@
 #include "Vdda_motion_axil.h"
 #include "Vdda_motion_spi.h"
 #endif
-#include "engines/vl_coverage.hpp"
-#include "engines/vl_sampler.hpp"
-#include "engines/vl_waveform.hpp"
 #include "model/datapath/errors.hpp"
+#include "tb/engines/vl_coverage.hpp"
+#include "tb/engines/vl_sampler.hpp"
+#include "tb/engines/vl_waveform.hpp"
 
 namespace dda::motion {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "model/motion/bus_target.hpp"
-#include "model/motion/speed_monitor.hpp"
+#include "tb/monitors/speed_monitor.hpp"
 
 namespace dda::motion {
 

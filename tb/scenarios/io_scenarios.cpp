@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "model/motion/io_scenarios.hpp"
+#include "tb/scenarios/io_scenarios.hpp"
 
 #include <map>
 #include <string>
@@ -7,8 +7,8 @@
 #include "host/driver/homing.hpp"
 #include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
-#include "model/motion/machine_sim.hpp"
-#include "model/motion/scenario_kit.hpp"
+#include "model/machine/machine_sim.hpp"
+#include "tb/scenarios/scenario_kit.hpp"
 
 namespace dda::motion {
 

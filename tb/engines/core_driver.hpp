@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "engines/scoreboard.hpp"
 #include "host/accuracy/golden.hpp"
 #include "model/datapath/core_model.hpp"
+#include "tb/engines/scoreboard.hpp"
 
 namespace dda {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "model/motion/io_scenarios.hpp"
-#include "model/motion/machine_sim.hpp"
+#include "model/machine/machine_sim.hpp"
 #include "model/motion/pacer.hpp"
-#include "model/motion/scenario_kit.hpp"
+#include "tb/scenarios/io_scenarios.hpp"
+#include "tb/scenarios/scenario_kit.hpp"
 
 namespace dda::motion {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/scoreboard.hpp"
+#include "tb/engines/scoreboard.hpp"
 
 #include <sstream>
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/rtl_harness.hpp"
+#include "tb/engines/rtl_harness.hpp"
 
 #include <verilated.h>
 
 #include "Vdda_core.h"
-#include "engines/vl_coverage.hpp"
-#include "engines/vl_waveform.hpp"
 #include "model/datapath/hw_command.hpp"
+#include "tb/engines/vl_coverage.hpp"
+#include "tb/engines/vl_waveform.hpp"
 
 namespace dda::rtl {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "model/motion/speed_monitor.hpp"
+#include "tb/monitors/speed_monitor.hpp"
 
 #include <fmt/format.h>
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "engines/vl_sampler.hpp"
 #include "model/motion/bus_target.hpp"
-#include "model/motion/stepdir_monitor.hpp"
+#include "tb/engines/vl_sampler.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 
 class VerilatedContext;
 

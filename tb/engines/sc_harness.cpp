@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/sc_harness.hpp"
+#include "tb/engines/sc_harness.hpp"
 
 #include <cstdio>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "model/motion/stepdir_monitor.hpp"
+#include "tb/monitors/stepdir_monitor.hpp"
 
 #include <algorithm>
 #include <string>

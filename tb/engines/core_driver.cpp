@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "engines/core_driver.hpp"
+#include "tb/engines/core_driver.hpp"
 
 #include <sstream>
 #include <utility>

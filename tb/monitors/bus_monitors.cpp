@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "model/motion/bus_monitors.hpp"
+#include "tb/monitors/bus_monitors.hpp"
 
 #include <string>
 

@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "engines/core_driver.hpp"
-#include "engines/sc_sampler.hpp"
 #include "model/systemc/dda_core.hpp"
+#include "tb/engines/core_driver.hpp"
+#include "tb/engines/sc_sampler.hpp"
 
 namespace dda::sc {
 
