@@ -27,15 +27,15 @@
 #include <string>
 #include <vector>
 
-#include "cli/arc_options.hpp"
-#include "cli/blocks_cmd.hpp"
-#include "cli/engines.hpp"
+#include "cli/blocks/blocks_cmd.hpp"
 #include "cli/gen_params_cmd.hpp"
-#include "cli/output.hpp"
+#include "cli/options/arc_options.hpp"
+#include "cli/options/engines.hpp"
+#include "cli/options/output.hpp"
+#include "cli/options/program_cmd.hpp"
+#include "cli/options/temp_files.hpp"
 #include "cli/pace_cmd.hpp"
-#include "cli/program_cmd.hpp"
 #include "cli/speed_cmd.hpp"
-#include "cli/temp_files.hpp"
 #include "cli/vectors.hpp"
 #include "cli/vectors_cmd.hpp"
 #include "host/accuracy/golden.hpp"

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "cli/arc_options.hpp"
-#include "cli/output.hpp"
+#include "cli/options/arc_options.hpp"
+#include "cli/options/output.hpp"
 #include "cli/vectors.hpp"
 #include "model/datapath/hw_command.hpp"
 #include "model/motion/motion_map.hpp"

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 
-#include "cli/output.hpp"
+#include "cli/options/output.hpp"
 #include "host/report/speed_report.hpp"
 #include "host/speed/pace_plan.hpp"
 #include "tb/measure/pace_report.hpp"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "cli/arc_options.hpp"
+#include "cli/options/arc_options.hpp"
 #include "host/speed/machine_limits.hpp"
 
 namespace CLI {

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "cli/temp_files.hpp"
+#include "cli/options/temp_files.hpp"
 #include "model/datapath/errors.hpp"
 
 namespace dda::vec {

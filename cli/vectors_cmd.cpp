@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <utility>
 
-#include "cli/output.hpp"
+#include "cli/options/output.hpp"
 #include "host/speed/pace_plan.hpp"
 #include "model/datapath/hw_command.hpp"
 

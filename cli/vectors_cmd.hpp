@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/arc_options.hpp"
+#include "cli/options/arc_options.hpp"
 #include "cli/speed_cmd.hpp"
 #include "cli/vectors.hpp"
 

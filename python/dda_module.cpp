@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/arc_options.hpp"
-#include "cli/program_cmd.hpp"
+#include "cli/options/arc_options.hpp"
+#include "cli/options/program_cmd.hpp"
 #include "host/pipeline/pipeline.hpp"
 #include "host/program/program.hpp"
 #include "host/report/report.hpp"

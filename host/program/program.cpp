@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The program reader's entry points (program.hpp): a text or a stream through the
-// interpreter (program_reader.hpp), and the files it reads, standard input through a
+// interpreter (reader.hpp), and the files it reads, standard input through a
 // temporary file.
 #include "host/program/program.hpp"
 
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "host/program/program_reader.hpp"
+#include "host/program/reader.hpp"
 
 namespace dda::program {
 

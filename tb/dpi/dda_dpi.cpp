@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/arc_options.hpp"
+#include "cli/options/arc_options.hpp"
 #include "host/runner/runner.hpp"
 #include "model/datapath/core_model.hpp"
 #include "model/datapath/hw_command.hpp"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lines of a program in a seekable stream, one at a time (program_detail.hpp): read
-// raw, or parsed in the program's dialect (program_grammar.cpp).
+// The lines of a program in a seekable stream, one at a time (grammar/line.hpp): read
+// raw, or parsed in the program's dialect (grammar/grammar.cpp).
 #include <cctype>
 #include <string>
 
-#include "host/program/program_detail.hpp"
+#include "host/program/grammar/line.hpp"
 
 namespace dda::program::detail {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // `--program FILE`: the options of a part program's run.
-#include "cli/program_cmd.hpp"
+#include "cli/options/program_cmd.hpp"
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <utility>
 
-#include "cli/arc_options.hpp"
+#include "cli/options/arc_options.hpp"
 #include "host/program/program.hpp"
 
 namespace dda::cli {

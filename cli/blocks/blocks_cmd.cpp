@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda blocks: each motion block as the reader gives it, streamed (one row per block).
-#include "cli/blocks_cmd.hpp"
+#include "cli/blocks/blocks_cmd.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "cli/output.hpp"
+#include "cli/options/output.hpp"
 #include "host/program/program.hpp"
 
 namespace dda::cli {

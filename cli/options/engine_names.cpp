@@ -3,7 +3,7 @@
 // without the SystemC model and the RTL.
 #include <string>
 
-#include "cli/engines.hpp"
+#include "cli/options/engines.hpp"
 
 namespace dda::cli {
 

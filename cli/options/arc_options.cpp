@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The options every arc command shares, and how they become a plan (arc_options.hpp).
-#include "cli/arc_options.hpp"
+#include "cli/options/arc_options.hpp"
 
 #include <CLI/CLI.hpp>
 #include <charconv>
@@ -8,7 +8,7 @@
 #include <limits>
 #include <utility>
 
-#include "cli/engines.hpp"
+#include "cli/options/engines.hpp"
 #include "host/geometry/fixed_trig.hpp"
 
 namespace dda::cli {

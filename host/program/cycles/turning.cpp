@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// LinuxCNC's lathe turning cycles (program_turning.hpp): the contour's geometry and the
+// LinuxCNC's lathe turning cycles (cycles/turning.hpp): the contour's geometry and the
 // passes. The profile is brought to one orientation (turned a quarter for facing,
 // mirrored so that X and Z fall along it), its corners finished, worked there, and every
 // pass mapped back.
 // Where LinuxCNC's cycle would loop for ever or read outside its list, this one stops
 // with a CycleError.
-#include "host/program/program_turning.hpp"
+#include "host/program/cycles/turning.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/temp_files.hpp"
+#include "cli/options/temp_files.hpp"
 
 #include <signal.h>
 #include <sys/stat.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside the program reader: the macro language's state and the programs' structure
-// (program_macro.cpp; docs/programs.md, "Macros").
+// (macro/macro.cpp; docs/programs.md, "Macros").
 #pragma once
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 
 #include "host/program/program.hpp"
 
-#include "host/program/program_detail.hpp"
+#include "host/program/grammar/line.hpp"
 
 namespace dda::program::detail {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "cli/program_cmd.hpp"
+#include "cli/options/program_cmd.hpp"
 
 namespace CLI {
 class App;

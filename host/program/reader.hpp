@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside the program reader: the interpreter of a program's lines (docs/programs.md). Its
-// parts: the flow (program_flow.cpp: the passes, HNC's statements and calls, LinuxCNC's
-// O-words), a block's words and modal state (program_block.cpp: G and M codes, the
-// offsets) and its motion (program_motion.cpp: lines, arcs and ellipses on the plane).
+// parts: the flow (macro/flow.cpp: the passes, HNC's statements and calls, LinuxCNC's
+// O-words), a block's words and modal state (modal/block.cpp: G and M codes, the
+// offsets) and its motion (modal/motion.cpp: lines, arcs and ellipses on the plane).
 #pragma once
 
 #include <array>
@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "host/program/cycles/turning.hpp"
+#include "host/program/grammar/line.hpp"
+#include "host/program/macro/macro.hpp"
 #include "host/program/program.hpp"
-#include "host/program/program_detail.hpp"
-#include "host/program/program_macro.hpp"
-#include "host/program/program_turning.hpp"
 
 namespace dda::program::detail {
 
@@ -110,7 +110,7 @@ class Reader {
   std::int64_t integer(const Word& w) const;
   void ignore(const Word& w);
 
-  // Flow (program_flow.cpp).
+  // Flow (macro/flow.cpp).
   Dialect detect();
   struct Call {
     std::int64_t program = 0, repeats = 1;
@@ -124,7 +124,7 @@ class Reader {
   void o_call(const Line& l, int depth);
   void run_sub(const std::string& name, const std::vector<double>& args, const SourcePos& at, int depth);
 
-  // Blocks (program_block.cpp).
+  // Blocks (modal/block.cpp).
   void block(const Line& l);
   void sort_word(const Word& w, Block& b);
   void g_code(const Word& w, Block& b);
@@ -152,7 +152,7 @@ class Reader {
   std::pair<double, double> turn(double x, double y, double sign) const;
   Axes word_axes(const Block& b, bool machine, Axes base) const;
 
-  // Motion (program_motion.cpp).
+  // Motion (modal/motion.cpp).
   void fix_lattice();
   void motion(const Block& b, const SourcePos& where, bool machine);
   void emit(Move& mv, const Axes& to);
@@ -163,7 +163,7 @@ class Reader {
   void arc_by_radius(Move& mv, const Word& r, const SourcePos& where);
   void ellipse(Move& mv, const Block& b, const SourcePos& where);
 
-  // LinuxCNC's lathe turning cycles G70-G72 (program_cycles.cpp): the contour is read by
+  // LinuxCNC's lathe turning cycles G70-G72 (cycles/lathe.cpp): the contour is read by
   // running its subroutine with each words line captured (contour_line) instead of run.
   struct Contour {
     std::list<turning::Segment> segs;
@@ -176,7 +176,7 @@ class Reader {
   void contour_segment(Contour& c, const std::map<char, double>& v, turning::Pt end, const SourcePos& where);
   void turning_pass(const Block& cycle, const SourcePos& where, const turning::Pass& p);
 
-  // LinuxCNC's drilling cycles (program_drill.cpp): a hole's coordinates in the plane in
+  // LinuxCNC's drilling cycles (cycles/drill.cpp): a hole's coordinates in the plane in
   // force (u, v) and along its normal: the retract plane R, the bottom and the level
   // each hole retracts to.
   struct Hole {

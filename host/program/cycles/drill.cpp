@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "host/program/program_reader.hpp"
+#include "host/program/reader.hpp"
 
 namespace dda::program::detail {
 

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-#include "host/program/program_reader.hpp"
+#include "host/program/reader.hpp"
 
 namespace dda::program::detail {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/program_cmd.hpp"
+#include "cli/options/program_cmd.hpp"
 #include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "host/geometry/fixed_trig.hpp"
-#include "host/program/program_reader.hpp"
+#include "host/program/reader.hpp"
 
 namespace dda::program::detail {
 

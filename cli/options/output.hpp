@@ -13,7 +13,7 @@
 #include <ostream>
 #include <string>
 
-#include "cli/temp_files.hpp"
+#include "cli/options/temp_files.hpp"
 #include "model/datapath/errors.hpp"
 
 namespace dda::cli {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A part program line parsed (program_rules.hpp): the actions that collect its words,
+// A part program line parsed (grammar/rules.hpp): the actions that collect its words,
 // parameter settings and statement, and build each expression's tree with the
 // dialect's precedence (docs/programs.md, "Dialects"); the messages of the rules that
 // must match.
@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "host/program/program_actions.hpp"
-#include "host/program/program_detail.hpp"
-#include "host/program/program_rules.hpp"
+#include "host/program/grammar/actions.hpp"
+#include "host/program/grammar/line.hpp"
+#include "host/program/grammar/rules.hpp"
 
 namespace dda::program::detail {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Inside the program reader's grammar (program_rules.hpp): the state a line's parse
+// Inside the program reader's grammar (grammar/rules.hpp): the state a line's parse
 // fills in and the actions that fill it (its words, parameter settings, statement and
 // expression trees, built with the dialect's precedence). Included by
-// program_grammar.cpp only, where the parse runs.
+// grammar/grammar.cpp only, where the parse runs.
 #pragma once
 
 #include <cctype>
@@ -10,12 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "host/program/program_detail.hpp"
-#include "host/program/program_rules.hpp"
+#include "host/program/grammar/line.hpp"
+#include "host/program/grammar/rules.hpp"
 
 namespace dda::program::detail::rules {
 
-// The binary operators' precedence in the dialect (program_grammar.cpp): higher binds
+// The binary operators' precedence in the dialect (grammar/grammar.cpp): higher binds
 // tighter.
 int precedence(Dialect d, Op op);
 
