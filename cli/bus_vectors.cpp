@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda vectors --bus (docs/vectors.md, "Bus-level sets"): per-cycle vectors of the motion
-// block, from its reference model (dda/motion_model.hpp) driven over the Wishbone bus by
+// block, from its reference model (model/motion/motion_model.hpp) driven over the Wishbone bus by
 // the firmware driver of host/driver/motion_driver.hpp: Wishbone cycles in; acknowledge, read data,
 // steps, directions, interrupt, positions and queue level out.
 #include <fmt/format.h>

@@ -28,9 +28,9 @@
 #include <vector>
 
 #include "cli/blocks/blocks_cmd.hpp"
+#include "cli/engines.hpp"
 #include "cli/gen_params_cmd.hpp"
 #include "cli/options/arc_options.hpp"
-#include "cli/options/engines.hpp"
 #include "cli/options/output.hpp"
 #include "cli/options/program_cmd.hpp"
 #include "cli/options/temp_files.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/options/engines.hpp"
+#include "cli/engines.hpp"
 
 #include <iterator>
 #include <utility>

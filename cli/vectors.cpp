@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // dda vectors (docs/vectors.md): the files of a vector set, from the cycle-level
-// reference model (dda/core_model.hpp) running the planner's commands.
+// reference model (model/datapath/core_model.hpp) running the planner's commands.
 #include "cli/vectors.hpp"
 
 #include "cli/vector_set.hpp"

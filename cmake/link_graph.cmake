@@ -1,11 +1,13 @@
 # SPDX-License-Identifier: Apache-2.0
 # dda_write_link_graph(FILE): every target the project defines, one line each:
-#   NAME <tab> TYPE <tab> HOME <tab> MARK <tab> DEP;DEP;...
+#   NAME <tab> TYPE <tab> HOME <tab> MARK <tab> DEP;DEP;... <tab> SOURCE;SOURCE;...
 # HOME is the first folder of the directory that defines it (model, host, tb, cli, tests,
-# bench, python), MARK the target's DDA_LINKS_TEST_BENCH property (empty if not set), DEP
-# its direct links (LINK_LIBRARIES and INTERFACE_LINK_LIBRARIES; imported and system
-# libraries included, $<LINK_ONLY:...> unwrapped). tests/check-layout.py reads it and
-# checks the direction the homes link in.
+# bench, python; "." for the top), MARK the target's DDA_LINKS_TEST_BENCH property (empty
+# if not set), DEP its direct links (LINK_LIBRARIES and INTERFACE_LINK_LIBRARIES; imported
+# and system libraries included, $<LINK_ONLY:...> unwrapped, any other generator
+# expression written as it is, which the checker refuses), SOURCE its sources of the
+# source tree, from its root (generated ones left out). tests/check-layout.py reads it
+# and checks the direction the homes link in.
 function(_dda_collect_targets dir out)
   get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
   get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
@@ -32,11 +34,22 @@ function(dda_write_link_graph file)
       set(mark "")
     endif()
     set(deps "")
+    set(sources "")
     if(NOT type STREQUAL "INTERFACE_LIBRARY")
       get_target_property(l ${t} LINK_LIBRARIES)
       if(l)
         list(APPEND deps ${l})
       endif()
+      get_target_property(srcs ${t} SOURCES)
+      foreach(s IN LISTS srcs)
+        if(NOT IS_ABSOLUTE "${s}")
+          set(s "${src}/${s}")
+        endif()
+        file(RELATIVE_PATH r ${PROJECT_SOURCE_DIR} ${s})
+        if(EXISTS "${s}" AND NOT r MATCHES "^\\.\\./" AND NOT s MATCHES "^${PROJECT_BINARY_DIR}/")
+          list(APPEND sources ${r})
+        endif()
+      endforeach()
     endif()
     get_target_property(il ${t} INTERFACE_LINK_LIBRARIES)
     if(il)
@@ -45,10 +58,7 @@ function(dda_write_link_graph file)
     list(TRANSFORM deps REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1")
     list(REMOVE_DUPLICATES deps)
     string(REPLACE "\t" " " mark "${mark}")
-    string(APPEND text "${t}\t${type}\t${home}\t${mark}\t${deps}\n")
+    string(APPEND text "${t}\t${type}\t${home}\t${mark}\t${deps}\t${sources}\n")
   endforeach()
-  file(WRITE ${file}.new "${text}")
-  # Rewritten only when it changes, so that reconfiguring does not touch it.
-  file(COPY_FILE ${file}.new ${file} ONLY_IF_DIFFERENT)
-  file(REMOVE ${file}.new)
+  file(WRITE ${file} "${text}")
 endfunction()

@@ -8,13 +8,21 @@ and the size of the source folders (docs/design.md, "Where to change what").
 
 The homes: model/ (what the hardware does), host/ (what runs on the host), tb/ (what only
 tests and measurements use), and cli/ (the dda command).
-  - A library of model/ links (and includes) nothing of host/, tb/ or cli/.
-  - A library of host/ links (and includes) nothing of tb/ or cli/.
-  - A target of cli/ reaches tb/ only through a library marked DDA_LINKS_TEST_BENCH (the
-    subcommands that run engines and scenarios); the sources of cli/'s other folders
-    include nothing of tb/.
+  - A target of model/ links nothing of host/, tb/ or cli/, a target of host/ nothing of
+    tb/ or cli/, through any chain of links; and their sources are their home's.
+  - Of the dda command, only libraries marked DDA_LINKS_TEST_BENCH link tb/, and only a
+    library whose sources are all in cli/ itself may carry the mark (the subcommands that
+    run engines and scenarios). Any other library of cli/ reaches neither tb/ nor a marked
+    library; the command's executable reaches tb/ only through a marked library.
+  - Includes, followed from header to header: a source of model/ reaches only model/
+    headers, one of host/ only model/ and host/ ones, one of a subfolder of cli/ (its
+    options, the subcommands that run no engine) no tb/ header and no header of cli/
+    itself (which is the marked library's).
   - No folder of C++ sources outside tests/ holds more than 12 .cpp files; the SystemC
     model (model/systemc/, a file per RTL module) holds no more than rtl/ has modules.
+  - Every link to a name of the project's (dda_*) is to a target CMake defines (CMake
+    would take any other name for a system library and fail only when linking), and no
+    link is a generator expression the graph cannot follow.
 The graph is the one CMake writes at configure time (cmake/link_graph.cmake). --plant adds
 a link FROM -> TO to it, --plant-include an include of HEADER to FILE's text, before the
 checks: a planted violation must fail (the tests "layout.planted_*").
@@ -27,7 +35,7 @@ import subprocess
 import sys
 
 HOMES = ("model", "host", "tb", "cli")
-# What each home may link and include.
+# What the libraries of each home may link.
 ALLOWED = {"model": {"model"}, "host": {"model", "host"}}
 MAX_CPP = 12
 
@@ -37,10 +45,11 @@ def read_graph(path):
     with open(path) as f:
         for line in f:
             parts = line.rstrip("\n").split("\t")
-            if len(parts) != 5:
-                raise SystemExit(f"check-layout: {path}: a line is not NAME TYPE HOME MARK DEPS: {line!r}")
-            name, kind, home, mark, deps = parts
-            graph[name] = {"kind": kind, "home": home, "mark": mark, "deps": [d for d in deps.split(";") if d]}
+            if len(parts) != 6:
+                raise SystemExit(f"check-layout: {path}: a line is not NAME TYPE HOME MARK DEPS SOURCES: {line!r}")
+            name, kind, home, mark, deps, srcs = parts
+            graph[name] = {"kind": kind, "home": home, "mark": mark, "deps": [d for d in deps.split(";") if d],
+                           "sources": [s for s in srcs.split(";") if s]}
     return graph
 
 
@@ -62,62 +71,132 @@ def path_to(graph, start, bad, stop=lambda n: False):
     return None
 
 
+def through(chain):
+    return f" (through {' -> '.join(chain[1:-1])})" if len(chain) > 2 else ""
+
+
 def check_links(graph):
     errors = []
     for name in sorted(graph):
         t = graph[name]
         home = t["home"]
+        for dep in t["deps"]:
+            if dep.startswith("dda_") and dep not in graph:
+                errors.append(f"{name} links {dep}, which no CMake target of the project defines")
+            if "$<" in dep:
+                errors.append(f"{name} links {dep}: a generator expression the layout check cannot follow")
         if home in ALLOWED:
             chain = path_to(graph, name, lambda d: graph[d]["home"] not in ALLOWED[home])
             if chain:
                 to = chain[-1]
-                errors.append(f"{home} library {name} links {graph[to]['home']} library {to}"
-                              + (f" (through {' -> '.join(chain[1:-1])})" if len(chain) > 2 else "")
-                              + f": {home}/ links only {' and '.join(sorted(ALLOWED[home]))}/")
-        elif home == "cli" and not t["mark"]:
-            chain = path_to(graph, name, lambda d: graph[d]["home"] == "tb", stop=lambda d: bool(graph[d]["mark"]))
-            if chain:
-                errors.append(f"cli target {name} links tb library {chain[-1]} (through {' -> '.join(chain)}): "
-                              "only a library marked DDA_LINKS_TEST_BENCH may (cli/CMakeLists.txt)")
+                errors.append(f"{home} library {name} links {graph[to]['home']} library {to}{through(chain)}: "
+                              f"{home}/ links only {' and '.join(sorted(ALLOWED[home]))}/")
+            for s in t["sources"]:
+                if s.split("/")[0] != home:
+                    errors.append(f"{home} library {name} compiles {s}: its sources are {home}/'s")
+        elif home == "cli":
+            if t["mark"]:
+                stray = [s for s in t["sources"] if os.path.dirname(s) != "cli"]
+                if stray:
+                    errors.append(f"cli library {name} is marked DDA_LINKS_TEST_BENCH but compiles {stray[0]}: "
+                                  "only cli/'s own sources run engines and scenarios")
+            elif t["kind"] == "EXECUTABLE":
+                chain = path_to(graph, name, lambda d: graph[d]["home"] == "tb", stop=lambda d: bool(graph[d]["mark"]))
+                if chain:
+                    errors.append(f"cli target {name} links tb library {chain[-1]}{through(chain)}: "
+                                  "only a library marked DDA_LINKS_TEST_BENCH may (cli/CMakeLists.txt)")
+            else:
+                chain = path_to(graph, name, lambda d: graph[d]["home"] == "tb" or bool(graph[d]["mark"]))
+                if chain:
+                    to = chain[-1]
+                    what = f"tb library {to}" if graph[to]["home"] == "tb" else f"the marked library {to}"
+                    errors.append(f"cli target {name} links {what}{through(chain)}: only a library marked "
+                                  "DDA_LINKS_TEST_BENCH may reach the test bench (cli/CMakeLists.txt)")
     return errors
 
 
 def sources(root):
     out = subprocess.run(["git", "-C", root, "ls-files", "-co", "--exclude-standard"], capture_output=True, text=True)
-    if out.returncode != 0:
-        files = []
-        for d, _, names in os.walk(root):
-            if "/.git" in d or "/build" in d:
-                continue
-            files += [os.path.relpath(os.path.join(d, n), root) for n in names]
-        return sorted(files)
-    return sorted(f for f in out.stdout.split("\n") if f and os.path.exists(os.path.join(root, f)))
+    if out.returncode == 0:
+        return sorted(f for f in out.stdout.split("\n") if f and os.path.isfile(os.path.join(root, f)))
+    files = []
+    for d, dirs, names in os.walk(root):
+        rel = os.path.relpath(d, root)
+        if rel == ".":
+            dirs[:] = [x for x in dirs if x != ".git" and not x.startswith("build")]
+        files += [os.path.normpath(os.path.join(rel, n)) for n in names]
+    return sorted(files)
 
 
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s*["<]([^">]+)[">]', re.M)
+CXX = (".cpp", ".hpp", ".h")
+
+
+def includes_of(root, files, planted):
+    """Each C++ file's includes of the tree's own files (as paths from the root: the
+    project's one include directory; or beside the including file)."""
+    known = set(files)
+    inc = {}
+    for f in files:
+        if not f.endswith(CXX):
+            continue
+        with open(os.path.join(root, f), errors="replace") as fh:
+            text = fh.read()
+        text += "".join(f'\n#include "{h}"\n' for pf, h in planted if pf == f)
+        found = []
+        for m in INCLUDE.finditer(text):
+            name = m.group(1)
+            beside = os.path.normpath(os.path.join(os.path.dirname(f), name))
+            if name in known or name.split("/")[0] in HOMES:
+                found.append(name)
+            elif beside in known:
+                found.append(beside)
+        inc[f] = found
+    return inc
+
+
+def forbidden(f):
+    """What a source may not reach by includes, and the rule's words; None if unchecked."""
+    parts = f.split("/")
+    if parts[0] == "model":
+        return lambda h: h.split("/")[0] in ("host", "tb", "cli"), "model/ includes only model/"
+    if parts[0] == "host":
+        return lambda h: h.split("/")[0] in ("tb", "cli"), "host/ includes only model/ and host/"
+    if parts[0] == "cli" and len(parts) > 2:
+        return (lambda h: h.split("/")[0] == "tb" or (h.startswith("cli/") and h.count("/") == 1),
+                f"cli/{parts[1]}/ includes neither tb/ nor cli/'s own headers (the marked library's)")
+    return None
 
 
 def check_includes(root, files, planted):
     errors = []
-    for f in files:
-        if not f.endswith((".cpp", ".hpp", ".h")):
+    inc = includes_of(root, files, planted)
+    for f in sorted(inc):
+        rule = forbidden(f)
+        if rule is None:
             continue
-        home = f.split("/")[0]
-        if home not in ALLOWED and not (home == "cli" and f.split("/")[1] in ("options", "blocks")):
-            continue
-        allowed = ALLOWED.get(home, {"model", "host", "cli"})
-        with open(os.path.join(root, f), errors="replace") as fh:
-            text = fh.read()
-        text += "".join(f'\n#include "{h}"\n' for pf, h in planted if pf == f)
-        for m in INCLUDE.finditer(text):
-            first = m.group(1).split("/")[0]
-            if first in HOMES and first not in allowed:
-                errors.append(f"{f} includes {m.group(1)}: {'/'.join(f.split('/')[:2])}/ includes only "
-                              + " and ".join(sorted(allowed)) + "/")
+        bad, words = rule
+        seen = {f}
+        todo = [[f]]
+        while todo:
+            chain = todo.pop(0)
+            hit = None
+            for h in inc.get(chain[-1], []):
+                if h in seen:
+                    continue
+                seen.add(h)
+                if bad(h):
+                    hit = chain + [h]
+                    break
+                todo.append(chain + [h])
+            if hit:
+                via = f" (through {' -> '.join(hit[1:-1])})" if len(hit) > 2 else ""
+                errors.append(f"{f} includes {hit[-1]}{via}: {words}")
+                break
     return errors
 
 
-def check_sizes(root, files):
+def check_sizes(files):
     errors = []
     per_dir = {}
     for f in files:
@@ -153,7 +232,11 @@ def main():
         return 2
     root = os.path.abspath(a.root)
     files = sources(root)
-    errors = check_links(graph) + check_includes(root, files, a.plant_include) + check_sizes(root, files)
+    for f, _ in a.plant_include:
+        if f not in files:
+            print(f"check-layout: --plant-include {f}: no such file in the tree", file=sys.stderr)
+            return 2
+    errors = check_links(graph) + check_includes(root, files, a.plant_include) + check_sizes(files)
     for e in errors:
         print("check-layout: " + e, file=sys.stderr)
     if errors:

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The cycle-level reference model (dda/core_model.hpp) against the golden runner: fed a
+// The cycle-level reference model (model/datapath/core_model.hpp) against the golden runner: fed a
 // plan's commands back to back, it makes the runner's iterations, and its control
 // follows docs/design.md (load on the finishing edge, idle after the last piece).
 #include <catch2/catch.hpp>

@@ -8,7 +8,7 @@
 #include <limits>
 #include <utility>
 
-#include "cli/options/engines.hpp"
+#include "cli/options/engine_names.hpp"
 #include "host/geometry/fixed_trig.hpp"
 
 namespace dda::cli {

@@ -3,7 +3,7 @@
 // without the SystemC model and the RTL.
 #include <string>
 
-#include "cli/options/engines.hpp"
+#include "cli/options/engine_names.hpp"
 
 namespace dda::cli {
 

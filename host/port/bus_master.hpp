@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Bus masters of the motion block: one register access at a time as Wishbone classic or
 // pipelined cycles, or AXI4-Lite or SPI frames through a bridge, with random idle
-// cycles, on any BusTarget (motion/bus_target.hpp).
+// cycles, on any BusTarget (model/motion/bus_target.hpp).
 #pragma once
 
 #include <cstdint>

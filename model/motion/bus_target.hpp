@@ -69,7 +69,7 @@ class HeldInputs : public BusTarget {
 };
 
 // The reference model alone, on its Wishbone bus or behind a bridge (the bridge's
-// reference model, motion/bridges.hpp); `on_edge` sees every edge's bus inputs as the
+// reference model, model/motion/bridges.hpp); `on_edge` sees every edge's bus inputs as the
 // host drove them, the inputs as the block took them, and the outputs and state after it.
 class ModelTarget : public HeldInputs {
  public:

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pacer's units and widths (docs/design.md, "Pacer"): the one definition the
-// reference model (motion/pacer.hpp) and the SystemC model (systemc/dda_pace.hpp) read;
+// reference model (model/motion/pacer.hpp) and the SystemC model (model/systemc/dda_pace.hpp) read;
 // rtl/dda_pace.v takes them as parameters whose defaults tests/test_pace.cpp checks by
 // running it beside the reference.
 #pragma once

@@ -19,7 +19,7 @@ SC_MODULE(dda_pace) {
   sc_core::sc_out<std::uint64_t> speed_o;
 
   SC_HAS_PROCESS(dda_pace);
-  // aw: the integrands' width (the RTL's AW); the other widths are motion/pacer.hpp's.
+  // aw: the integrands' width (the RTL's AW); the other widths are model/motion/pacer.hpp's.
   dda_pace(sc_core::sc_module_name name, int aw);
 
   // The registers (names as in the RTL); d is the norm unit's.

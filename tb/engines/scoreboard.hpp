@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Checks a running core (SystemC model or RTL) against the cycle-level reference model
-// (dda/core_model.hpp), edge by edge: the harness reports the inputs of every edge and
+// (model/datapath/core_model.hpp), edge by edge: the harness reports the inputs of every edge and
 // the signals sampled after it; every signal of the register table and cmd_ready_o are
 // compared. The checker is fed by the harness (a monitor), never by the driver.
 #pragma once

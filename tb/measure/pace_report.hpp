@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A plan run through the pacer's reference model (motion/pacer.hpp) on the golden
+// A plan run through the pacer's reference model (model/motion/pacer.hpp) on the golden
 // datapath, clock by clock, as the driver plans it: every piece at the feed, exit speeds
 // from a backward pass over the arc's pieces (the minimum speed at the end), the
 // lengths and braking distances the pacer needs. What it measures: the path speed at

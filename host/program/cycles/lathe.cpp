@@ -3,7 +3,7 @@
 // cycles"), as Debian's LinuxCNC runs them: a rapid to the block's X and Z; the contour
 // read by calling its subroutine, whose flow and parameters run as usual while each
 // words line adds a segment (its motion words only) instead of moving; then every pass
-// (cycles/turning.cpp) run as an ordinary block in absolute program coordinates.
+// (host/program/cycles/turning.cpp) run as an ordinary block in absolute program coordinates.
 #include <fmt/format.h>
 
 #include <cmath>

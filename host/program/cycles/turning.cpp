@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// LinuxCNC's lathe turning cycles (cycles/turning.hpp): the contour's geometry and the
+// LinuxCNC's lathe turning cycles (host/program/cycles/turning.hpp): the contour's geometry and the
 // passes. The profile is brought to one orientation (turned a quarter for facing,
 // mirrored so that X and Z fall along it), its corners finished, worked there, and every
 // pass mapped back.

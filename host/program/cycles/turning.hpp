@@ -63,7 +63,7 @@ void finish(std::list<Segment> contour, const CycleWords& words, const Sink& out
 // pockets only.
 void rough(std::list<Segment> contour, const CycleWords& words, int variant, bool face, const Sink& out);
 
-// ---- one segment (cycles/turning_segment.cpp) ----
+// ---- one segment (host/program/cycles/turning_segment.cpp) ----
 
 inline const Pt kI(0, 1);
 inline constexpr double kTol = 1e-6;  // LinuxCNC's: points this close are one

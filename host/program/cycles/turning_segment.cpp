@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// One segment of a turning cycle's contour (cycles/turning.hpp): where it crosses a
+// One segment of a turning cycle's contour (host/program/cycles/turning.hpp): where it crosses a
 // depth, how a pass follows it down or up, its offset, and the joins and corner
 // finishes between neighbours, with LinuxCNC's tolerances.
 #include <algorithm>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Inside the program reader's grammar (grammar/rules.hpp): the state a line's parse
+// Inside the program reader's grammar (host/program/grammar/rules.hpp): the state a line's parse
 // fills in and the actions that fill it (its words, parameter settings, statement and
 // expression trees, built with the dialect's precedence). Included by
-// grammar/grammar.cpp only, where the parse runs.
+// host/program/grammar/grammar.cpp only, where the parse runs.
 #pragma once
 
 #include <cctype>
@@ -15,7 +15,7 @@
 
 namespace dda::program::detail::rules {
 
-// The binary operators' precedence in the dialect (grammar/grammar.cpp): higher binds
+// The binary operators' precedence in the dialect (host/program/grammar/grammar.cpp): higher binds
 // tighter.
 int precedence(Dialect d, Op op);
 

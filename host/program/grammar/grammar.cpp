@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A part program line parsed (grammar/rules.hpp): the actions that collect its words,
+// A part program line parsed (host/program/grammar/rules.hpp): the actions that collect its words,
 // parameter settings and statement, and build each expression's tree with the
 // dialect's precedence (docs/programs.md, "Dialects"); the messages of the rules that
 // must match.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside the program reader: the lines of a stream, one at a time, and the words, macro
-// statements and expressions of each (grammar/grammar.cpp, PEGTL) that the interpreter
-// (program.cpp, macro/macro.cpp) turns into motion blocks.
+// statements and expressions of each (host/program/grammar/grammar.cpp, PEGTL) that the interpreter
+// (program.cpp, host/program/macro/macro.cpp) turns into motion blocks.
 #pragma once
 
 #include <cstdint>
@@ -133,7 +133,7 @@ struct Line {
   SourcePos stmt_pos;
 };
 
-// One line's text parsed in the dialect (grammar/grammar.cpp); throws ProgramError.
+// One line's text parsed in the dialect (host/program/grammar/grammar.cpp); throws ProgramError.
 Line parse_line(std::string_view raw, std::size_t number, const std::string& file, Dialect dialect);
 
 // Lines longer than this are refused (RS274 allows 256 characters).

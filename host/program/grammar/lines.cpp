@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lines of a program in a seekable stream, one at a time (grammar/line.hpp): read
-// raw, or parsed in the program's dialect (grammar/grammar.cpp).
+// The lines of a program in a seekable stream, one at a time (host/program/grammar/line.hpp): read
+// raw, or parsed in the program's dialect (host/program/grammar/grammar.cpp).
 #include <cctype>
 #include <string>
 

@@ -7,7 +7,7 @@
 // macro statements (#n = expression, WHILE, ENDW, IF, ELSE, ENDIF), LinuxCNC's O-words
 // (o100 sub, o<name> call [1] [2], o101 while [..] ...), Fanuc's program number 'O1234'.
 // A '/' first deletes the block when the switch is on. Expressions are read flat, an
-// operand and an operator at a time; the actions (grammar/grammar.cpp) build the tree
+// operand and an operator at a time; the actions (host/program/grammar/grammar.cpp) build the tree
 // with the dialect's precedence.
 #pragma once
 
@@ -19,7 +19,7 @@ namespace dda::program::detail::rules {
 
 namespace pg = tao::pegtl;
 
-// The state a line's parse fills in (grammar/grammar.cpp); the rules read its dialect.
+// The state a line's parse fills in (host/program/grammar/grammar.cpp); the rules read its dialect.
 struct ParseState;
 bool dialect_is(const ParseState& s, Dialect d);
 

@@ -2,7 +2,7 @@
 // The macro language of the program reader (docs/programs.md, "Macros" and "Dialects"):
 // variables (numbered, LinuxCNC's named ones and its calls' own #1-#30), expressions in
 // IEEE double with the deterministic sines (det_math.hpp) in the dialect's angle unit.
-// The programs' structure is macro/structure.cpp's.
+// The programs' structure is host/program/macro/structure.cpp's.
 #include "host/program/macro/macro.hpp"
 
 #include <fmt/format.h>

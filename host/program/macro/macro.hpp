@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside the program reader: the macro language's state and the programs' structure
-// (macro/macro.cpp; docs/programs.md, "Macros").
+// (host/program/macro/macro.cpp; docs/programs.md, "Macros").
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The programs' structure (macro/macro.hpp), read in the reader's first pass: the
+// The programs' structure (host/program/macro/macro.hpp), read in the reader's first pass: the
 // programs of a file (HNC's '%N', Fanuc's 'O1234', LinuxCNC's '%' text), HNC's
 // WHILE/ENDW and IF/ELSE/ENDIF and LinuxCNC's O-words matched, kept as the offsets of
 // the lines that steer the run.

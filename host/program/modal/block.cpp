@@ -259,7 +259,7 @@ void Reader::g_refused(int g, const Word& w) const {
     case 820:
     case 830:
     case 850:
-    case 890:  // (LinuxCNC's, on a mill, are read: cycles/drill.cpp)
+    case 890:  // (LinuxCNC's, on a mill, are read: host/program/cycles/drill.cpp)
       fail(w.pos, name(w) + (opt_.machine == Machine::Lathe
                                  ? ": canned cycles drill along the axis normal to the plane, which a lathe (G18) "
                                    "lacks: they are not supported on a lathe"
@@ -277,7 +277,7 @@ void Reader::g_refused(int g, const Word& w) const {
     case 712:
     case 720:
     case 721:
-    case 722:  // (LinuxCNC's are read: cycles/lathe.cpp)
+    case 722:  // (LinuxCNC's are read: host/program/cycles/lathe.cpp)
       fail(w.pos, name(w) +
                       ": lathe turning cycles in HNC's and Fanuc's form (G71 U R, G71 P Q U W) are not supported: "
                       "program the passes (LinuxCNC's G70-G72 are read in --dialect linuxcnc)");
