@@ -12,6 +12,7 @@
 
 #include "cli/vectors.hpp"
 #include "host/driver/motion_driver.hpp"
+#include "host/speed/pace_plan.hpp"
 #include "model/datapath/errors.hpp"
 
 namespace dda::vec {
@@ -85,6 +86,7 @@ std::vector<motion::PaceEntry> bus_pace_entries(const std::vector<Plan>& plans, 
   for (const auto& p : plans)
     for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
   const PaceOptions& o = b.pace;
+  speed::check_feed(cmds, o.feed, o.clock_hz, o.accel, o.vmin);
   return motion::pace_entries(cmds, speed_field(o.feed, o.clock_hz), speed_field(o.vmin, o.clock_hz),
                               accel_field(o.accel, o.clock_hz));
 }

@@ -225,6 +225,7 @@ void run_feed(const Cli& c, int, char**) {
   const PaceOptions po = paced ? pace_options(f.pace) : PaceOptions{};
   if (paced && format == 1 && f.summary) throw InputError("--summary is a markdown row: not with --format csv");
   const Plan plan = make_plan(fd);
+  if (paced) check_followable(plan, po);
   Output out(fd.out);
   if (!paced) {
     write_feed_report(out.stream(), plan, f.summary, f.label);
@@ -276,6 +277,7 @@ void run_speed_plot(const Cli& c, const std::string& title) {
     throw InputError("--speed and --out name the same file '" + pl.out + "': the two pictures need two files");
   const PaceOptions po = pace_options(c.plot_pace);
   const Plan plan = make_plan(pl);
+  check_followable(plan, po);
   Output out(c.plot_speed);
   write_speed_svg(out.stream(), plan, po, title);
   out.commit();

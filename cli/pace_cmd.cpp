@@ -8,7 +8,9 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
+#include "host/speed/pace_plan.hpp"
 #include "model/datapath/errors.hpp"
 
 namespace dda::cli {
@@ -49,6 +51,13 @@ PaceOptions pace_options(const PaceCli& f) {
   if (!(vmin >= 0 && vmin <= f.feed_rate))
     throw InputError(fmt::format("--vmin = {} is out of range: steps/s, 0 to the feed", vmin));
   return PaceOptions{f.feed_rate, f.accel, vmin, f.clock_hz};
+}
+
+void check_followable(const Plan& plan, const PaceOptions& o) {
+  speed_field(o.feed, o.clock_hz);  // a feed beyond a step per clock: named as that
+  std::vector<Command> cmds;
+  for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
+  speed::check_feed(cmds, o.feed, o.clock_hz, o.accel, o.vmin);
 }
 
 void check_svg_name(const std::string& option, const std::string& path) {

@@ -30,6 +30,9 @@ void add_pace_options(CLI::App* sub, PaceCli& p);
 // The options checked (InputError naming the one out of range): the feed, the clock,
 // the acceleration, the minimum speed (default sqrt(2 A x 1 step), at most the feed).
 PaceOptions pace_options(const PaceCli& f);
+// InputError, one line naming the highest feed the block follows, for a feed on a plan
+// beyond it at the clock (a feed beyond a step per clock named as that first).
+void check_followable(const Plan& plan, const PaceOptions& o);
 // A picture's file name (option: its name in the message): not empty, not standard
 // output, ending in .svg or without an extension (InputError).
 void check_svg_name(const std::string& option, const std::string& path);

@@ -177,10 +177,11 @@ set_property(TEST vectors.bus.gen_helix vectors.bus.helix vectors.bus.gen_pocket
              vectors.bus.gen_drilling vectors.bus.drilling vectors.bus.gen_lines_3d vectors.bus.lines_3d
              vectors.bus.gen_planes vectors.bus.planes
              APPEND PROPERTY LABELS "program;stepdir")
-# Paced by the pacer (2 MHz, 15,000 steps/s, 1.5e6 steps/s^2: a ramp of 75 steps, short
-# sets): a quarter of 300 x 200 with an override change to 150% and a feed hold and its
-# end; the same with a soft stop; a line with the watchdog running out.
-set(_dda_paced --a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --feed-rate 15000 --accel 1.5e6
+# Paced by the pacer (2 MHz, 1.5e6 steps/s^2, short sets): a quarter of 300 x 200 at
+# 8,000 steps/s (a ramp of 21 steps; the block follows at most 8,680 here) with an
+# override change to 150% and a feed hold and its end; the same with a soft stop; a
+# line at 15,000 steps/s (a ramp of 75 steps) with the watchdog running out.
+set(_dda_paced --a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --feed-rate 8000 --accel 1.5e6
     --vmin 1000 --clock 2e6)
 dda_bus_vec_set(paced ${_dda_paced} --override 150 --override-at 30000 --hold-at 45000 --resume-at 60000 --seed 31)
 dda_bus_vec_set(soft_stop ${_dda_paced} --soft-stop-at 30000 --timing 2,2,1,1 --pipelined --seed 33)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -172,6 +173,54 @@ TEST_CASE("cli input: numbers out of range, nan and inf are named", "[cli][error
       {"vectors " + kPaper + " --bus --feed-rate -5 --clock 1000" + dir, "feed-rate = -5 is out of range"},
   };
   for (const auto& [args, want] : cases) expect_refused(s, args, want);
+}
+
+// The highest feed a refusal names: "at most N steps/s".
+double named_feed(const std::string& err) {
+  const auto at = err.find("at most ");
+  return at == std::string::npos ? 0 : std::stod(err.substr(at + 8));
+}
+
+// The pin monitor's speed of the feed from `dda feed --summary`'s row (its 12th cell).
+double pin_speed_of_feed(const std::string& row) {
+  std::vector<std::string> cells;
+  std::stringstream ss(row);
+  for (std::string cell; std::getline(ss, cell, '|');) cells.push_back(cell);
+  REQUIRE(cells.size() > 12);
+  return std::stod(cells[12]);
+}
+
+TEST_CASE("cli input: a feed the block cannot follow is refused, naming the highest it follows",
+          "[cli][errors][pacer]") {
+  Scratch s;
+  // A full circle and a 4:1 ellipse at 40 MHz and 4e7 steps/s^2, a quarter of 300 x 200 at
+  // 2 MHz: far beyond, refused with one line on each command that paces an arc.
+  const std::string circle = "--a 2000 --b 2000 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
+  const std::string ellipse = "--a 2000 --b 500 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
+  const std::string quarter = "--a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --accel 1.5e6 --vmin 1000 "
+                              "--clock 2e6";
+  const std::string refusal = "--feed-rate 5000000 steps/s is beyond what the block follows on this path";
+  expect_refused(s, "feed " + circle + " --feed-rate 5e6", refusal);
+  expect_refused(s, "plot " + circle + " --feed-rate 5e6 --speed " + (s.dir / "v.svg").string(), refusal);
+  expect_refused(s, "vectors --bus " + circle + " --feed-rate 5e6 --timing 2,2,3,1 --out-dir " + (s.dir / "set").string(),
+                 refusal);
+  for (const std::string& arc : {circle, ellipse, quarter}) {
+    const Result r = run_dda(s, "feed " + arc + " --feed-rate 1e6");
+    INFO(arc << "\nstderr: " << r.err);
+    REQUIRE(r.status == 2);
+    const double most = named_feed(r.err);
+    REQUIRE(most > 1000);
+    // At the named feed the pacer's run passes the pin monitor (speed within 1%,
+    // acceleration within 5% of A) and reaches the feed at cruise; 2% above it is refused.
+    const Result at = run_dda(s, "feed " + arc + " --feed-rate " + std::to_string(std::llround(most)) + " --summary");
+    INFO(at.err);
+    REQUIRE(at.status == 0);
+    CHECK(pin_speed_of_feed(at.out) > 0.99);
+    CHECK(run_dda(s, "feed " + arc + " --feed-rate " + std::to_string(std::llround(most * 1.02))).status == 2);
+  }
+  // A short line at a high feed never reaches what the block cannot follow: the ramp at A
+  // ends before it, so nothing is refused.
+  CHECK(run_dda(s, "feed --line --from 0,0 --to 3000,1000 --feed-rate 5e6 --accel 4e7 --clock 4e7 --summary").status == 0);
 }
 
 TEST_CASE("cli input: each command's help lists its own options only", "[cli][errors]") {

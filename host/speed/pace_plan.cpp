@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "model/datapath/errors.hpp"
 #include "model/motion/pace_params.hpp"
@@ -69,20 +70,105 @@ constexpr int kStepClocks = motion::kNormLatency + 1;
 constexpr int kIterationClocks = 2;
 }  // namespace
 
+double clocks_per_path_step(std::uint64_t d, double axes) {
+  const double per_iteration = d > 0 ? std::ldexp(1.0, motion::kNormFrac) / double(d) : 0;
+  // Stepping iterations per path step: at most the steps (axes) and at most the
+  // iterations (1 / d); each costs kStepClocks, its own 2 counted with the rest.
+  const double stepping = d > 0 ? std::min(axes, per_iteration) : axes;
+  return (kStepClocks - kIterationClocks) * stepping + kIterationClocks * per_iteration;
+}
+
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm) {
   double need = 0;
   for (std::size_t k = 0; k < pp.segments.size(); ++k) {
     const PlannedSegment& p = pp.segments[k];
     const double v = p.peak / step_mm;  // path steps per second at its fastest
-    const std::uint64_t d = motion::min_iteration_distance(pp.plan.pieces[k].cmd);
-    const double per_iteration = d > 0 ? std::ldexp(1.0, motion::kNormFrac) / double(d) : 0;
-    // Stepping iterations per path step: at most the steps (axes_factor) and at most
-    // the iterations (1 / d); each costs kStepClocks, its own 2 counted with the rest.
-    const double stepping = d > 0 ? std::min(axes_factor(p.seg), per_iteration) : axes_factor(p.seg);
-    need = std::max(need, v * ((kStepClocks - kIterationClocks) * stepping + kIterationClocks * per_iteration));
+    need = std::max(need, v * clocks_per_path_step(motion::min_iteration_distance(pp.plan.pieces[k].cmd),
+                                                   axes_factor(p.seg)));
   }
   const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
   return std::max(need, ramp);
+}
+
+namespace {
+
+// Calls f(need, from, to) for every stretch of a piece's path `window` steps long (the
+// whole piece if shorter): need the most clocks per path step the block takes there,
+// from and to its ends' distances along the path from `offset` (the path before the
+// piece). The piece runs as runs of iterations, a quiet run (no step, one d) and the
+// iteration that steps; the window slides over them, its oldest quiet run cut to the
+// length. Returns the piece's path.
+template <typename F>
+double each_stretch(const Command& c, double window, double offset, F f) {
+  struct Run {
+    double clocks, path, d;
+    bool quiet;
+  };
+  const double unit = std::ldexp(1.0, motion::kNormFrac);
+  std::deque<Run> win;
+  double clocks = 0, path = 0, gone = 0;
+  bool any = false;
+  const auto push = [&](const Run& run) {
+    win.push_back(run);
+    clocks += run.clocks;
+    path += run.path;
+    gone += run.path;
+    while (win.size() > 1 && path - win.front().path >= window) {
+      clocks -= win.front().clocks;
+      path -= win.front().path;
+      win.pop_front();
+    }
+    if (path < window) return;
+    double cl = clocks, pa = path;
+    const Run& first = win.front();
+    if (first.quiet && win.size() > 1) {
+      const double rest = path - first.path, n = std::ceil((window - rest) / first.d);
+      cl += kIterationClocks * n - first.clocks;
+      pa = rest + n * first.d;
+    }
+    any = true;
+    f(cl / pa, offset + gone - pa, offset + gone);
+  };
+  RegState r = initial_regs(c);
+  while (!finished(r)) {
+    if (stalled(c, r)) throw GuardError("highest_feed: a piece that does not end");
+    const double d = double(motion::iteration_distance(c, r)) / unit;
+    const std::uint64_t n = quiet_iterations(c, r);
+    if (n > 0 && d > 0) push({double(kIterationClocks) * double(n), double(n) * d, d, true});
+    skip_quiet(c, r, n);
+    push({double(kStepClocks), d, d, false});  // (the iteration that steps)
+    next_state(c, r);
+  }
+  if (!any && path > 0) f(clocks / path, offset + gone - path, offset + gone);
+  return gone;
+}
+
+}  // namespace
+
+double highest_feed(const std::vector<Command>& pieces, double clock_hz, double accel, double vmin) {
+  double length = 0;
+  for (const Command& c : pieces) length += each_stretch(c, HUGE_VAL, 0, [](double, double, double) {});
+  double most = HUGE_VAL, offset = 0;
+  for (const Command& c : pieces) {
+    offset += each_stretch(c, kFeedWindow, offset, [&](double need, double from, double to) {
+      const double follows = clock_hz / need;
+      // The fastest the ramp lets the pacer run there, from the start and to the end.
+      const double reach =
+          accel > 0 ? std::sqrt(vmin * vmin + 2 * accel * std::min(to, length - from)) : HUGE_VAL;
+      if (reach > follows) most = std::min(most, follows);
+    });
+  }
+  return most;
+}
+
+void check_feed(const std::vector<Command>& pieces, double feed, double clock_hz, double accel, double vmin) {
+  const double most = highest_feed(pieces, clock_hz, accel, vmin);
+  if (feed > most) {
+    throw InputError(fmt::format(
+        "--feed-rate {} steps/s is beyond what the block follows on this path at {} Hz: at most {:.0f} steps/s "
+        "(a stepping iteration takes up to {} clocks, any iteration at least {}; docs/design.md, \"Pacer\")",
+        feed, clock_hz, std::floor(most), kStepClocks, kIterationClocks));
+  }
 }
 
 void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz) {

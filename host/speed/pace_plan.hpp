@@ -55,6 +55,28 @@ double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double s
 // InputError, with the clock needed, for a setup's clock below slowest_clock.
 void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz);
 
+// The clocks the block takes at most per path step on a piece whose shortest path per
+// iteration is d (x 2^kNormFrac steps, motion::min_iteration_distance; 0: none moves)
+// and whose axis steps per path step are at most axes: 1 / d iterations of at least 2
+// clocks, among them up to min(axes, 1 / d) stepping ones of kNormLatency + 1 clocks.
+double clocks_per_path_step(std::uint64_t d, double axes);
+// The highest path feed, steps/s, the block follows on pieces run back to back at one
+// cruise speed at a clock, with a ramp at accel from and to vmin (steps/s^2, steps/s;
+// accel 0: the speed jumps): over every stretch of kFeedWindow path steps, the clock
+// over the most clocks the block takes per path step there (each iteration at least
+// 2 clocks, one that steps kNormLatency + 1, each moving d along the path:
+// motion::iteration_distance before it), where the ramp lets the pacer run faster than
+// that. This runs each piece through the datapath twice, a step at a time; infinity
+// when nothing limits it.
+double highest_feed(const std::vector<Command>& pieces, double clock_hz, double accel, double vmin);
+// The stretch highest_feed measures, path steps: long enough that a stepping
+// iteration more or less at its ends moves its figure by a few percent at most, short
+// against the speed monitor's windows (hundreds of steps at such feeds).
+inline constexpr double kFeedWindow = 32;
+// InputError, one line naming highest_feed, for a feed above it: a single arc's or
+// line's `--feed-rate` the block would fall short of.
+void check_feed(const std::vector<Command>& pieces, double feed, double clock_hz, double accel, double vmin);
+
 // The block's pacing of a planned program at a clock: ACCEL, VMIN and one entry per
 // piece, in the plan's order (InputError as pace_setup and check_clock).
 struct ProgramPacing {
