@@ -197,12 +197,14 @@ TEST_CASE("cli input: a feed the block cannot follow is refused, naming the high
   // 2 MHz: far beyond, refused with one line on each command that paces an arc.
   const std::string circle = "--a 2000 --b 2000 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
   const std::string ellipse = "--a 2000 --b 500 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
-  const std::string quarter = "--a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --accel 1.5e6 --vmin 1000 "
-                              "--clock 2e6";
+  const std::string quarter =
+      "--a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --accel 1.5e6 --vmin 1000 "
+      "--clock 2e6";
   const std::string refusal = "--feed-rate 5000000 steps/s is beyond what the block follows on this path";
   expect_refused(s, "feed " + circle + " --feed-rate 5e6", refusal);
   expect_refused(s, "plot " + circle + " --feed-rate 5e6 --speed " + (s.dir / "v.svg").string(), refusal);
-  expect_refused(s, "vectors --bus " + circle + " --feed-rate 5e6 --timing 2,2,3,1 --out-dir " + (s.dir / "set").string(),
+  expect_refused(s,
+                 "vectors --bus " + circle + " --feed-rate 5e6 --timing 2,2,3,1 --out-dir " + (s.dir / "set").string(),
                  refusal);
   for (const std::string& arc : {circle, ellipse, quarter}) {
     const Result r = run_dda(s, "feed " + arc + " --feed-rate 1e6");
@@ -220,7 +222,8 @@ TEST_CASE("cli input: a feed the block cannot follow is refused, naming the high
   }
   // A short line at a high feed never reaches what the block cannot follow: the ramp at A
   // ends before it, so nothing is refused.
-  CHECK(run_dda(s, "feed --line --from 0,0 --to 3000,1000 --feed-rate 5e6 --accel 4e7 --clock 4e7 --summary").status == 0);
+  CHECK(run_dda(s, "feed --line --from 0,0 --to 3000,1000 --feed-rate 5e6 --accel 4e7 --clock 4e7 --summary").status ==
+        0);
 }
 
 TEST_CASE("cli input: each command's help lists its own options only", "[cli][errors]") {

@@ -83,8 +83,8 @@ double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double s
   for (std::size_t k = 0; k < pp.segments.size(); ++k) {
     const PlannedSegment& p = pp.segments[k];
     const double v = p.peak / step_mm;  // path steps per second at its fastest
-    need = std::max(need, v * clocks_per_path_step(motion::min_iteration_distance(pp.plan.pieces[k].cmd),
-                                                   axes_factor(p.seg)));
+    need = std::max(
+        need, v * clocks_per_path_step(motion::min_iteration_distance(pp.plan.pieces[k].cmd), axes_factor(p.seg)));
   }
   const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
   return std::max(need, ramp);
@@ -153,8 +153,7 @@ double highest_feed(const std::vector<Command>& pieces, double clock_hz, double 
     offset += each_stretch(c, kFeedWindow, offset, [&](double need, double from, double to) {
       const double follows = clock_hz / need;
       // The fastest the ramp lets the pacer run there, from the start and to the end.
-      const double reach =
-          accel > 0 ? std::sqrt(vmin * vmin + 2 * accel * std::min(to, length - from)) : HUGE_VAL;
+      const double reach = accel > 0 ? std::sqrt(vmin * vmin + 2 * accel * std::min(to, length - from)) : HUGE_VAL;
       if (reach > follows) most = std::min(most, follows);
     });
   }
