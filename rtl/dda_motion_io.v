@@ -64,12 +64,15 @@ module dda_motion_io #(
   output reg  [31:0]                       rd_o       // read data at adr_i (0 for other registers)
 );
 
-  localparam integer FW = `DDA_MOTION_IN_FILTER_SWITCHES_WIDTH;
+  localparam integer SW = `DDA_MOTION_IN_FILTER_SWITCHES_WIDTH;  // a switch's filter, in ticks
+  localparam integer TW = `DDA_MOTION_IN_FILTER_TICK_WIDTH;      // the switches' tick
+  localparam integer FW = `DDA_MOTION_IN_FILTER_PROBE_WIDTH;     // the probe's filter, in clocks
   localparam integer NI = `DDA_MOTION_INPUTS;     // inputs (model/motion/motion_map.hpp kInputs)
   localparam integer NT = `DDA_MOTION_TRIP_BITS;  // TRIP's bits: every input but the probe
 
   reg [NI-1:0]  pol_q         /* verilator public_flat_rd */;
-  reg [FW-1:0]  filt_sw_q     /* verilator public_flat_rd */;
+  reg [SW-1:0]  filt_sw_q     /* verilator public_flat_rd */;
+  reg [TW-1:0]  filt_tick_q   /* verilator public_flat_rd */;
   reg [FW-1:0]  filt_probe_q  /* verilator public_flat_rd */;
   reg [4:0]     mode_q        /* verilator public_flat_rd */;  // IN_MODE
   reg           err_estop_q   /* verilator public_flat_rd */;
@@ -95,29 +98,36 @@ module dda_motion_io #(
   wire [NI-1:0] pins   = {probe_i, home_i, limit_i, estop_ni};
   wire [NI-1:0] invert = pol_q ^ NI'(1);
   wire [NI-1:0] lvl, rise;
-  dda_input #(.FW(FW)) u_estop (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[0]), .invert_i(invert[0]),
-                                .filter_i(filt_sw_q), .level_o(lvl[0]), .rise_o(rise[0]));
-  dda_input #(.FW(FW)) u_lxn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[1]), .invert_i(invert[1]),
-                              .filter_i(filt_sw_q), .level_o(lvl[1]), .rise_o(rise[1]));
-  dda_input #(.FW(FW)) u_lxp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[2]), .invert_i(invert[2]),
-                              .filter_i(filt_sw_q), .level_o(lvl[2]), .rise_o(rise[2]));
-  dda_input #(.FW(FW)) u_lyn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[3]), .invert_i(invert[3]),
-                              .filter_i(filt_sw_q), .level_o(lvl[3]), .rise_o(rise[3]));
-  dda_input #(.FW(FW)) u_lyp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[4]), .invert_i(invert[4]),
-                              .filter_i(filt_sw_q), .level_o(lvl[4]), .rise_o(rise[4]));
-  dda_input #(.FW(FW)) u_lzn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[5]), .invert_i(invert[5]),
-                              .filter_i(filt_sw_q), .level_o(lvl[5]), .rise_o(rise[5]));
-  dda_input #(.FW(FW)) u_lzp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[6]), .invert_i(invert[6]),
-                              .filter_i(filt_sw_q), .level_o(lvl[6]), .rise_o(rise[6]));
-  dda_input #(.FW(FW)) u_hx (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[7]), .invert_i(invert[7]),
-                             .filter_i(filt_sw_q), .level_o(lvl[7]), .rise_o(rise[7]));
-  dda_input #(.FW(FW)) u_hy (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[8]), .invert_i(invert[8]),
-                             .filter_i(filt_sw_q), .level_o(lvl[8]), .rise_o(rise[8]));
-  dda_input #(.FW(FW)) u_hz (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[9]), .invert_i(invert[9]),
-                             .filter_i(filt_sw_q), .level_o(lvl[9]), .rise_o(rise[9]));
+  // The switches' filters count on the clocks whose cycle count has its low filt_tick_q
+  // bits all 1 (the cycle counter is their prescaler); the probe's on every clock.
+  localparam integer PW = (1 << TW) - 1;
+  wire [PW-1:0] tick_mask = PW'((32'd1 << filt_tick_q) - 32'd1);
+  wire          sw_tick   = &(cycle_q[PW-1:0] | ~tick_mask);
+  dda_input #(.FW(SW)) u_estop (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[0]), .invert_i(invert[0]),
+                                .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[0]), .rise_o(rise[0]));
+  dda_input #(.FW(SW)) u_lxn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[1]), .invert_i(invert[1]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[1]), .rise_o(rise[1]));
+  dda_input #(.FW(SW)) u_lxp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[2]), .invert_i(invert[2]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[2]), .rise_o(rise[2]));
+  dda_input #(.FW(SW)) u_lyn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[3]), .invert_i(invert[3]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[3]), .rise_o(rise[3]));
+  dda_input #(.FW(SW)) u_lyp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[4]), .invert_i(invert[4]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[4]), .rise_o(rise[4]));
+  dda_input #(.FW(SW)) u_lzn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[5]), .invert_i(invert[5]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[5]), .rise_o(rise[5]));
+  dda_input #(.FW(SW)) u_lzp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[6]), .invert_i(invert[6]),
+                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[6]), .rise_o(rise[6]));
+  dda_input #(.FW(SW)) u_hx (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[7]), .invert_i(invert[7]),
+                             .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[7]), .rise_o(rise[7]));
+  dda_input #(.FW(SW)) u_hy (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[8]), .invert_i(invert[8]),
+                             .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[8]), .rise_o(rise[8]));
+  dda_input #(.FW(SW)) u_hz (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[9]), .invert_i(invert[9]),
+                             .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[9]), .rise_o(rise[9]));
   dda_input #(.FW(FW)) u_probe (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[10]), .invert_i(invert[10]),
-                                .filter_i(filt_probe_q), .level_o(lvl[10]), .rise_o(rise[10]));
+                                .tick_i(1'b1), .filter_i(filt_probe_q), .level_o(lvl[10]), .rise_o(rise[10]));
   wire unused_rise = &{1'b0, rise[6:0]};
+  // (IN_FILTER's bits between the switches' tick and the probe's filter are reserved.)
+  wire unused_wdat = &{1'b0, wdat_i[`DDA_MOTION_IN_FILTER_PROBE_LSB-1:`DDA_MOTION_IN_FILTER_TICK_LSB+TW]};
 
   // ---- what stops the motion on this edge ----
   wire       estop = lvl[0];
@@ -148,6 +158,7 @@ module dda_motion_io #(
     if (!rst_ni) begin
       pol_q         <= '0;
       filt_sw_q     <= '0;
+      filt_tick_q   <= '0;
       filt_probe_q  <= '0;
       mode_q        <= '0;
       err_estop_q   <= 1'b0;
@@ -171,7 +182,8 @@ module dda_motion_io #(
     end else begin
       if (wr_i && adr_i == `DDA_MOTION_IN_POLARITY_ADDR) pol_q <= wdat_i[NI-1:0];
       if (wr_i && adr_i == `DDA_MOTION_IN_FILTER_ADDR) begin
-        filt_sw_q    <= wdat_i[`DDA_MOTION_IN_FILTER_SWITCHES_LSB+:FW];
+        filt_sw_q    <= wdat_i[`DDA_MOTION_IN_FILTER_SWITCHES_LSB+:SW];
+        filt_tick_q  <= wdat_i[`DDA_MOTION_IN_FILTER_TICK_LSB+:TW];
         filt_probe_q <= wdat_i[`DDA_MOTION_IN_FILTER_PROBE_LSB+:FW];
       end
       if (wr_i && adr_i == `DDA_MOTION_IN_MODE_ADDR) mode_q <= wdat_i[4:0];
@@ -210,7 +222,8 @@ module dda_motion_io #(
       `DDA_MOTION_INPUTS_ADDR:      rd_o[NI-1:0] = lvl;
       `DDA_MOTION_IN_POLARITY_ADDR: rd_o[NI-1:0] = pol_q;
       `DDA_MOTION_IN_FILTER_ADDR: begin
-        rd_o[`DDA_MOTION_IN_FILTER_SWITCHES_LSB+:FW] = filt_sw_q;
+        rd_o[`DDA_MOTION_IN_FILTER_SWITCHES_LSB+:SW] = filt_sw_q;
+        rd_o[`DDA_MOTION_IN_FILTER_TICK_LSB+:TW]     = filt_tick_q;
         rd_o[`DDA_MOTION_IN_FILTER_PROBE_LSB+:FW]    = filt_probe_q;
       end
       `DDA_MOTION_IN_MODE_ADDR:     rd_o[4:0] = mode_q;

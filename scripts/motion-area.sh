@@ -70,11 +70,14 @@ yosys -q -p "read_verilog -sv -Irtl rtl/dda_stepdir.v; synth_ice40 -top dda_step
 echo
 echo "one step/dir stage alone (rtl/dda_stepdir.v, 12-bit timings): $(awk '$1 == "SB_LUT4" {print $2}' "$work/stat.txt") LUT4s, $(awk '$1 ~ /^SB_DFF/ {s += $2} END {print s}' "$work/stat.txt") flip-flops, $(awk '$1 == "SB_CARRY" {print $2}' "$work/stat.txt") carry cells"
 # The machine inputs by themselves (rtl/dda_motion_io.v: eleven inputs, the latches, the
-# snapshot, the cycle counter), and one input's synchronizer and filter.
+# snapshot, the cycle counter), and one input's synchronizer and filter (the probe's
+# counting clocks, a switch's counting ticks).
 yosys -q -p "read_verilog -sv -Irtl rtl/dda_input.v rtl/dda_motion_io.v; synth_ice40 -top dda_motion_io; tee -o $work/stat.txt stat" >/dev/null
 echo "the machine inputs alone (rtl/dda_motion_io.v): $(luts_of "$work/stat.txt")"
 yosys -q -p "read_verilog -sv -Irtl rtl/dda_input.v; synth_ice40 -top dda_input; tee -o $work/stat.txt stat" >/dev/null
-echo "one input alone (rtl/dda_input.v, a 16-bit filter): $(luts_of "$work/stat.txt")"
+echo "one input alone (rtl/dda_input.v, a 16-bit filter, the probe's): $(luts_of "$work/stat.txt")"
+yosys -q -p "read_verilog -sv -Irtl rtl/dda_input.v; chparam -set FW 4 dda_input; synth_ice40 -top dda_input; tee -o $work/stat.txt stat" >/dev/null
+echo "one switch alone (rtl/dda_input.v, a 4-bit filter of ticks): $(luts_of "$work/stat.txt")"
 # One position counter by itself: a 32-bit counter with a preset and a +-1 step.
 cat > "$work/counter.v" <<'EOF'
 module counter (input clk, input rst_ni, input wr, input [31:0] d, input step, input dir, output reg [31:0] q);

@@ -68,12 +68,14 @@ void MotionDriver::clear() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "cle
 void MotionDriver::arm_probe() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "probe_arm")); }
 
 void MotionDriver::set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe,
-                              std::uint32_t mode) {
-  const std::uint32_t fmax = (1u << kFilterWidth) - 1;
-  if (polarity >> kNumInputs || filter_switches > fmax || filter_probe > fmax || mode >> 5)
+                              std::uint32_t mode, std::uint32_t filter_tick) {
+  const auto fits = [](std::string_view f, std::uint32_t v) { return v >> field_of("IN_FILTER", f).width == 0; };
+  if (polarity >> kNumInputs || !fits("switches", filter_switches) || !fits("probe", filter_probe) ||
+      !fits("tick", filter_tick) || mode >> 5)
     throw GuardError("motion driver: an input setting out of range");
   m_.write(reg_offset("IN_POLARITY"), polarity);
   m_.write(reg_offset("IN_FILTER"), filter_switches << field_of("IN_FILTER", "switches").lsb |
+                                        filter_tick << field_of("IN_FILTER", "tick").lsb |
                                         filter_probe << field_of("IN_FILTER", "probe").lsb);
   m_.write(reg_offset("IN_MODE"), mode);
 }

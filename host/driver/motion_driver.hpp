@@ -41,10 +41,11 @@ class MotionDriver {
   void write(std::string_view reg, std::uint32_t value) { m_.write(reg_offset(reg), value); }
   // CTRL.clear: the sticky errors, their causes and TRIP.
   void clear();
-  // The machine's inputs: IN_POLARITY (a bit per input, kInputs), IN_FILTER's clocks for
-  // the switches and the probe, IN_MODE.
-  void set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe,
-                  std::uint32_t mode);
+  // The machine's inputs: IN_POLARITY (a bit per input, kInputs), IN_FILTER (the
+  // switches' ticks, the probe's clocks, the switches' tick: every 2^filter_tick clocks),
+  // IN_MODE. Throws GuardError for a value its field does not hold.
+  void set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe, std::uint32_t mode,
+                  std::uint32_t filter_tick = 0);
   // CTRL.probe_arm.
   void arm_probe();
   // CTRL.snapshot, then SNAP_*: one clock's positions, cycle counter, level and count.

@@ -17,6 +17,7 @@ constexpr std::size_t kErrEstop = breg("u_io.err_estop_q");
 constexpr std::size_t kErrLimit = breg("u_io.err_limit_q");
 constexpr std::size_t kFiltProbe = breg("u_io.filt_probe_q");
 constexpr std::size_t kFiltSw = breg("u_io.filt_sw_q");
+constexpr std::size_t kFiltTick = breg("u_io.filt_tick_q");
 constexpr std::size_t kMode = breg("u_io.mode_q");
 constexpr std::size_t kPol = breg("u_io.pol_q");
 constexpr std::size_t kProbeArmed = breg("u_io.probe_armed_q");
@@ -41,19 +42,24 @@ std::uint32_t mode_bit(std::string_view f) { return 1u << field_of("IN_MODE", f)
 
 }  // namespace
 
-InputEdge input_edge(const InputRegs& r, bool pin, bool invert, std::uint32_t filter) {
-  // The level flips once the synchronized one has differed from it on `filter`
-  // consecutive edges (0 as 1).
+InputEdge input_edge(const InputRegs& r, bool pin, bool invert, bool tick, std::uint32_t filter) {
+  // The level flips once the synchronized one has differed from it on `filter` ticks
+  // (0 as 1) without a break; the count holds between ticks and is 0 while they agree.
   const bool differ = r.s2 != r.lvl;
   const std::uint32_t inc = r.cnt + 1;
-  const bool flip = differ && inc >= filter;
+  const bool flip = differ && tick && inc >= filter;
   InputEdge e;
   e.rise = flip && r.s2;
   e.next.s1 = pin != invert;
   e.next.s2 = r.s1;
   e.next.lvl = r.lvl != flip;
-  e.next.cnt = differ && !flip ? inc : 0;
+  e.next.cnt = !differ || flip ? 0 : tick ? inc : r.cnt;
   return e;
+}
+
+bool filter_tick(std::uint64_t cycle, std::uint32_t tick) {
+  const std::uint64_t mask = (std::uint64_t{1} << tick) - 1;
+  return (cycle & mask) == mask;
 }
 
 InputRegs MotionModel::input(std::size_t i) const {
@@ -78,12 +84,14 @@ void MotionModel::io_wires(const MachinePins& pins, Wires& w) const {
   const std::uint32_t pol = std::uint32_t(r_[kPol]), mode = std::uint32_t(r_[kMode]);
   const std::uint32_t bits = pins.bits();
   std::uint32_t lvl = 0, rise = 0;
+  const bool sw_tick = filter_tick(r_[kCycle], std::uint32_t(r_[kFiltTick]));
   for (std::size_t i = 0; i < kInputs.size(); ++i) {
     const int b = kInputs[i].bit;
     // estop_ni is active low unless IN_POLARITY inverts it; the others active high.
     const bool invert = (((pol >> b) & 1u) != 0) != (b == input_bit("estop"));
-    const std::uint64_t filter = r_[b == kProbeBit ? kFiltProbe : kFiltSw];
-    w.in[i] = input_edge(input(i), ((bits >> b) & 1u) != 0, invert, std::uint32_t(filter));
+    const bool probe = b == kProbeBit;
+    const std::uint64_t filter = r_[probe ? kFiltProbe : kFiltSw];
+    w.in[i] = input_edge(input(i), ((bits >> b) & 1u) != 0, invert, probe || sw_tick, std::uint32_t(filter));
     lvl |= std::uint32_t(input(i).lvl) << b;
     rise |= std::uint32_t(w.in[i].rise) << b;
   }
@@ -115,9 +123,13 @@ void MotionModel::load_io(const Wires& w) {
   const auto at = [&](const char* r) { return w.wr && w.adr == reg_offset(r); };
   if (at("IN_POLARITY")) r_[kPol] = w.wdat & ((1u << kNumInputs) - 1);
   if (at("IN_FILTER")) {
-    const std::uint32_t fmask = (1u << kFilterWidth) - 1;
-    r_[kFiltSw] = (w.wdat >> field_of("IN_FILTER", "switches").lsb) & fmask;
-    r_[kFiltProbe] = (w.wdat >> field_of("IN_FILTER", "probe").lsb) & fmask;
+    const auto fld = [&](std::string_view f) {
+      const auto& d = field_of("IN_FILTER", f);
+      return (w.wdat >> d.lsb) & ((1u << d.width) - 1);
+    };
+    r_[kFiltSw] = fld("switches");
+    r_[kFiltTick] = fld("tick");
+    r_[kFiltProbe] = fld("probe");
   }
   if (at("IN_MODE")) r_[kMode] = w.wdat & 0x1Fu;
   // Sticky causes: a cause on the edge of a clear stays set.
@@ -165,6 +177,7 @@ std::uint32_t MotionModel::read_io(std::uint32_t adr) const {
   }
   if (adr == reg_offset("IN_FILTER")) {
     return std::uint32_t(r_[kFiltSw]) << field_of("IN_FILTER", "switches").lsb |
+           std::uint32_t(r_[kFiltTick]) << field_of("IN_FILTER", "tick").lsb |
            std::uint32_t(r_[kFiltProbe]) << field_of("IN_FILTER", "probe").lsb;
   }
   static const std::array<std::pair<const char*, const char*>, 15> kPlain{{

@@ -27,7 +27,7 @@
 namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
-inline constexpr int kVersionMajor = 5;
+inline constexpr int kVersionMajor = 6;
 inline constexpr int kVersionMinor = 0;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
@@ -83,7 +83,7 @@ static_assert(kEntryWords <= 32, "the entry window holds at most 32 words");
 // The machine's inputs (docs/design.md, "Machine inputs"), bit `bit` of INPUTS,
 // IN_POLARITY and TRIP (the probe is not a trip: TRIP's bits end below it). Each goes
 // through a two-flip-flop synchronizer and a glitch filter (a level must hold IN_FILTER's
-// clocks) in rtl/dda_input.v, instance `inst` of rtl/dda_motion_io.v; a bit set in
+// ticks) in rtl/dda_input.v, instance `inst` of rtl/dda_motion_io.v; a bit set in
 // IN_POLARITY inverts the pin's default sense (estop_ni is active low, the others high).
 struct Input {
   std::string_view name;
@@ -106,7 +106,13 @@ inline constexpr std::array<Input, 11> kInputs{{
 inline constexpr int kNumInputs = int(kInputs.size());
 inline constexpr int kTripBits = kNumInputs - 1;  // TRIP: every input but the probe
 inline constexpr int kLimitBit = 1, kHomeBit = 7, kProbeBit = 10;
-inline constexpr int kFilterWidth = 16;  // IN_FILTER's fields: clocks a level must hold
+// IN_FILTER. The probe's filter counts clocks (kFilterWidth bits: its latch is exact to
+// the clock). The ten switches share a tick, every 2^tick clocks (the low `tick` bits of
+// the cycle counter all 1), and count ticks in kSwitchFilterWidth bits: a debounce of up
+// to 15 x 2^15 clocks (12 ms at 40 MHz) for a 4-bit counter per switch.
+inline constexpr int kFilterWidth = 16;
+inline constexpr int kSwitchFilterWidth = 4;
+inline constexpr int kFilterTickWidth = 4;
 constexpr int input_bit(std::string_view name) {
   for (const auto& i : kInputs) {
     if (i.name == name) return i.bit;
@@ -185,7 +191,7 @@ inline constexpr std::array<Register, 43> kRegisters{{
     {"WATCHDOG", 0x60, Access::RW, "the watchdog's timeout; every write restarts it"},
     {"INPUTS", 0x64, Access::RO, "the machine's inputs as filtered, 1: active"},
     {"IN_POLARITY", 0x68, Access::RW, "a bit set inverts that input's sense (estop_ni: active high)"},
-    {"IN_FILTER", 0x6C, Access::RW, "clocks an input's level must hold before the block sees it"},
+    {"IN_FILTER", 0x6C, Access::RW, "how long an input's level must hold before the block sees it"},
     {"IN_MODE", 0x70, Access::RW, "how the limit, home and probe inputs stop the motion"},
     {"TRIP", 0x74, Access::RO, "the inputs that stopped the motion since the last clear"},
     {"LATCH_X", 0x78, Access::RO, "X position at the first trip after TRIP was 0"},
@@ -210,7 +216,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 95> kFields{{
+inline constexpr std::array<Field, 96> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -292,8 +298,10 @@ inline constexpr std::array<Field, 95> kFields{{
     {"OVERRIDE", "override", 0, kOverrideBits, "x 1/256 (256: 100%); a write above 512 (200%) takes 512"},
     {"WATCHDOG", "clocks", 0, 32,
      "0: off; else a soft stop, STATUS.err_watchdog and IRQ_STATUS.err this many clocks after the last write"},
-    {"IN_FILTER", "switches", 0, kFilterWidth,
-     "the E-stop, limit and home inputs: a level holds this many clocks (0 as 1) before it counts"},
+    {"IN_FILTER", "switches", 0, kSwitchFilterWidth,
+     "the E-stop, limit and home inputs: a level holds this many ticks (0 as 1) before it counts"},
+    {"IN_FILTER", "tick", 4, kFilterTickWidth,
+     "the switches' tick: the clocks whose cycle count has its low `tick` bits all 1 (0: every clock)"},
     {"IN_FILTER", "probe", 16, kFilterWidth, "the probe input: a level holds this many clocks (0 as 1)"},
     {"IN_MODE", "limit_decel", 0, 1, "0: a step toward an active limit stops as by hard_stop; 1: as by soft_stop"},
     {"IN_MODE", "home_x", 1, 1, "X homing: the X home input's active edge stops as by soft_stop (IRQ_STATUS.home)"},

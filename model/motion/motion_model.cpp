@@ -84,6 +84,10 @@ int width_bits(Width w, int depth_log2) {
       return kTripBits;
     case Width::Filter:
       return kFilterWidth;
+    case Width::SwitchFilter:
+      return kSwitchFilterWidth;
+    case Width::FilterTick:
+      return kFilterTickWidth;
   }
   return 0;
 }

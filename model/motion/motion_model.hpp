@@ -94,9 +94,11 @@ enum class Width {
   NormBusy,
   OverrideCount,
   Five,
-  Inputs,  // a bit per machine input (kNumInputs)
-  Trip,    // kTripBits
-  Filter   // kFilterWidth
+  Inputs,        // a bit per machine input (kNumInputs)
+  Trip,          // kTripBits
+  Filter,        // kFilterWidth: the probe's
+  SwitchFilter,  // kSwitchFilterWidth
+  FilterTick     // kFilterTickWidth
 };
 struct BlockReg {
   std::string_view name;
@@ -106,7 +108,7 @@ struct BlockReg {
 // rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
 // model motion::Pacer holds; u_io: the machine's inputs, rtl/dda_motion_io.v, and below
 // it each input's synchronizer and filter, rtl/dda_input.v).
-inline constexpr std::array<BlockReg, 149> kBlockRegs{{
+inline constexpr std::array<BlockReg, 150> kBlockRegs{{
     {"ack_q", Width::One},
     {"dat_q", Width::Word},
     {"head_q", Width::Index},
@@ -191,7 +193,8 @@ inline constexpr std::array<BlockReg, 149> kBlockRegs{{
     {"err_hard_q", Width::One},
     {"err_watchdog_q", Width::One},
     {"u_io.pol_q", Width::Inputs},
-    {"u_io.filt_sw_q", Width::Filter},
+    {"u_io.filt_sw_q", Width::SwitchFilter},
+    {"u_io.filt_tick_q", Width::FilterTick},
     {"u_io.filt_probe_q", Width::Filter},
     {"u_io.mode_q", Width::Five},
     {"u_io.err_estop_q", Width::One},
@@ -215,43 +218,43 @@ inline constexpr std::array<BlockReg, 149> kBlockRegs{{
     {"u_io.u_estop.s1_q", Width::One},
     {"u_io.u_estop.s2_q", Width::One},
     {"u_io.u_estop.lvl_q", Width::One},
-    {"u_io.u_estop.cnt_q", Width::Filter},
+    {"u_io.u_estop.cnt_q", Width::SwitchFilter},
     {"u_io.u_lxn.s1_q", Width::One},
     {"u_io.u_lxn.s2_q", Width::One},
     {"u_io.u_lxn.lvl_q", Width::One},
-    {"u_io.u_lxn.cnt_q", Width::Filter},
+    {"u_io.u_lxn.cnt_q", Width::SwitchFilter},
     {"u_io.u_lxp.s1_q", Width::One},
     {"u_io.u_lxp.s2_q", Width::One},
     {"u_io.u_lxp.lvl_q", Width::One},
-    {"u_io.u_lxp.cnt_q", Width::Filter},
+    {"u_io.u_lxp.cnt_q", Width::SwitchFilter},
     {"u_io.u_lyn.s1_q", Width::One},
     {"u_io.u_lyn.s2_q", Width::One},
     {"u_io.u_lyn.lvl_q", Width::One},
-    {"u_io.u_lyn.cnt_q", Width::Filter},
+    {"u_io.u_lyn.cnt_q", Width::SwitchFilter},
     {"u_io.u_lyp.s1_q", Width::One},
     {"u_io.u_lyp.s2_q", Width::One},
     {"u_io.u_lyp.lvl_q", Width::One},
-    {"u_io.u_lyp.cnt_q", Width::Filter},
+    {"u_io.u_lyp.cnt_q", Width::SwitchFilter},
     {"u_io.u_lzn.s1_q", Width::One},
     {"u_io.u_lzn.s2_q", Width::One},
     {"u_io.u_lzn.lvl_q", Width::One},
-    {"u_io.u_lzn.cnt_q", Width::Filter},
+    {"u_io.u_lzn.cnt_q", Width::SwitchFilter},
     {"u_io.u_lzp.s1_q", Width::One},
     {"u_io.u_lzp.s2_q", Width::One},
     {"u_io.u_lzp.lvl_q", Width::One},
-    {"u_io.u_lzp.cnt_q", Width::Filter},
+    {"u_io.u_lzp.cnt_q", Width::SwitchFilter},
     {"u_io.u_hx.s1_q", Width::One},
     {"u_io.u_hx.s2_q", Width::One},
     {"u_io.u_hx.lvl_q", Width::One},
-    {"u_io.u_hx.cnt_q", Width::Filter},
+    {"u_io.u_hx.cnt_q", Width::SwitchFilter},
     {"u_io.u_hy.s1_q", Width::One},
     {"u_io.u_hy.s2_q", Width::One},
     {"u_io.u_hy.lvl_q", Width::One},
-    {"u_io.u_hy.cnt_q", Width::Filter},
+    {"u_io.u_hy.cnt_q", Width::SwitchFilter},
     {"u_io.u_hz.s1_q", Width::One},
     {"u_io.u_hz.s2_q", Width::One},
     {"u_io.u_hz.lvl_q", Width::One},
-    {"u_io.u_hz.cnt_q", Width::Filter},
+    {"u_io.u_hz.cnt_q", Width::SwitchFilter},
     {"u_io.u_probe.s1_q", Width::One},
     {"u_io.u_probe.s2_q", Width::One},
     {"u_io.u_probe.lvl_q", Width::One},
@@ -279,7 +282,9 @@ struct StageEdge {
 StageRegs stage_reset();
 
 // One machine input (rtl/dda_input.v) for one edge: its registers before the edge, the
-// pin, whether it is inverted, the filter's clocks; next holds them after the edge.
+// pin, whether it is inverted, whether the filter counts on this edge (the probe's on
+// every edge, the switches' on their tick), the filter's count; next holds them after
+// the edge.
 struct InputRegs {
   bool s1 = false, s2 = false, lvl = false;
   std::uint32_t cnt = 0;
@@ -288,7 +293,10 @@ struct InputEdge {
   bool rise = false;  // the filtered level turns active on this edge
   InputRegs next;
 };
-InputEdge input_edge(const InputRegs& r, bool pin, bool invert, std::uint32_t filter);
+InputEdge input_edge(const InputRegs& r, bool pin, bool invert, bool tick, std::uint32_t filter);
+// Whether the switches' filters count on the edge after a clock whose cycle count is
+// `cycle`: IN_FILTER.tick's low bits of it all 1.
+bool filter_tick(std::uint64_t cycle, std::uint32_t tick);
 // The edge-by-edge diagram of docs/design.md ("Step and direction timing"): one stage
 // with steplen 3, stepspace 2, dirsetup 2, dirhold 1, the core stepping + then - as
 // fast as the stage lets it (`dda gen-params --kind stepdir-diagram`).

@@ -5,15 +5,17 @@ namespace dda::sc {
 
 dda_input::dda_input(sc_core::sc_module_name name) : sc_core::sc_module(name) {
   SC_METHOD(comb);
-  sensitive << filter_i << s2_q << lvl_q << cnt_q;
+  sensitive << tick_i << filter_i << s2_q << lvl_q << cnt_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
 }
 
-// The synchronized level has differed from the filtered one on filter_i consecutive
-// edges, this one included (a filter of 0 as 1).
-bool dda_input::flip() const { return s2_q.read() != lvl_q.read() && cnt_q.read() + 1 >= filter_i.read(); }
+// The synchronized level has differed from the filtered one on filter_i ticks without a
+// break, this one included (a filter of 0 as 1).
+bool dda_input::flip() const {
+  return s2_q.read() != lvl_q.read() && tick_i.read() && cnt_q.read() + 1 >= filter_i.read();
+}
 
 void dda_input::comb() {
   level_o.write(lvl_q.read());
@@ -32,7 +34,8 @@ void dda_input::seq() {
   s1_q.write(pin_i.read() != invert_i.read());
   s2_q.write(s1_q.read());
   lvl_q.write(lvl_q.read() != f);
-  cnt_q.write(s2_q.read() != lvl_q.read() && !f ? cnt_q.read() + 1 : 0);
+  const bool differ = s2_q.read() != lvl_q.read();
+  cnt_q.write(!differ || f ? 0 : tick_i.read() ? cnt_q.read() + 1 : cnt_q.read());
 }
 
 }  // namespace dda::sc

@@ -9,7 +9,7 @@
 namespace dda::sc {
 
 SC_MODULE(dda_input) {
-  sc_core::sc_in<bool> clk_i, rst_ni, pin_i, invert_i;
+  sc_core::sc_in<bool> clk_i, rst_ni, pin_i, invert_i, tick_i;
   sc_core::sc_in<std::uint32_t> filter_i;
   sc_core::sc_out<bool> level_o, rise_o;
 

@@ -20,17 +20,22 @@ dda_motion_io::dda_motion_io(sc_core::sc_module_name name) : sc_core::sc_module(
     d.rst_ni(rst_ni);
     d.pin_i(pin_[i]);
     d.invert_i(invert_[i]);
-    d.filter_i(motion::kInputs[i].bit == motion::kProbeBit ? filt_probe_q : filt_sw_q);
+    const bool probe = motion::kInputs[i].bit == motion::kProbeBit;
+    d.tick_i(probe ? every_ : sw_tick_);
+    d.filter_i(probe ? filt_probe_q : filt_sw_q);
     d.level_o(lvl_[i]);
     d.rise_o(rise_[i]);
   }
+  every_.write(true);
+  SC_METHOD(comb_tick);
+  sensitive << cycle_q << filt_tick_q;
   SC_METHOD(comb_pins);
   sensitive << estop_ni << limit_i << home_i << probe_i << pol_q;
   SC_METHOD(comb);
   sensitive << adr_i << step_i << dir_i << pend_i << pdir_i << mode_q << err_estop_q << err_limit_q << probe_armed_q
-            << probed_q << trip_q << pol_q << filt_sw_q << filt_probe_q << latch_x_q << latch_y_q << latch_z_q
-            << probe_x_q << probe_y_q << probe_z_q << snap_x_q << snap_y_q << snap_z_q << snap_cycle_q << snap_level_q
-            << snap_done_q;
+            << probed_q << trip_q << pol_q << filt_sw_q << filt_tick_q << filt_probe_q << latch_x_q << latch_y_q
+            << latch_z_q << probe_x_q << probe_y_q << probe_z_q << snap_x_q << snap_y_q << snap_z_q << snap_cycle_q
+            << snap_level_q << snap_done_q;
   for (std::size_t i = 0; i < in_.size(); ++i) sensitive << lvl_[i] << rise_[i];
   SC_METHOD(seq);
   sensitive << clk_i.pos();
@@ -49,6 +54,13 @@ void dda_motion_io::comb_pins() {
     pin_[i].write(((pins >> b) & 1u) != 0);
     invert_[i].write(((invert >> b) & 1u) != 0);
   }
+}
+
+// The switches' filters count on the clocks whose cycle count has its low IN_FILTER.tick
+// bits all 1.
+void dda_motion_io::comb_tick() {
+  const std::uint32_t mask = (1u << filt_tick_q.read()) - 1;
+  sw_tick_.write((cycle_q.read() & mask) == mask);
 }
 
 dda_motion_io::Wires dda_motion_io::wires() const {
@@ -79,7 +91,8 @@ std::uint32_t dda_motion_io::read(std::uint32_t adr) const {
   if (adr == reg_offset("INPUTS")) return wires().lvl;
   if (adr == reg_offset("IN_POLARITY")) return pol_q.read();
   if (adr == reg_offset("IN_FILTER"))
-    return f("IN_FILTER", "switches", filt_sw_q.read()) | f("IN_FILTER", "probe", filt_probe_q.read());
+    return f("IN_FILTER", "switches", filt_sw_q.read()) | f("IN_FILTER", "tick", filt_tick_q.read()) |
+           f("IN_FILTER", "probe", filt_probe_q.read());
   if (adr == reg_offset("IN_MODE")) return mode_q.read();
   if (adr == reg_offset("TRIP")) return trip_q.read();
   if (adr == reg_offset("LATCH_X")) return latch_x_q.read();
@@ -116,20 +129,25 @@ void dda_motion_io::comb() {
 
 void dda_motion_io::seq() {
   if (!rst_ni.read()) {
-    for (auto* s : {&pol_q, &filt_sw_q, &filt_probe_q, &mode_q, &trip_q, &latch_x_q, &latch_y_q, &latch_z_q, &probe_x_q,
-                    &probe_y_q, &probe_z_q, &snap_x_q, &snap_y_q, &snap_z_q, &snap_cycle_q, &snap_level_q, &snap_done_q,
-                    &cycle_q})
+    for (auto* s : {&pol_q, &filt_sw_q, &filt_tick_q, &filt_probe_q, &mode_q, &trip_q, &latch_x_q, &latch_y_q,
+                    &latch_z_q, &probe_x_q, &probe_y_q, &probe_z_q, &snap_x_q, &snap_y_q, &snap_z_q, &snap_cycle_q,
+                    &snap_level_q, &snap_done_q, &cycle_q})
       s->write(0);
     for (auto* s : {&err_estop_q, &err_limit_q, &probe_armed_q, &probed_q}) s->write(false);
     return;
   }
   const Wires w = wires();
-  const std::uint32_t adr = adr_i.read(), wdat = wdat_i.read(), fmask = (1u << motion::kFilterWidth) - 1;
+  const std::uint32_t adr = adr_i.read(), wdat = wdat_i.read();
   const bool wr = wr_i.read(), clear = clear_i.read(), arm = probe_arm_i.read();
   if (wr && adr == reg_offset("IN_POLARITY")) pol_q.write(wdat & ((1u << motion::kNumInputs) - 1));
   if (wr && adr == reg_offset("IN_FILTER")) {
-    filt_sw_q.write((wdat >> field_of("IN_FILTER", "switches").lsb) & fmask);
-    filt_probe_q.write((wdat >> field_of("IN_FILTER", "probe").lsb) & fmask);
+    const auto fld = [&](std::string_view f) {
+      const auto& d = field_of("IN_FILTER", f);
+      return (wdat >> d.lsb) & ((1u << d.width) - 1);
+    };
+    filt_sw_q.write(fld("switches"));
+    filt_tick_q.write(fld("tick"));
+    filt_probe_q.write(fld("probe"));
   }
   if (wr && adr == reg_offset("IN_MODE")) mode_q.write(wdat & 0x1Fu);
   err_estop_q.write((err_estop_q.read() && !clear) || w.estop);

@@ -28,11 +28,11 @@ SC_MODULE(dda_motion_io) {
   explicit dda_motion_io(sc_core::sc_module_name name);
 
   // The registers (names as in the RTL and motion::kBlockRegs below u_io).
-  sc_core::sc_signal<std::uint32_t> pol_q{"pol_q"}, filt_sw_q{"filt_sw_q"}, filt_probe_q{"filt_probe_q"},
-      mode_q{"mode_q"}, trip_q{"trip_q"}, latch_x_q{"latch_x_q"}, latch_y_q{"latch_y_q"}, latch_z_q{"latch_z_q"},
-      probe_x_q{"probe_x_q"}, probe_y_q{"probe_y_q"}, probe_z_q{"probe_z_q"}, snap_x_q{"snap_x_q"},
-      snap_y_q{"snap_y_q"}, snap_z_q{"snap_z_q"}, snap_cycle_q{"snap_cycle_q"}, snap_level_q{"snap_level_q"},
-      snap_done_q{"snap_done_q"}, cycle_q{"cycle_q"};
+  sc_core::sc_signal<std::uint32_t> pol_q{"pol_q"}, filt_sw_q{"filt_sw_q"}, filt_tick_q{"filt_tick_q"},
+      filt_probe_q{"filt_probe_q"}, mode_q{"mode_q"}, trip_q{"trip_q"}, latch_x_q{"latch_x_q"}, latch_y_q{"latch_y_q"},
+      latch_z_q{"latch_z_q"}, probe_x_q{"probe_x_q"}, probe_y_q{"probe_y_q"}, probe_z_q{"probe_z_q"},
+      snap_x_q{"snap_x_q"}, snap_y_q{"snap_y_q"}, snap_z_q{"snap_z_q"}, snap_cycle_q{"snap_cycle_q"},
+      snap_level_q{"snap_level_q"}, snap_done_q{"snap_done_q"}, cycle_q{"cycle_q"};
   sc_core::sc_signal<bool> err_estop_q{"err_estop_q"}, err_limit_q{"err_limit_q"}, probe_armed_q{"probe_armed_q"},
       probed_q{"probed_q"};
 
@@ -40,6 +40,9 @@ SC_MODULE(dda_motion_io) {
   // The inputs in motion::kInputs' order, named by its instances (u_estop, u_lxn, ...).
   std::array<std::unique_ptr<dda_input>, motion::kInputs.size()> in_;
   std::array<sc_core::sc_signal<bool>, motion::kInputs.size()> pin_, invert_, lvl_, rise_;
+  // The filters' ticks: the switches' (IN_FILTER.tick of the cycle count), the probe's
+  // on every clock.
+  sc_core::sc_signal<bool> sw_tick_{"sw_tick"}, every_{"every"};
   // The wires of this cycle (the RTL's): the stops, causes and events.
   struct Wires {
     std::uint32_t lvl = 0, limit_hits = 0, home_ev = 0, trip_now = 0;
@@ -48,6 +51,7 @@ SC_MODULE(dda_motion_io) {
   Wires wires() const;
   std::uint32_t read(std::uint32_t adr) const;
   void comb_pins();
+  void comb_tick();
   void comb();
   void seq();
 };

@@ -21,32 +21,35 @@ void InputNoise::configure(bool redraw) {
   if (redraw) {
     polarity_ = std::uint32_t(rng_()) & kAll;
     filter_ = 2 + std::uint32_t(rng_() % 10);
+    tick_ = std::uint32_t(rng_() % 3);
     probe_filter_ = 2 + std::uint32_t(rng_() % 5);
     homing_ = std::uint32_t(rng_() % 8);
   }
   forced_ = glitch_ = 0;
   glitch_left_ = 0;
   const std::uint32_t mode = homing_ << field_of("IN_MODE", "home_x").lsb | std::uint32_t(rng_() % 2);
-  d_.set_inputs(polarity_, filter_, probe_filter_, mode);
+  d_.set_inputs(polarity_, filter_, probe_filter_, mode, tick_);
   settle();
   d_.clear();
 }
 
 void InputNoise::settle() {
   forced_ = 0;
-  m_.idle(int(filter_ + probe_filter_ + 4));
+  m_.idle(switch_clocks() + int(probe_filter_) + 4);
 }
 
 void InputNoise::each_cycle() {
-  // A glitch: one input active for fewer clocks than its filter, then at rest again for
-  // at least a clock before the next.
+  // A glitch: one input active for no longer than its filter surely ignores (a switch's
+  // (filter - 1) << tick clocks: its ticks come 2^tick clocks apart, so no more than
+  // filter - 1 of them fall in it), then at rest again for at least a clock before the
+  // next.
   const bool was = glitch_left_ > 0;
   if (glitch_left_ > 0) --glitch_left_;
   if (!was && rng_() % 200 == 0) {
     const int bit = kInputs[rng_() % kInputs.size()].bit;
-    const std::uint32_t f = bit == kProbeBit ? probe_filter_ : filter_;
+    const std::uint32_t longest = bit == kProbeBit ? probe_filter_ - 1 : (filter_ - 1) << tick_;
     glitch_ = 1u << bit;
-    glitch_left_ = 1 + int(rng_() % (f - 1));
+    glitch_left_ = 1 + int(rng_() % longest);
     ++glitches_;
   }
   const std::uint32_t active = forced_ | (glitch_left_ > 0 ? glitch_ : 0u);
@@ -70,7 +73,7 @@ const char* InputNoise::trip() {
   switch (rng_() % 4) {
     case 0:  // the E-stop: stopped, and stopped until cleared once released
       kind = "estop";
-      hold(1u << input_bit("estop"), int(filter_) + 3 + int(rng_() % 20));
+      hold(1u << input_bit("estop"), switch_clocks() + 3 + int(rng_() % 20));
       settle();
       if (!status("err_estop") || !status("aborted") || get_field("STATUS", "level", d_.read("STATUS")) != 0)
         fail("an E-stop did not stop the block");
@@ -87,7 +90,7 @@ const char* InputNoise::trip() {
     case 2:  // a home switch in homing mode: its edge stops the motion
       kind = "home";
       d_.write("IN_MODE", mode | 1u << (field_of("IN_MODE", "home_x").lsb + int(axis)));
-      hold(1u << (kHomeBit + int(axis)), int(filter_) + 2);
+      hold(1u << (kHomeBit + int(axis)), switch_clocks() + 2);
       d_.wait_rest();
       if ((d_.read("TRIP") & (1u << (kHomeBit + int(axis)))) == 0) fail("a home edge in homing mode did not trip");
       break;

@@ -36,7 +36,8 @@ class InputNoise {
   WishboneMaster& m_;
   MotionDriver& d_;
   std::mt19937_64 rng_;
-  std::uint32_t polarity_ = 0, filter_ = 1, probe_filter_ = 1, homing_ = 0;
+  int switch_clocks() const { return int(filter_ << tick_); }  // a switch's level holding that long is seen
+  std::uint32_t polarity_ = 0, filter_ = 1, tick_ = 0, probe_filter_ = 1, homing_ = 0;
   std::uint32_t forced_ = 0;  // inputs held active (kInputs' order)
   std::uint32_t glitch_ = 0;  // the input a glitch holds active, for glitch_left_ more cycles
   int glitch_left_ = 0;

@@ -389,23 +389,33 @@ void soft_stops(BusMaster& m, MotionDriver& d, std::mt19937_64& rng, const Expec
   d.preset(Point{});
 }
 
-// IN_FILTER at its longest: an input held active is seen (INPUTS) only after the whole
-// filter, and released only after it again.
+// IN_FILTER at its longest: the probe's filter at its most clocks, a switch's at its most
+// ticks (of 4 clocks: seen 57 to 60 clocks after it differs), then at two ticks of 2^14
+// clocks (a tick on the cycle count's high bits): an input held active is seen (INPUTS)
+// only after the filter, and released only after it again.
 void filter_ranges(MachineSim& t, BusMaster& m, MotionDriver& d, const Expect& outer) {
-  const std::uint32_t top = (1u << kFilterWidth) - 1;
-  d.set_inputs(0, top, top, 0);
-  for (const char* in : {"home_z", "probe"}) {
-    const Expect ex([&](bool ok, const std::string& what) { outer(ok, std::string(in) + ": " + what); });
-    t.force = [&](MachinePins& p) { p = MachinePins::from_bits(p.bits() | in_bit(in)); };
-    m.idle(int(top) - 64);
-    ex.eq(d.read("INPUTS") & in_bit(in), 0, "not seen before the filter's clocks");
-    m.idle(128);
-    ex.eq(d.read("INPUTS") & in_bit(in), in_bit(in), "seen after them");
+  const std::uint32_t probe_top = (1u << kFilterWidth) - 1, sw_top = (1u << kSwitchFilterWidth) - 1;
+  struct Case {
+    const char* in;
+    std::uint32_t sw, tick;
+    int before, after;  // clocks after the force: not seen yet, seen (a tick's phase is the cycle count's)
+  };
+  const int p = 1 << 14;
+  for (const Case& c : {Case{"probe", 2, 0, int(probe_top) - 64, 128}, Case{"home_z", sw_top, 2, 40, 40},
+                        Case{"limit_x_pos", 2, 14, p - 8, p + 16}}) {
+    d.set_inputs(0, c.sw, probe_top, 0, c.tick);
+    const Expect ex([&](bool ok, const std::string& what) { outer(ok, std::string(c.in) + ": " + what); });
+    t.force = [&](MachinePins& pins) { pins = MachinePins::from_bits(pins.bits() | in_bit(c.in)); };
+    m.idle(c.before);
+    ex.eq(d.read("INPUTS") & in_bit(c.in), 0, "not seen before the filter");
+    m.idle(c.after);
+    ex.eq(d.read("INPUTS") & in_bit(c.in), in_bit(c.in), "seen after it");
     t.force = nullptr;
-    m.idle(int(top) - 64);
-    ex.eq(d.read("INPUTS") & in_bit(in), in_bit(in), "still seen before the filter's clocks");
-    m.idle(128);
-    ex.eq(d.read("INPUTS") & in_bit(in), 0, "released after them");
+    m.idle(c.before);
+    ex.eq(d.read("INPUTS") & in_bit(c.in), in_bit(c.in), "still seen before the filter");
+    m.idle(c.after);
+    ex.eq(d.read("INPUTS") & in_bit(c.in), 0, "released after it");
+    d.clear();
   }
   d.set_inputs(0, 2, 2, 0);
 }
