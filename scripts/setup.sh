@@ -14,6 +14,7 @@ DEMO_PACKAGES=(
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm gtkwave
+  fpga-icestorm-chipdb  # icetime: the device databases it times a routed design with
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
   z3 librsvg2-bin clang-format clang-tidy parallel tao-pegtl-dev python3
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers

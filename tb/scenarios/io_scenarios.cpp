@@ -186,7 +186,9 @@ void home_each_axis(BusTarget& block, const Expect& outer) {
 
 // A probing move (G38.2): down in Z toward a surface; the block stops on the probe and
 // PROBE_* holds the position at contact (exact at the slow speed: the filter's delay
-// is shorter than a step); a move that never touches is an error.
+// is shorter than a step); a move that never touches is an error. Before it, the probe
+// touched and released while disarmed (a plain move through the surface and back, with
+// IN_MODE.probe_stop on): no latch, no interrupt, no stop.
 void probing(BusTarget& block, const Expect& ex) {
   fresh(block);
   MachineSwitches sw;
@@ -197,6 +199,19 @@ void probing(BusTarget& block, const Expect& ex) {
   d.set_pacing(kAccel, kVmin);
   d.set_inputs(0, 2, 3, 0);
   d.write("IRQ_ENABLE", field_bit("IRQ_ENABLE", "probe"));
+  d.write("IN_MODE", field_bit("IN_MODE", "probe_stop"));
+  queue_move(d, Point{0, 0, -25}, kFast);
+  d.drain();
+  ex.eq(d.position(), Point{0, 0, -25}, "disarmed: the move through the surface runs to its end");
+  ex.eq((d.read("INPUTS") >> kProbeBit) & 1u, 1, "disarmed: the probe is seen touching");
+  queue_move(d, Point{0, 0, 25}, kFast);
+  d.drain();
+  ex.eq(d.position(), Point{}, "disarmed: back up");
+  ex.eq(status(d, "probed"), 0, "disarmed: STATUS.probed stays 0");
+  ex.eq(get_field("IRQ_STATUS", "probe", d.read("IRQ_STATUS")), 0, "disarmed: no IRQ_STATUS.probe");
+  ex(!t.outputs().irq, "disarmed: no interrupt");
+  ex.eq(d.read("PROBE_Z"), 0, "disarmed: PROBE_Z latched nothing");
+  d.write("IN_MODE", 0);
   const Point hit = probe_move(d, Point{2, 0, -100}, kSlow);
   ex.eq(hit.z, -20, "hit.z == -20");
   ex(t.outputs().irq, "t.outputs().irq");
@@ -307,7 +322,7 @@ const std::array<IoScenario, 10> kIoScenarios{{
     {"limit-hard", "a limit hit during a move, stopped as a hard stop", limit_hard},
     {"limit-decel", "a limit hit during a paced move, stopped at ACCEL", limit_decel},
     {"homing", "a homing cycle on each axis", home_each_axis},
-    {"probing", "a probing move that stops on the probe, and one that never touches", probing},
+    {"probing", "a touch while disarmed, a probing move that stops on the probe, and one that never touches", probing},
     {"snapshot", "snapshots while two axes run", snapshot_moving},
     {"glitches", "pulses shorter than the filter on every input", glitches},
     {"overflow", "the queue filled to its depth and one entry more", queue_overflow},
