@@ -40,6 +40,13 @@ const std::array<std::array<std::size_t, 4>, kInputs.size()>& input_regs() {
 
 std::uint32_t mode_bit(std::string_view f) { return 1u << field_of("IN_MODE", f).lsb; }
 
+// Whether the switches' filters count on this edge: the cycle count's low `tick` bits
+// (IN_FILTER.tick) all 1.
+bool filter_tick(std::uint64_t cycle, std::uint32_t tick) {
+  const std::uint64_t mask = (std::uint64_t{1} << tick) - 1;
+  return (cycle & mask) == mask;
+}
+
 }  // namespace
 
 InputEdge input_edge(const InputRegs& r, bool pin, bool invert, bool tick, std::uint32_t filter) {
@@ -55,11 +62,6 @@ InputEdge input_edge(const InputRegs& r, bool pin, bool invert, bool tick, std::
   e.next.lvl = r.lvl != flip;
   e.next.cnt = !differ || flip ? 0 : tick ? inc : r.cnt;
   return e;
-}
-
-bool filter_tick(std::uint64_t cycle, std::uint32_t tick) {
-  const std::uint64_t mask = (std::uint64_t{1} << tick) - 1;
-  return (cycle & mask) == mask;
 }
 
 InputRegs MotionModel::input(std::size_t i) const {

@@ -294,9 +294,6 @@ struct InputEdge {
   InputRegs next;
 };
 InputEdge input_edge(const InputRegs& r, bool pin, bool invert, bool tick, std::uint32_t filter);
-// Whether the switches' filters count on the edge after a clock whose cycle count is
-// `cycle`: IN_FILTER.tick's low bits of it all 1.
-bool filter_tick(std::uint64_t cycle, std::uint32_t tick);
 // The edge-by-edge diagram of docs/design.md ("Step and direction timing"): one stage
 // with steplen 3, stepspace 2, dirsetup 2, dirhold 1, the core stepping + then - as
 // fast as the stage lets it (`dda gen-params --kind stepdir-diagram`).
