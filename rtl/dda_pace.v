@@ -58,7 +58,7 @@ module dda_pace #(
   output wire [RF-1:0] speed_o         // v
 );
 
-  localparam integer Latency = 5 * (NF + 1) + 1;  // kNormLatency: the norm unit's (rtl/dda_norm.v)
+  localparam integer Latency = 5 * ((NF + 2) / 2) + 1;  // kNormLatency: the norm unit's (rtl/dda_norm.v)
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
   localparam integer MW = RF - OF + OW;  // the cruise speed times the override (below 2^MW)
 

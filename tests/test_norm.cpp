@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pacer's norm unit in RTL (rtl/dda_norm.v) against its reference
 // (motion::iteration_distance): the same d, bit for bit, exactly kNormLatency edges after
-// the edge that starts it, on random integrands and capacities of every size, the
-// extremes (an integrand equal to its capacity, 0, inactive axes) and the iterations of
-// planned arcs; a start while busy starts again.
+// the edge that starts it (its operands changed after kNormOperandEdges), on random
+// integrands and capacities of every size, the extremes (an integrand equal to its
+// capacity, 0, inactive axes) and the iterations of planned arcs; a start while busy
+// starts again.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
@@ -41,8 +42,9 @@ class Norm {
     top_->cap_i = o.cap;
     top_->cap_z_i = o.cap_z;
   }
-  // Starts on one edge with other operands (the command loads on it), then holds these;
-  // returns d after kNormLatency edges, checking busy_o and that d_o held until then.
+  // Starts on one edge with other operands (the command loads on it), then holds these
+  // through edge kNormOperandEdges and changes them after (the unit has read them); returns
+  // d after kNormLatency edges, checking busy_o and that d_o held until then.
   std::uint64_t run(const Command& c, const RegState& r) {
     const std::uint64_t before = top_->d_o;
     top_->start_i = 1;
@@ -51,6 +53,10 @@ class Norm {
     top_->start_i = 0;
     operands(c, r);
     for (int i = 1; i < kNormLatency; ++i) {
+      if (i == kNormOperandEdges + 1) {
+        top_->v_x_i = top_->v_y_i = top_->v_z_i = 0;
+        top_->cap_i = top_->cap_z_i = 7;
+      }
       edge();
       CHECK(top_->busy_o);
       CHECK(top_->d_o == before);

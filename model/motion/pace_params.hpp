@@ -24,8 +24,13 @@ inline constexpr int kOverrideBits = 10;            // the override's width
 // per clock: ready kOverrideBits clocks after a take or an override change.
 inline constexpr int kOverrideClocks = kOverrideBits;
 // Clocks from a step to the fresh d: one divider and one squarer serve the three axes,
-// a bit per clock (rtl/dda_norm.v): three divisions, the last square, the sum, the root.
-inline constexpr int kNormLatency = 5 * (kNormFrac + 1) + 1;
+// two bits per clock (rtl/dda_norm.v): three divisions, the last square, the sum, the
+// root, each of kNormClocks clocks.
+inline constexpr int kNormClocks = (kNormFrac + 2) / 2;  // ceil((kNormFrac + 1) / 2)
+inline constexpr int kNormLatency = 5 * kNormClocks + 1;
+// The norm unit reads z's operands kNormOperandEdges edges after its start, x's and
+// y's before: they must hold until then.
+inline constexpr int kNormOperandEdges = 2 * kNormClocks + 1;
 inline constexpr int kMarginShift = 3;  // ramp down 2^-kMarginShift step before the end
 // The phase saturates below 2^kPhaseBits (256 steps of path): a speed the core cannot
 // follow (above one iteration every other clock, or one stepping iteration per kNormLatency + 1

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // SystemC model of the pacer's norm unit (rtl/dda_norm.v): same ports, registers and
 // schedule (one divider and one squarer serving the three axes in turn, a square root,
-// a bit per clock each).
+// two bits per clock each).
 #pragma once
 
 #include <systemc>
@@ -32,7 +32,7 @@ SC_MODULE(dda_norm) {
   void square();  // one step of the squarer
   void root();    // one step of the square root
 
-  int aw_, nf_, qw_, sw_;
+  int aw_, nf_, qw_, qc_, sw_, rw_;  // (the RTL's AW, NF, QW, QC, SW, RW)
 };
 
 }  // namespace dda::sc
