@@ -6,18 +6,25 @@
 // the norm unit (rtl/dda_norm.v) giving the DDA's path length per iteration d.
 //
 // Every clock a piece runs and the block lets the core go on (advance_i), the phase
-// adds v; the core iterates when the phase reaches d (in d's units: D = d << (RF - NF)),
-// taking D off. The phase saturates below 2^PW. d is fresh Latency clocks after a take
-// or a stepping iteration: the norm unit starts on every take and every iteration
-// (operands: the core's registers on the edge after, which a non-stepping iteration
-// leaves as they were), and while it runs after a take or a step (busy_q) the core
-// waits. v ramps by at most a per clock towards its target: the entry's cruise speed
-// times the override, clamped to its limit; the exit speed (0 with no next piece) once
-// the braking distance s, less the exit speed's, reaches the distance still to go less
-// 2^-MarginShift step; never below vmin; 0 on a hold. The product of the cruise speed and
-// the override is formed a bit per clock, OW clocks after a take or an override change (a
-// take clamps the product in force to the new limit at once). s adds v on a ramp step
-// up from above vmin and takes the new v off on one down to above vmin.
+// adds v; the core iterates when the phase reaches the pacer's d (d_q; in the phase's
+// units D = d << (RF - NF)), taking D off. The phase is signed and saturates below 2^PW.
+// Between two steps the norm operands hold, so a run of iterations has one d. A step
+// comes in on the edge after its iteration (stepped_i with pend_q): the norm unit starts
+// on the new run's registers, and the pacer goes on with the d it has, provisionally,
+// counting those iterations (m_q, fresh_q low). When the unit has the run's own d, the
+// pacer takes it and corrects the phase and the distance to go by m_q times the
+// difference (corr), as if the run had been paced with it from the start. A step that
+// comes while the unit is at work is due (due_q): its start waits for the unit. The core
+// waits on the clock a step comes in, while the unit reads its operands (OperandEdges
+// edges after its start), on a correction's clock, while a step is due, and after a take
+// until the first run's d is in (first_q). v ramps by at most a per clock towards its
+// target: the entry's cruise speed times the override, clamped to its limit; the exit
+// speed (0 with no next piece) once the braking distance s, less the exit speed's,
+// reaches the distance still
+// to go less 2^-MarginShift step; never below vmin; 0 on a hold. The product of the
+// cruise speed and the override is formed a bit per clock, OW clocks after a take or an
+// override change (a take clamps the product in force to the new limit at once). s adds
+// v on a ramp step up from above vmin and takes the new v off on one down to above vmin.
 `include "dda_params.vh"
 
 // Instantiated by the motion block (rtl/dda_motion.v, u_pace).
@@ -59,36 +66,58 @@ module dda_pace #(
 );
 
   localparam integer Latency = 5 * ((NF + 2) / 2) + 1;  // kNormLatency: the norm unit's (rtl/dda_norm.v)
+  localparam integer OperandEdges = 2 * ((NF + 2) / 2) + 1;  // kNormOperandEdges: it reads z's then
+  localparam integer BW = $clog2(Latency + 1);  // busy_q counts Latency .. 0
+  localparam integer MCW = $clog2(Latency - OperandEdges + 2);  // m_q: up to Latency - OperandEdges + 1
+  localparam integer CW = NF + MCW + 4;  // corr: m_q times a difference of two d's, signed
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
   localparam integer MW = RF - OF + OW;  // the cruise speed times the override (below 2^MW)
 
   reg  [RF-1:0] v_q      /* verilator public_flat_rd */;
-  reg  [PW-1:0] ph_q     /* verilator public_flat_rd */;
+  reg  [PW:0]   ph_q     /* verilator public_flat_rd */;  // signed: below 0 after a correction
   reg  [SW-1:0] s_q      /* verilator public_flat_rd */;
   reg  [SW-1:0] rem_q    /* verilator public_flat_rd */;
   reg  [31:0]   cruise_q /* verilator public_flat_rd */;
   reg  [31:0]   limit_q  /* verilator public_flat_rd */;
   reg  [31:0]   exit_q   /* verilator public_flat_rd */;
   reg  [31:0]   brake_q  /* verilator public_flat_rd */;  // the entry's brake_exit
-  reg  [6:0]    busy_q   /* verilator public_flat_rd */;  // clocks until d is fresh
+  reg  [BW-1:0] busy_q   /* verilator public_flat_rd */;  // clocks until the norm unit's d is new
   reg           pend_q   /* verilator public_flat_rd */;  // an iteration on the last edge
-  wire [NF+1:0] d;
+  reg           first_q  /* verilator public_flat_rd */;  // a take: the first run's d is not in yet
+  reg           due_q    /* verilator public_flat_rd */;  // a step came while the unit was at work
+  reg           fresh_q  /* verilator public_flat_rd */;  // d_q is the run's own
+  reg  [MCW-1:0] m_q     /* verilator public_flat_rd */;  // the run's provisional iterations
+  reg  [NF+1:0] d_q      /* verilator public_flat_rd */;  // the d the pacer paces with
+  wire [NF+1:0] d;          // the norm unit's last
   wire          norm_busy;  // (the pacer counts the norm unit's clocks itself: busy_q)
 
+  // A step on the last edge, or one due, starts the unit on the new run once it is free;
+  // a take starts it on the new piece's first run. The unit free with the run's own d:
+  // the pacer takes it (load) with the correction.
+  wire seen  = pend_q & stepped_i;
+  wire free  = busy_q == '0;
+  wire load  = free & ~fresh_q;
+  wire start = take_i | (free & (seen | due_q));
+  wire signed [NF+2:0]  delta = $signed({1'b0, d}) - $signed({1'b0, d_q});
+  wire signed [CW-1:0]  corr  = $signed({1'b0, m_q}) * delta;  // x 2^-NF steps
+
   dda_norm #(.AW(AW), .NF(NF)) u_norm (
-    .clk_i(clk_i), .rst_ni(rst_ni), .start_i(take_i | iterate_o),
+    .clk_i(clk_i), .rst_ni(rst_ni), .start_i(start),
     .v_x_i(v_x_i), .v_y_i(v_y_i), .v_z_i(v_z_i), .cap_i(cap_i), .cap_z_i(cap_z_i),
     .busy_o(norm_busy), .d_o(d)
   );
 
   // Distances at DF fraction bits.
-  wire [PW-1:0] dd     = PW'(d) << (RF - NF);                       // D, at the phase's scale
-  wire [SW-1:0] d_dist = SW'(d) << (DF - NF);
-  wire [SW-1:0] ph_dist = SW'(ph_q[PW-1:RF-DF]);
+  wire [PW-1:0] dd     = PW'(d_q) << (RF - NF);                     // D, at the phase's scale
+  wire [SW-1:0] d_dist = SW'(d_q) << (DF - NF);
   wire [SW-1:0] v_dist = SW'(v_q[RF-1:RF-DF]);
   wire [SW-1:0] margin = SW'(1) << (DF - MarginShift);
   wire [SW-1:0] eb     = next_queued_i ? SW'(brake_q) << (DF - LF) : '0;
-  wire          decel  = {1'b0, s_q} + {1'b0, ph_dist} + {1'b0, margin} >= {1'b0, rem_q} + {1'b0, eb};
+  // The phase as a distance (floor, also below 0) against the distance to go.
+  wire signed [SW+1:0] ph_dist = (SW+2)'($signed(ph_q[PW:RF-DF]));
+  wire signed [SW+1:0] decel_l = $signed({2'b0, s_q}) + ph_dist + $signed({2'b0, margin});
+  wire signed [SW+1:0] decel_r = $signed({2'b0, rem_q}) + $signed({2'b0, eb});
+  wire          decel  = decel_l >= decel_r;
 
   // The cruise speed times the override, clamped to the limit (eff_q), by shift and add:
   // a bit of the override per clock (mplier_q, shifting down) adds the cruise speed
@@ -118,9 +147,9 @@ module dda_pace #(
   wire [RF-1:0] target = hold_i ? '0 : t_dn > t_min ? t_dn : t_min;
   wire unused_t = &{1'b0, eff_d[MW-1:RF], norm_busy};
 
-  wire d_valid = busy_q == 7'd0 && !pend_q;
-  wire [PW:0] ph_sum = {1'b0, ph_q} + (PW+1)'(v_q);
-  assign iterate_o = advance_i & running_i & d_valid & (ph_sum >= (PW+1)'(dd));
+  wire blocked = first_q | due_q | seen | load | (busy_q > BW'(Latency - OperandEdges + 1));
+  wire signed [PW+1:0] ph_sum = $signed({ph_q[PW], ph_q}) + $signed((PW+2)'(v_q));
+  assign iterate_o = advance_i & running_i & ~blocked & (ph_sum >= $signed((PW+2)'(dd)));
   assign speed_o   = v_q;
 
   // The ramp.
@@ -129,7 +158,13 @@ module dda_pace #(
   wire [RF-1:0] v_up  = target - v_q > a ? v_q + a : target;
   wire [RF-1:0] v_dn  = v_q - target > a ? v_q - a : target;
   wire [SW-1:0] vdn_dist = SW'(v_dn[RF-1:RF-DF]);
-  wire [PW:0]   ph_next = ph_sum - (iterate_o ? (PW+1)'(dd) : '0);
+  // The phase: v while the core may go on, less D on an iteration or the correction.
+  wire signed [PW+1:0] ph_add  = $signed({ph_q[PW], ph_q}) + (advance_i ? $signed((PW+2)'(v_q)) : '0);
+  wire signed [PW+1:0] ph_sub  = iterate_o ? $signed((PW+2)'(dd)) : $signed((PW+2)'(corr)) <<< (RF - NF);
+  wire signed [PW+1:0] ph_next = ph_add - ph_sub;
+  wire                 ph_sat  = ~ph_next[PW+1] & ph_next[PW];  // 2^PW or above
+  // The distance to go less d on an iteration, or the correction; at least 0.
+  wire signed [SW+1:0] rem_c   = $signed({2'b0, rem_q}) - ($signed((SW+2)'(corr)) <<< (DF - NF));
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -143,6 +178,11 @@ module dda_pace #(
       brake_q  <= '0;
       busy_q   <= '0;
       pend_q   <= 1'b0;
+      first_q  <= 1'b0;
+      due_q    <= 1'b0;
+      fresh_q  <= 1'b0;
+      m_q      <= '0;
+      d_q      <= '0;
       ovr_q    <= '0;
       mplier_q <= '0;
       mcand_q  <= '0;
@@ -164,13 +204,27 @@ module dda_pace #(
         macc_q   <= '0;
         mcnt_q   <= 4'(OW);
       end
-      // The norm unit: d is fresh Latency clocks after a stepping iteration started it.
-      if (pend_q && stepped_i) busy_q <= 7'(Latency - 1);
-      else if (busy_q != 7'd0) busy_q <= busy_q - 7'd1;
+      // The norm unit: its d is new Latency clocks after its start.
+      if (start) busy_q <= BW'(Latency);
+      else if (!free) busy_q <= busy_q - 1'b1;
+      if (iterate_o && !fresh_q) m_q <= m_q + 1'b1;
+      if (load) begin
+        d_q     <= d;
+        fresh_q <= 1'b1;
+        first_q <= 1'b0;
+      end
+      if (start) begin
+        fresh_q <= 1'b0;
+        due_q   <= 1'b0;
+        m_q     <= '0;
+      end else if (seen) begin
+        due_q   <= 1'b1;
+      end
       pend_q <= iterate_o;
       if (iterate_o) rem_q <= rem_q > d_dist ? rem_q - d_dist : '0;
+      else if (load) rem_q <= rem_c[SW+1] ? '0 : rem_c[SW-1:0];
       if (!running_i) ph_q <= '0;
-      else if (advance_i) ph_q <= ph_next[PW] ? {PW{1'b1}} : ph_next[PW-1:0];
+      else if (advance_i || load) ph_q <= ph_sat ? {1'b0, {PW{1'b1}}} : ph_next[PW:0];
       if (advance_i && running_i) begin
         if (accel_i == 32'd0) begin
           v_q <= target;
@@ -196,8 +250,11 @@ module dda_pace #(
         exit_q   <= exit_i;
         brake_q  <= brake_exit_i;
         rem_q    <= SW'(length_i) << (DF - LF);
-        busy_q   <= 7'(Latency);
         pend_q   <= 1'b0;
+        first_q  <= 1'b1;
+        due_q    <= 1'b0;
+        fresh_q  <= 1'b0;
+        m_q      <= '0;
       end
     end
   end

@@ -198,7 +198,7 @@ TEST_CASE("cli input: a feed the block cannot follow is refused, naming the high
   const std::string circle = "--a 2000 --b 2000 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
   const std::string ellipse = "--a 2000 --b 500 --from 2000,0 --to 2000,0 --accel 4e7 --clock 4e7";
   const std::string quarter =
-      "--a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --accel 1.5e6 --vmin 1000 "
+      "--a 300 --b 200 --preload half --from-theta 0 --to-theta 90 --accel 1.5e7 --vmin 1000 "
       "--clock 2e6";
   const std::string refusal = "--feed-rate 5000000 steps/s is beyond what the block follows on this path";
   expect_refused(s, "feed " + circle + " --feed-rate 5e6", refusal);

@@ -269,24 +269,25 @@ TEST_CASE("cli program: planned speeds, the machine file, the speed picture and 
   const Result bad_file = run_dda(s, "stats --machine-config " + prog.string() + p);
   CHECK(bad_file.status == 2);
   CHECK(bad_file.err.rfind("dda: error: machine config '" + prog.string() + "': not JSON: ", 0) == 0);
-  // The slowest clock the block follows the plan at: a diagonal of 2 x 2 mm at 600 mm/min
-  // (10 mm/s, reached at 100 mm/s^2: 200 path steps/s at 0.05 mm) takes 141 iterations
-  // a second (sqrt(2) steps of path each), every one stepping X and Y together: 107
-  // clocks each at most.
-  write_file(prog, "G21 G1 X2 Y2 F600\nM2\n");
-  const double slowest = 200 / std::sqrt(2.0) * 107;
+  // The slowest clock the block follows the plan at: a diagonal of 100 x 100 mm at 3000
+  // mm/min (50 mm/s, reached at 100 mm/s^2: 1000 path steps/s at 0.05 mm) takes 707
+  // iterations a second (sqrt(2) steps of path each), every one stepping X and Y
+  // together: 57 clocks each at most (the norm unit's latency from one step to the next,
+  // and the clock it hands its d over on). (ACCEL holds 100 mm/s^2 from 11,449 Hz on.)
+  write_file(prog, "G21 G1 X100 Y100 F3000\nM2\n");
+  const double slowest = 1000 / std::sqrt(2.0) * 57;
   const std::string set = " --out-dir " + (s.dir / "set").string();
   const Result slow =
-      run_dda(s, "vectors --bus --speeds --step 0.05 --accel 200 --min-speed 30 --clock 15000" + set + p);
+      run_dda(s, "vectors --bus --speeds --step 0.05 --accel 200 --min-speed 30 --clock 38000" + set + p);
   CHECK(slow.status == 2);
   const std::string lead = "dda: error: the planned speeds need a clock of at least ";
   REQUIRE(slow.err.rfind(lead, 0) == 0);
   CHECK(std::stod(slow.err.substr(lead.size())) == Approx(slowest).epsilon(1e-4));
-  CHECK(slow.err.find(" Hz with a 0.05 mm step, not 15000 Hz: the core takes a stepping iteration at most every "
-                      "107 clocks and any iteration at most every 2") != std::string::npos);
+  CHECK(slow.err.find(" Hz with a 0.05 mm step, not 38000 Hz: an iteration takes a clock, one that steps 25, "
+                      "steps come at most every 57 clocks") != std::string::npos);
   CHECK(!fs::exists(s.dir / "set"));
   const Result fast =
-      run_dda(s, "vectors --bus --speeds --step 0.05 --accel 200 --min-speed 30 --clock 15500" + set + p);
+      run_dda(s, "vectors --bus --speeds --step 0.05 --accel 200 --min-speed 30 --clock 42000" + set + p);
   CHECK(fast.status == 0);
   CHECK(fs::exists(s.dir / "set" / "counts.hex"));
   // A feed move without F and no default feed: the block and the remedy.

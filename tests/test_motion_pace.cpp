@@ -26,21 +26,33 @@ constexpr double kFeed = 1e5;    // steps/s
 constexpr double kAccel = 2e7;   // steps/s^2
 constexpr double kVmin = 2000;   // steps/s
 
-std::uint32_t speed_field(double steps_per_s) { return dda::speed_field(steps_per_s, kClock); }
-std::uint32_t accel_field(double a) { return std::uint32_t(dda::accel_field(a, kClock)); }
+std::uint32_t speed_field(double steps_per_s, double clock = kClock) { return dda::speed_field(steps_per_s, clock); }
+std::uint32_t accel_field(double a, double clock = kClock) { return std::uint32_t(dda::accel_field(a, clock)); }
+
+// A run's clock, feed, acceleration and minimum speed, and the monitor's samples per
+// window (0 clocks per sample: the monitor's own choice).
+struct Rate {
+  double clock = kClock, feed = kFeed, accel = kAccel, vmin = kVmin;
+  int subs = 4;
+  std::uint64_t sub_clocks = 0;
+};
 
 // The RTL beside the reference model, its pins watched, a master and a driver.
 struct Bench {
+  Rate r;
   MotionHarness h;
-  SpeedWatch watch{h, MotionLimits{kClock, kFeed, kAccel}};
+  SpeedWatch watch{h};
   WishboneMaster m{watch, 1, false, 0};
   MotionDriver d{m, 2, false};
 
-  Bench() {
+  explicit Bench(const Rate& rate = Rate{}) : r(rate) {
+    MotionLimits lim{r.clock, r.feed, r.accel};
+    lim.subs = r.subs;
+    watch.watch(lim, r.sub_clocks);
     watch.set_reset(false);
     m.idle(2);
     watch.set_reset(true);
-    d.set_pacing(accel_field(kAccel), speed_field(kVmin));
+    d.set_pacing(accel_field(r.accel, r.clock), speed_field(r.vmin, r.clock));
   }
   std::uint32_t status() { return m.read(reg_offset("STATUS")); }
   bool status_bit(std::string_view f) { return get_field("STATUS", f, status()) != 0; }
@@ -48,14 +60,15 @@ struct Bench {
   void queue(const Plan& plan) {
     std::vector<Command> cmds;
     for (const auto& p : plan.pieces) cmds.push_back(p.cmd);
-    const std::vector<PaceEntry> e = pace_entries(cmds, speed_field(kFeed), speed_field(kVmin), accel_field(kAccel));
+    const std::vector<PaceEntry> e =
+        pace_entries(cmds, speed_field(r.feed, r.clock), speed_field(r.vmin, r.clock), accel_field(r.accel, r.clock));
     d.preset(plan.from);
     start = h.cycle();
     for (std::size_t i = 0; i < plan.pieces.size(); ++i) d.queue(plan.pieces[i].cmd, 0, plan.pieces[i].rot, e[i]);
   }
   // Seconds since the first entry was queued (after drain(): the run's time, within a
   // status poll).
-  double seconds() const { return double(h.cycle() - start) / kClock; }
+  double seconds() const { return double(h.cycle() - start) / r.clock; }
   std::uint64_t start = 0;
   // How far the pins took the tool from the start (along a line from the origin: its path).
   double gone() const {
@@ -227,4 +240,71 @@ TEST_CASE("pace block: two blocks side by side, each in its own Verilator contex
   b3.queue(plan_line(Point{}, Point{30, 10, 0}, Preload::Half));
   b3.d.drain();
   CHECK(b3.d.position() == Point{30, 10, 0});
+}
+
+namespace {
+
+// The block follows 400,000 path steps/s on a 40 MHz clock with 4e7 steps/s^2 (and the
+// minimum speed a stop from which takes a step). The monitor's windows are 40 samples of
+// 2,000 clocks (20 steps at the feed): a chord of 20 steps is short by 0.1% on the
+// 4:1 ellipse's tightest radius, 125 steps; a window of 800 steps counts whole steps to
+// 0.25% of the speed. Every window wholly at cruise (after the ramp up, before the ramp
+// down, each F / A) reads the feed within 1%; the monitor fails any window above the
+// feed + 1% or the acceleration + 5% (its whole-step share here: 2.5%).
+void at_4e5(const char* name, const Plan& plan) {
+  Rate r;
+  r.clock = 40e6;
+  r.feed = 4e5;
+  r.accel = 4e7;
+  r.vmin = std::sqrt(2 * r.accel);
+  r.subs = 40;
+  r.sub_clocks = 2000;
+  Bench b(r);
+  b.queue(plan);
+  b.d.drain();
+  CHECK(b.d.position() == plan.to);
+  const SpeedMonitor& mon = b.watch.monitor();
+  INFO(mon.summary());
+  const double t_win = double(std::uint64_t(r.subs) * r.sub_clocks) / r.clock, ramp = 1.02 * r.feed / r.accel;
+  double first = -1, last = -1;
+  for (const auto& s : mon.samples()) {
+    if (s.speed > 0 && first < 0) first = s.t;
+    if (s.speed > 0) last = s.t;
+  }
+  int cruise = 0;
+  double low = HUGE_VAL, high = 0;
+  for (const auto& s : mon.samples()) {
+    if (s.t - t_win < first + ramp || s.t > last - t_win - ramp) continue;
+    ++cruise;
+    low = std::min(low, s.speed);
+    high = std::max(high, s.speed);
+  }
+  WARN(name << ": " << cruise << " windows at cruise, " << low << " to " << high << " steps/s; peak acceleration "
+            << mon.peak_accel() / r.accel << " A; " << b.seconds() << " s");
+  CHECK(cruise > 100);
+  CHECK(low >= 0.99 * r.feed);
+  CHECK(high <= 1.01 * r.feed);
+}
+
+ArcSpec full_ellipse(std::int64_t a, std::int64_t b) {
+  ArcSpec s;
+  s.a = a;
+  s.b = b;
+  s.preload = Preload::Half;
+  s.from = s.to = Point{a, 0, 0};
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("pace block: 4e5 steps/s at 40 MHz on a full circle of radius 2000, at the pins", "[motion][pacer]") {
+  at_4e5("the circle of radius 2000", plan_arc(full_ellipse(2000, 2000)));
+}
+
+TEST_CASE("pace block: 4e5 steps/s at 40 MHz on a full ellipse 2000 x 500, at the pins", "[motion][pacer]") {
+  at_4e5("the ellipse 2000 x 500", plan_arc(full_ellipse(2000, 500)));
+}
+
+TEST_CASE("pace block: 4e5 steps/s at 40 MHz on a line 8000 x 2400, at the pins", "[motion][pacer]") {
+  at_4e5("the line 8000 x 2400", plan_line(Point{}, Point{8000, 2400, 0}, Preload::Half));
 }

@@ -5,7 +5,8 @@
 // model's inputs and the core's registers, its iterate_o must equal the model's
 // decision, and after every edge each of its registers the model's state: the speed,
 // the phase, the braking distance, the distance to go, the entry's fields, the norm
-// unit's countdown and d, the cruise speed times the override and its countdown. Ramps, cruise, the last piece ending
+// unit's countdown, the d it made and the d the pacer paces with, the cruise speed times
+// the override and its countdown. Ramps, cruise, the last piece ending
 // at the minimum speed, holds, overrides (below 100% and clamped above it), a minimum speed of 0 with no acceleration,
 // a speed beyond what the norm unit lets the core step (the phase saturates).
 #define CATCH_CONFIG_MAIN
@@ -28,11 +29,11 @@ using namespace dda::motion;
 namespace {
 
 // A 16 MHz clock keeps the runs short while the ramps span thousands of clocks (and the
-// accelerations within the 32-bit ACCEL field). The feeds stay well below one stepping
-// iteration per kNormLatency + 1 clocks (150,000 steps/s here), the fastest the norm
-// unit lets the core step, but for the case that goes beyond it: the phase goes on while
-// the core waits for the norm unit, and the iterations due are made up afterwards, which
-// the speed monitor's windows, shorter at a slow clock, would see.
+// accelerations within the 32-bit ACCEL field). The feeds stay below one step per
+// kNormLatency + 1 clocks (280,000 steps/s here), the fastest the norm unit lets the core
+// step, but for the case that goes beyond it: the phase goes on while the core waits for
+// the norm unit, and the iterations due are made up afterwards, which the speed
+// monitor's windows, shorter at a slow clock, would see.
 constexpr double kClock = 16e6;
 
 std::uint64_t mask(int bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1; }
@@ -45,7 +46,7 @@ class Lockstep {
     top_->rst_ni = 1;
   }
   // Gives the RTL the model's inputs, compares the decision, runs the edge.
-  void edge(const Pacer& p, const Pacer::In& in, bool stepped) {
+  void edge(const Pacer& p, const Pacer::In& in) {
     Vdda_pace& t = *top_;
     t.advance_i = in.advance;
     t.running_i = in.running;
@@ -61,7 +62,7 @@ class Lockstep {
     t.vmin_i = in.set.vmin;
     t.override_i = in.set.override_;
     t.hold_i = in.set.hold;
-    t.stepped_i = stepped;
+    t.stepped_i = in.stepped;
     const NormOperands& o = in.norm;
     t.v_x_i = o.v_x;
     t.v_y_i = o.v_y;
@@ -92,17 +93,24 @@ class Lockstep {
     one("brake_q", r.dda_pace__DOT__brake_q, p.entry().brake_exit);
     one("busy_q", r.dda_pace__DOT__busy_q, std::uint64_t(p.norm_busy()));
     one("pend_q", r.dda_pace__DOT__pend_q, p.pending());
-    one("d", r.dda_pace__DOT__u_norm__DOT__d_q, p.distance());
+    one("first_q", r.dda_pace__DOT__first_q, p.first());
+    one("due_q", r.dda_pace__DOT__due_q, p.due());
+    one("fresh_q", r.dda_pace__DOT__fresh_q, p.fresh());
+    one("m_q", r.dda_pace__DOT__m_q, std::uint64_t(p.provisional()));
+    one("d_q", r.dda_pace__DOT__d_q, p.distance());
+    one("u_norm.d_q", r.dda_pace__DOT__u_norm__DOT__d_q, p.norm_distance());
     one("eff_q", r.dda_pace__DOT__eff_q, p.cruise_speed());
     one("ovr_q", r.dda_pace__DOT__ovr_q, p.override_of());
     one("mcnt_q", r.dda_pace__DOT__mcnt_q, std::uint64_t(p.override_busy()));
     if (!diff.empty()) FAIL("after clock " << clocks_ - 1 << " (rtl/model): " << diff);
-    max_phase_ = std::max(max_phase_, p.phase());
+    max_phase_ = std::max(max_phase_, p.phase_value());
+    corrected_ = corrected_ || p.phase_value() < 0;
     held_ = held_ || (p.speed() == 0 && p.norm_busy() == 0 && !p.pending() && p.to_go() > 0);
   }
   std::uint64_t iterations() const { return iterations_; }
-  std::uint64_t max_phase() const { return max_phase_; }
-  bool held() const { return held_; }  // the speed was 0 in the middle of a piece
+  std::int64_t max_phase() const { return max_phase_; }
+  bool corrected() const { return corrected_; }  // a correction took the phase below 0
+  bool held() const { return held_; }            // the speed was 0 in the middle of a piece
 
  private:
   void clock() {
@@ -113,13 +121,15 @@ class Lockstep {
     ++clocks_;
   }
   std::unique_ptr<Vdda_pace> top_;
-  std::uint64_t clocks_ = 0, iterations_ = 0, max_phase_ = 0;
-  bool held_ = false;
+  std::uint64_t clocks_ = 0, iterations_ = 0;
+  std::int64_t max_phase_ = 0;
+  bool held_ = false, corrected_ = false;
 };
 
 using Each = std::function<void(std::uint64_t, PaceSettings&)>;
 struct Seen {
-  std::uint64_t max_phase = 0;
+  std::int64_t max_phase = 0;
+  bool corrected = false;
   bool held = false;
 };
 // Runs the plan clock by clock with the RTL beside the model; returns the model's result.
@@ -128,11 +138,11 @@ PaceResult lockstep(const Plan& plan, const PaceOptions& o, const Each& each = n
   PaceHooks h;
   h.clock_by_clock = true;
   h.each = each;
-  h.edge = [&](const Pacer& p, const Pacer::In& in, bool stepped) { rtl.edge(p, in, stepped); };
+  h.edge = [&](const Pacer& p, const Pacer::In& in) { rtl.edge(p, in); };
   h.watch = [&](std::uint64_t, const Pacer& p, double) { rtl.compare(p); };
   const PaceResult r = pace_plan(plan, o, h);
   CHECK(rtl.iterations() == r.iterations);
-  if (seen) *seen = Seen{rtl.max_phase(), rtl.held()};
+  if (seen) *seen = Seen{rtl.max_phase(), rtl.corrected(), rtl.held()};
   return r;
 }
 
@@ -171,10 +181,13 @@ TEST_CASE("pace unit: the RTL decides and holds what the reference model does, a
       {"circle of radius 300", plan_arc(circle), {4e4, 2e7, 1000, kClock}},
       {"rotated quarter 400 x 100", quarter(400, 100, 30000000), {1.5e4, 1e7, 300, kClock}},
       {"3-D line, no ramp", plan_line(Point{}, Point{300, -200, 150}, Preload::Half), {4e4, 0, 0, kClock}},
+      {"a quarter circle of radius 2000 near the stepping rate", quarter(2000, 2000), {1.5e5, 4e7, 2000, kClock}},
+      {"an eccentric quarter 400 x 40 at speed", quarter(400, 40, 10000000), {1.2e5, 4e7, 2000, kClock}},
       {"a speed beyond the norm unit's stepping rate",
        plan_line(Point{}, Point{6000, 100, 0}, Preload::Half),
        {3.9e6, 0, 0, kClock}},
   };
+  bool corrected = false;
   for (const auto& c : cases) {
     INFO(c.name);
     Seen seen;
@@ -183,8 +196,11 @@ TEST_CASE("pace unit: the RTL decides and holds what the reference model does, a
     CHECK(r.iterations > 20);
     CHECK_FALSE(seen.held);
     // The phase saturates only when the speed is beyond the core's.
-    CHECK((seen.max_phase == mask(kPhaseBits)) == (c.o.feed > 1e6));
+    CHECK((seen.max_phase == std::int64_t(mask(kPhaseBits))) == (c.o.feed > 1e6));
+    corrected = corrected || seen.corrected;
   }
+  // Some run's provisional iterations were corrected by more than the phase held.
+  CHECK(corrected);
 }
 
 TEST_CASE("pace unit: holds and overrides in lockstep with the reference model", "[pacer][rtl]") {

@@ -71,7 +71,7 @@ struct Bench {
     rst_n.write(true);
     rtl->rst_ni = 1;
   }
-  void inputs(const Pacer::In& in, bool st) {
+  void inputs(const Pacer::In& in) {
     Vdda_pace& t = *rtl;
     t.advance_i = in.advance, advance.write(in.advance);
     t.running_i = in.running, running.write(in.running);
@@ -86,7 +86,7 @@ struct Bench {
     t.vmin_i = in.set.vmin, vmin.write(in.set.vmin);
     t.override_i = in.set.override_, override_.write(in.set.override_);
     t.hold_i = in.set.hold, hold.write(in.set.hold);
-    t.stepped_i = st, stepped.write(st);
+    t.stepped_i = in.stepped, stepped.write(in.stepped);
     const NormOperands& o = in.norm;
     t.v_x_i = o.v_x, vx.write(o.v_x);
     t.v_y_i = o.v_y, vy.write(o.v_y);
@@ -125,6 +125,11 @@ struct Bench {
         {"brake_q", r.dda_pace__DOT__brake_q, m.brake_q.read()},
         {"busy_q", r.dda_pace__DOT__busy_q, m.busy_q.read()},
         {"pend_q", r.dda_pace__DOT__pend_q, m.pend_q.read()},
+        {"first_q", r.dda_pace__DOT__first_q, m.first_q.read()},
+        {"due_q", r.dda_pace__DOT__due_q, m.due_q.read()},
+        {"fresh_q", r.dda_pace__DOT__fresh_q, m.fresh_q.read()},
+        {"m_q", r.dda_pace__DOT__m_q, m.m_q.read()},
+        {"d_q", r.dda_pace__DOT__d_q, m.d_q.read()},
         {"ovr_q", r.dda_pace__DOT__ovr_q, m.ovr_q.read()},
         {"mplier_q", r.dda_pace__DOT__mplier_q, m.mplier_q.read()},
         {"mcand_q", r.dda_pace__DOT__mcand_q, m.mcand_q.read()},
@@ -172,8 +177,8 @@ TEST_CASE("pace unit: SystemC model and RTL equal in every register on every edg
                     : clock < 100000 ? kOverrideOne / 2
                                      : 2 * kOverrideOne;
   };
-  h.edge = [&](const Pacer&, const Pacer::In& in, bool st) {
-    b.inputs(in, st);
+  h.edge = [&](const Pacer&, const Pacer::In& in) {
+    b.inputs(in);
     b.edge();
   };
   h.watch = [&](std::uint64_t, const Pacer&, double) { b.compare(); };

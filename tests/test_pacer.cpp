@@ -153,21 +153,21 @@ TEST_CASE("pacer: a take clamps the cruise speed in force to the new entry's lim
   in.running = true;
   in.take = true;
   in.entry = PaceEntry{1u << 28, 1u << 28, 0, 1u << 30, 0};
-  p.edge(in, false);
+  p.edge(in);
   in.take = false;
-  for (int i = 0; i < 20000; ++i) p.edge(in, false);
+  for (int i = 0; i < 20000; ++i) p.edge(in);
   REQUIRE(p.cruise_speed() == std::uint64_t{1u << 28} << (kRampFrac - kSpeedFrac));
   REQUIRE(p.speed() == p.cruise_speed());
   in.take = true;
   in.entry = PaceEntry{1u << 28, 1u << 27, 0, 1u << 30, 0};
-  p.edge(in, false);
+  p.edge(in);
   in.take = false;
   const std::uint64_t limit = std::uint64_t{1u << 27} << (kRampFrac - kSpeedFrac);
   CHECK(p.cruise_speed() == limit);
   CHECK(p.override_busy() > 0);  // the new product is still being formed
   for (int i = 0; i < 20000; ++i) {
     const std::uint64_t before = p.speed();
-    p.edge(in, false);
+    p.edge(in);
     REQUIRE(p.target(in) <= limit);
     REQUIRE(p.speed() <= before);
   }

@@ -17,14 +17,15 @@ std::uint32_t get_field(std::string_view reg, std::string_view field, std::uint3
 
 std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1u << field_of(reg, field).lsb; }
 
-void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace) {
+void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace,
+                         std::uint32_t ctrl_also) {
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
   const std::vector<std::uint32_t> w = entry_words(c, feed, axes, pace);
   std::vector<std::size_t> order(w.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
   for (const std::size_t k : order) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
-  m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit"));
+  m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit") | ctrl_also);
 }
 
 void MotionDriver::drain(int max_polls) {
@@ -82,6 +83,10 @@ void MotionDriver::set_inputs(std::uint32_t polarity, std::uint32_t filter_switc
 
 MotionDriver::Snapshot MotionDriver::snapshot() {
   m_.write(reg_offset("CTRL"), field_bit("CTRL", "snapshot"));
+  return snapshot_registers();
+}
+
+MotionDriver::Snapshot MotionDriver::snapshot_registers() {
   Snapshot s;
   s.pos = positions("SNAP");
   s.cycle = m_.read(reg_offset("SNAP_CYCLE"));

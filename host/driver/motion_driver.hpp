@@ -22,8 +22,10 @@ class MotionDriver {
  public:
   MotionDriver(BusMaster& m, std::uint64_t seed, bool shuffle = true) : m_(m), rng_(seed), shuffle_(shuffle) {}
   // feed: the entry's feed increment (0: the core's full rate); pace: its pacing fields
-  // (a cruise speed of 0: paced by the feed increment).
-  void queue(const Command& c, std::uint32_t feed = 0, int axes = 0, const PaceEntry& pace = {});
+  // (a cruise speed of 0: paced by the feed increment); ctrl_also: other CTRL bits the
+  // commit's write sets (on the same edge).
+  void queue(const Command& c, std::uint32_t feed = 0, int axes = 0, const PaceEntry& pace = {},
+             std::uint32_t ctrl_also = 0);
   // Until the queue is empty and the core idle; throws GuardError after max_polls.
   void drain(int max_polls = 1000000);
   void preset(Point p);
@@ -53,7 +55,8 @@ class MotionDriver {
     Point pos;
     std::uint32_t cycle = 0, level = 0, done = 0;
   };
-  Snapshot snapshot();
+  Snapshot snapshot();            // CTRL.snapshot, then the SNAP_* registers
+  Snapshot snapshot_registers();  // the SNAP_* registers as they are
   // Three position registers (prefix "LATCH", "PROBE" or "SNAP": _X, _Y, _Z).
   Point positions(std::string_view prefix);
   // Until the block is at rest: the queue empty, the core idle, no soft stop running;

@@ -64,18 +64,23 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
 }
 
 namespace {
-// The clocks a stepping iteration takes at most (the norm unit's latency and the
-// iteration), and any iteration (the core iterates at most every other clock).
-constexpr int kStepClocks = motion::kNormLatency + 1;
-constexpr int kIterationClocks = 2;
+// The core's pace (docs/design.md, "Pacer"), at most: an iteration takes a clock; one
+// that steps also the clocks on which the core then waits (the step's edge into the
+// pacer, the norm unit reading its operands, the run's correction); and from one step to
+// the next the norm unit makes the run's d, kNormLatency clocks, and hands it over.
+constexpr int kIterationClocks = 1;
+constexpr int kStepClocks = motion::kNormOperandEdges + 2;
+constexpr int kRunClocks = motion::kNormLatency + 1;
 }  // namespace
 
 double clocks_per_path_step(std::uint64_t d, double axes) {
   const double per_iteration = d > 0 ? std::ldexp(1.0, motion::kNormFrac) / double(d) : 0;
   // Stepping iterations per path step: at most the steps (axes) and at most the
-  // iterations (1 / d); each costs kStepClocks, its own 2 counted with the rest.
+  // iterations (1 / d); each costs kStepClocks, its own clock counted with the rest, and
+  // steps come at most every kRunClocks.
   const double stepping = d > 0 ? std::min(axes, per_iteration) : axes;
-  return (kStepClocks - kIterationClocks) * stepping + kIterationClocks * per_iteration;
+  return std::max((kStepClocks - kIterationClocks) * stepping + kIterationClocks * per_iteration,
+                  kRunClocks * stepping);
 }
 
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm) {
@@ -134,9 +139,10 @@ double each_stretch(const Command& c, double window, double offset, F f) {
     if (stalled(c, r)) throw GuardError("highest_feed: a piece that does not end");
     const double d = double(motion::iteration_distance(c, r)) / unit;
     const std::uint64_t n = quiet_iterations(c, r);
-    if (n > 0 && d > 0) push({double(kIterationClocks) * double(n), double(n) * d, d, true});
+    const double quiet = double(kIterationClocks) * double(n);
+    if (n > 0 && d > 0) push({quiet, double(n) * d, d, true});
     skip_quiet(c, r, n);
-    push({double(kStepClocks), d, d, false});  // (the iteration that steps)
+    push({std::max(double(kStepClocks), kRunClocks - quiet), d, d, false});  // (the iteration that steps)
     next_state(c, r);
   }
   if (!any && path > 0) f(clocks / path, offset + gone - path, offset + gone);
@@ -165,20 +171,21 @@ void check_feed(const std::vector<Command>& pieces, double feed, double clock_hz
   if (feed > most) {
     throw InputError(fmt::format(
         "--feed-rate {} steps/s is beyond what the block follows on this path at {} Hz: at most {:.0f} steps/s "
-        "(a stepping iteration takes up to {} clocks, any iteration at least {}; docs/design.md, \"Pacer\")",
-        feed, clock_hz, std::floor(most), kStepClocks, kIterationClocks));
+        "(an iteration takes a clock, one that steps {}, and steps come at most every {} clocks; "
+        "docs/design.md, \"Pacer\")",
+        feed, clock_hz, std::floor(most), kStepClocks, kRunClocks));
   }
 }
 
 void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz) {
   const double need = slowest_clock(pp, pl, step_mm);
   if (need > clock_hz) {
-    throw InputError(fmt::format(
-        "the planned speeds need a clock of at least {:.0f} Hz with a {} mm step, not {} Hz: the core takes a "
-        "stepping iteration at most every {} clocks and any iteration at most every {}, and ACCEL holds the "
-        "path acceleration (docs/design.md, \"Pacer\"); raise the clock, or lower the machine's speeds or "
-        "acceleration or coarsen the step",
-        std::ceil(need), step_mm, clock_hz, kStepClocks, kIterationClocks));
+    throw InputError(
+        fmt::format("the planned speeds need a clock of at least {:.0f} Hz with a {} mm step, not {} Hz: an iteration "
+                    "takes a clock, one that steps {}, steps come at most every {} clocks, and ACCEL holds the path "
+                    "acceleration (docs/design.md, \"Pacer\"); raise the clock, or lower the machine's speeds or "
+                    "acceleration or coarsen the step",
+                    std::ceil(need), step_mm, clock_hz, kStepClocks, kRunClocks));
   }
 }
 

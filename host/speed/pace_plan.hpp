@@ -43,31 +43,33 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
                                    const program::LatticeOptions& lattice, const MachineLimits& lim);
 
 // The slowest block clock that follows a plan at a step, Hz. Each piece at its peak
-// speed v (path steps/s) asks up to v / d iterations per second, each at least 2
-// clocks, d the piece's shortest path per iteration (min_iteration_distance: this runs
-// each piece through the datapath once), and among them up to v * min(axes_factor,
-// 1 / d) stepping ones, each taking kNormLatency + 1 clocks (the norm unit recomputes
-// the path length per iteration after it); the path acceleration must also fit ACCEL
-// (pace_setup). A slower clock leaves a backlog the core then works off above the
-// commanded speed. At 100% override: an override above it needs the clock raised as
-// much; step/dir timings longer than 107 clocks a step are not counted.
+// speed v (path steps/s) asks up to v / d iterations per second, each at least a
+// clock, d its shortest path per iteration (min_iteration_distance: this runs each
+// piece through the datapath once), and among them up to v * min(axes_factor, 1 / d)
+// stepping ones, each taking kNormOperandEdges + 2 clocks and at least
+// kNormLatency + 1 from the one before (the norm unit makes the run's path length per
+// iteration meanwhile); the path acceleration must also fit ACCEL (pace_setup). A
+// slower clock leaves a backlog the core then works off above the commanded speed. At
+// 100% override: an override above it needs the clock raised as much; step/dir timings
+// longer than kNormLatency + 1 clocks a step are not counted.
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm);
 // InputError, with the clock needed, for a setup's clock below slowest_clock.
 void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz);
 
 // The clocks the block takes at most per path step on a piece whose shortest path per
 // iteration is d (x 2^kNormFrac steps, motion::min_iteration_distance; 0: none moves)
-// and whose axis steps per path step are at most axes: 1 / d iterations of at least 2
-// clocks, among them up to min(axes, 1 / d) stepping ones of kNormLatency + 1 clocks.
+// and whose axis steps per path step are at most axes: 1 / d iterations of at least a
+// clock, among them up to min(axes, 1 / d) stepping ones of kNormOperandEdges + 2
+// clocks, each at least kNormLatency + 1 clocks after the one before.
 double clocks_per_path_step(std::uint64_t d, double axes);
 // The highest path feed, steps/s, the block follows on pieces run back to back at one
 // cruise speed at a clock, with a ramp at accel from and to vmin (steps/s^2, steps/s;
 // accel 0: the speed jumps): over every stretch of kFeedWindow path steps, the clock
-// over the most clocks the block takes per path step there (each iteration at least
-// 2 clocks, one that steps kNormLatency + 1, each moving d along the path:
-// motion::iteration_distance before it), where the ramp lets the pacer run faster than
-// that. This runs each piece through the datapath twice, a step at a time; infinity
-// when nothing limits it.
+// over the most clocks the block takes per path step there (each iteration at least a
+// clock, one that steps kNormOperandEdges + 2 and at least kNormLatency + 1 after the
+// one before, each moving d along the path: motion::iteration_distance before it),
+// where the ramp lets the pacer run faster than that. This runs each piece through the datapath twice, a step at a
+// time; infinity when nothing limits it.
 double highest_feed(const std::vector<Command>& pieces, double clock_hz, double accel, double vmin);
 // The stretch highest_feed measures, path steps: long enough that a stepping
 // iteration more or less at its ends moves its figure by a few percent at most, short

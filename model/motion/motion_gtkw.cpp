@@ -16,12 +16,15 @@ hw::WaveGroup pace_group(const Reg& reg) {
            reg("vmin_q"),
            reg("override_q"),
            reg("u_pace.v_q"),
-           reg("u_pace.ph_q"),
+           reg("u_pace.ph_q", true),
            reg("u_pace.s_q"),
            reg("u_pace.rem_q"),
            reg("u_pace.eff_q"),
+           reg("u_pace.d_q"),
            reg("u_pace.busy_q"),
            reg("u_pace.pend_q"),
+           reg("u_pace.fresh_q"),
+           reg("u_pace.m_q"),
            {"pace_iterate", 1}}};
 }
 }  // namespace

@@ -69,11 +69,15 @@ int width_bits(Width w, int depth_log2) {
     case Width::Speed:
       return kRampFrac;
     case Width::Phase:
-      return kPhaseBits;
+      return kPhaseWidth;
     case Width::Distance:
       return kDistWidth;
     case Width::NormBusy:
       return kNormBusyWidth;
+    case Width::NormD:
+      return kNormFrac + 2;
+    case Width::Provisional:
+      return kProvisionalWidth;
     case Width::OverrideCount:
       return kOverrideCountWidth;
     case Width::Five:

@@ -92,6 +92,8 @@ enum class Width {
   Phase,     // kPhaseBits
   Distance,  // kDistWidth
   NormBusy,
+  NormD,        // kNormFrac + 2: a d of the norm unit
+  Provisional,  // kProvisionalWidth
   OverrideCount,
   Five,
   Inputs,        // a bit per machine input (kNumInputs)
@@ -108,7 +110,7 @@ struct BlockReg {
 // rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
 // model motion::Pacer holds; u_io: the machine's inputs, rtl/dda_motion_io.v, and below
 // it each input's synchronizer and filter, rtl/dda_input.v).
-inline constexpr std::array<BlockReg, 150> kBlockRegs{{
+inline constexpr std::array<BlockReg, 155> kBlockRegs{{
     {"ack_q", Width::One},
     {"dat_q", Width::Word},
     {"head_q", Width::Index},
@@ -184,6 +186,11 @@ inline constexpr std::array<BlockReg, 150> kBlockRegs{{
     {"u_pace.brake_q", Width::Word},
     {"u_pace.busy_q", Width::NormBusy},
     {"u_pace.pend_q", Width::One},
+    {"u_pace.first_q", Width::One},
+    {"u_pace.due_q", Width::One},
+    {"u_pace.fresh_q", Width::One},
+    {"u_pace.m_q", Width::Provisional},
+    {"u_pace.d_q", Width::NormD},
     {"u_pace.ovr_q", Width::Override},
     {"u_pace.mcnt_q", Width::OverrideCount},
     {"u_pace.eff_q", Width::Speed},

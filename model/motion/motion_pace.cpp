@@ -24,6 +24,7 @@ void MotionModel::pace_wires(bool take_known, Wires& w) const {
     // What the decision to iterate reads: the pacer runs while the core runs a paced piece.
     in.advance = w.advance;
     in.running = w.running && get("paced_q") != 0;
+    in.stepped = w.stepped;
     w.pace_iterate = pacer_.iterate(in);
     return;
   }
@@ -65,7 +66,7 @@ void MotionModel::load_pace(const Wires& w) {
   if (w.abort) {
     pacer_ = Pacer{};
   } else {
-    pacer_.edge(w.pace, w.stepped);
+    pacer_.edge(w.pace);
   }
   const PaceEntry& e = pacer_.entry();
   reg("u_pace.v_q") = pacer_.speed();
@@ -78,6 +79,11 @@ void MotionModel::load_pace(const Wires& w) {
   reg("u_pace.brake_q") = e.brake_exit;
   reg("u_pace.busy_q") = std::uint64_t(pacer_.norm_busy());
   reg("u_pace.pend_q") = pacer_.pending();
+  reg("u_pace.first_q") = pacer_.first();
+  reg("u_pace.due_q") = pacer_.due();
+  reg("u_pace.fresh_q") = pacer_.fresh();
+  reg("u_pace.m_q") = std::uint64_t(pacer_.provisional());
+  reg("u_pace.d_q") = pacer_.distance();
   reg("u_pace.ovr_q") = pacer_.override_of();
   reg("u_pace.mcnt_q") = std::uint64_t(pacer_.override_busy());
   reg("u_pace.eff_q") = pacer_.cruise_speed();

@@ -33,18 +33,30 @@ inline constexpr int kNormLatency = 5 * kNormClocks + 1;
 inline constexpr int kNormOperandEdges = 2 * kNormClocks + 1;
 inline constexpr int kMarginShift = 3;  // ramp down 2^-kMarginShift step before the end
 // The phase saturates below 2^kPhaseBits (256 steps of path): a speed the core cannot
-// follow (above one iteration every other clock, or one stepping iteration per kNormLatency + 1
-// clocks) leaves a backlog the phase cannot grow without bound.
+// follow (above one iteration per clock, or one step per kNormLatency + 1 clocks) leaves
+// a backlog the phase cannot grow without bound.
 inline constexpr int kPhaseBits = kRampFrac + 8;
+// The phase is signed: a correction of provisional iterations (docs/design.md, "Pacer")
+// takes it below 0 by less than 2^kPhaseBits.
+inline constexpr int kPhaseWidth = kPhaseBits + 1;
+// The iterations the pacer paces with the run before's d, at most: the norm unit's
+// clocks after it has read its operands.
+inline constexpr int kProvisionalMax = kNormLatency - kNormOperandEdges + 1;
+inline constexpr int kProvisionalWidth = 6;
 // The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
 inline constexpr int kAccelWidth = 32;
 // The widths of rtl/dda_pace.v's registers the block harnesses compare: s and the distance
 // to go (below 2^(kDistFrac + 25)), the norm unit's clock count (up to kNormLatency), the
 // product's clock count (up to kOverrideClocks).
 inline constexpr int kDistWidth = kDistFrac + 26;
-inline constexpr int kNormBusyWidth = 7;
+inline constexpr int kNormBusyWidth = 6;
 inline constexpr int kOverrideCountWidth = 4;
-static_assert(kNormLatency < (1 << kNormBusyWidth) && kOverrideClocks < (1 << kOverrideCountWidth),
-              "the pacer's clock counts fit their registers");
+static_assert(kNormLatency < (1 << kNormBusyWidth) && kOverrideClocks < (1 << kOverrideCountWidth) &&
+                  kProvisionalMax < (1 << kProvisionalWidth),
+              "the pacer's counts fit their registers");
+// A correction: at most kProvisionalMax times a d (below 2^(kNormFrac + 2)), at the
+// phase's scale, within the phase's range below 0.
+static_assert(std::int64_t(kProvisionalMax) << (kNormFrac + 2 + kRampFrac - kNormFrac) < std::int64_t(1) << kPhaseBits,
+              "a correction fits the phase");
 
 }  // namespace dda::motion

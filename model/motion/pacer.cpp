@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "model/datapath/hw_params.hpp"
 
 namespace dda::motion {
 
@@ -40,6 +43,28 @@ std::uint64_t iteration_distance(const Command& c, const RegState& r) {
   return iteration_distance(norm_operands(c, r));
 }
 
+namespace {
+// The norm unit's divider bit for bit (rtl/dda_norm.v): 2 kNormClocks restoring steps of
+// the AW-bit remainder, the quotient's top kNormFrac + 1 bits. floor(v 2^kNormFrac / cap)
+// for the operands the core gives (0 < cap, v <= cap).
+std::uint64_t unit_quotient(std::uint64_t v, std::uint64_t cap) {
+  const std::uint64_t amask = (std::uint64_t{1} << hw::kAccWidth) - 1;
+  std::uint64_t n = v & amask, q = 0;
+  for (int i = 0; i < 2 * kNormClocks; ++i) {
+    const bool b = n >= cap;
+    n = ((b ? n - cap : n) & amask) << 1;
+    q = (q << 1) | std::uint64_t(b);
+  }
+  return q >> (2 * kNormClocks - (kNormFrac + 1));
+}
+}  // namespace
+
+std::uint64_t Pacer::unit_d() const {
+  // The sum of the squares in the unit's 2 (kNormFrac + 1) bits.
+  const u128 sum = (u128(qx_) * qx_ + u128(qy_) * qy_ + u128(qz_) * qz_) & ((u128(1) << (2 * (kNormFrac + 1))) - 1);
+  return isqrt(sum);
+}
+
 std::uint64_t iteration_distance(const NormOperands& o) {
   const auto q = [](std::uint64_t v, std::uint64_t cap) {
     return cap > 0 ? (u128(v) << kNormFrac) / u128(cap) : u128(0);
@@ -68,15 +93,18 @@ std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t 
 }
 
 namespace {
-// Calls f(d) with iteration_distance of each of the piece's iterations, in order.
+// Calls f(d) with iteration_distance of each of the piece's iterations, in order (once
+// per run: only a step changes it).
 template <typename F>
 void each_iteration_distance(const Command& c, F f) {
-  Datapath d(c, Point{});
+  Datapath dp(c, Point{});
   const std::uint64_t bound = std::uint64_t{1} << 40;
-  while (!d.done()) {
-    if (d.stalled() || d.iterations() > bound) throw GuardError("pacer: a piece that does not end");
-    f(iteration_distance(c, d.regs()));
-    d.iterate();
+  std::uint64_t run = iteration_distance(c, dp.regs());
+  while (!dp.done()) {
+    if (dp.stalled() || dp.iterations() > bound) throw GuardError("pacer: a piece that does not end");
+    f(run);
+    const Iteration it = dp.iterate();
+    if (it.step_x || it.step_y || it.step_z) run = iteration_distance(c, dp.regs());
   }
 }
 }  // namespace
@@ -139,10 +167,13 @@ std::vector<PaceEntry> pace_entries(const std::vector<Command>& pieces, std::uin
   return entries;
 }
 
+std::uint64_t Pacer::phase() const { return std::uint64_t(ph_) & ((std::uint64_t{1} << kPhaseWidth) - 1); }
+
 bool Pacer::decelerate(const In& in) const {
-  const std::uint64_t exit_brake = in.next_queued ? dist_of_len(e_.brake_exit) : 0;
-  const std::uint64_t margin = std::uint64_t{1} << (kDistFrac - kMarginShift);
-  return s_ + dist_of_speed(ph_) + margin >= rem_ + exit_brake;
+  const std::int64_t exit_brake = in.next_queued ? std::int64_t(dist_of_len(e_.brake_exit)) : 0;
+  const std::int64_t margin = std::int64_t{1} << (kDistFrac - kMarginShift);
+  // (the phase as a distance: floor, also below 0)
+  return std::int64_t(s_) + (ph_ >> (kRampFrac - kDistFrac)) + margin >= std::int64_t(rem_) + exit_brake;
 }
 
 std::uint64_t Pacer::target(const In& in) const {
@@ -153,73 +184,115 @@ std::uint64_t Pacer::target(const In& in) const {
   return std::max(t, ramp(in.set.vmin));
 }
 
+bool Pacer::blocked(const In& in) const {
+  // (A step seen on this clock, or due: the norm unit starts on the run it begins, and
+  // while it reads the operands the registers must hold; a correction on this clock.)
+  return first_ || due_ || (pending_ && in.stepped) || (busy_ == 0 && !fresh_) ||
+         busy_ > kNormLatency - kNormOperandEdges + 1;
+}
+
 bool Pacer::iterate(const In& in) const {
-  if (!in.advance || !in.running || !distance_valid()) return false;
-  return ph_ + v_ >= d_ << (kRampFrac - kNormFrac);
+  if (!in.advance || !in.running || blocked(in)) return false;
+  return ph_ + std::int64_t(v_) >= std::int64_t(d_ << (kRampFrac - kNormFrac));
 }
 
 std::uint64_t Pacer::idle_clocks(const In& in) const {
-  if (!in.advance || !in.running || in.take || !distance_valid() || v_ == 0 || v_ != target(in) || mul_ != 0 ||
-      in.set.override_ != ovr_)
+  if (!in.advance || !in.running || in.take || busy_ != 0 || pending_ || first_ || due_ || !fresh_ || v_ == 0 ||
+      v_ != target(in) || mul_ != 0 || in.set.override_ != ovr_)
     return 0;
   // Clock j (from 0) adds v to ph + j v: no iteration while ph + (j + 1) v < D.
-  const std::uint64_t D = d_ << (kRampFrac - kNormFrac);
-  if (ph_ + v_ >= D) return 0;
-  std::uint64_t n = (D - ph_ - 1) / v_;
+  const std::int64_t D = std::int64_t(d_ << (kRampFrac - kNormFrac)), v = std::int64_t(v_);
+  if (ph_ + v >= D) return 0;
+  std::int64_t n = (D - ph_ - 1) / v;
   if (!decelerate(in)) {  // once true it stays true while the phase grows
-    // The decision reads (ph + j v) >> (kRampFrac - kDistFrac) against rem + brake - s - margin.
-    const std::uint64_t exit_brake = in.next_queued ? dist_of_len(e_.brake_exit) : 0;
-    const std::uint64_t margin = std::uint64_t{1} << (kDistFrac - kMarginShift);
-    const u128 thr = (u128(rem_ + exit_brake - s_ - margin)) << (kRampFrac - kDistFrac);
-    const u128 k = thr > ph_ ? (thr - 1 - ph_) / v_ + 1 : 0;
-    n = std::min<u128>(n, k);
+    // The decision reads floor(ph / 2^(kRampFrac - kDistFrac)) + j v against rem + brake - s - margin.
+    const std::int64_t exit_brake = in.next_queued ? std::int64_t(dist_of_len(e_.brake_exit)) : 0;
+    const std::int64_t margin = std::int64_t{1} << (kDistFrac - kMarginShift);
+    const std::int64_t thr =
+        (std::int64_t(rem_) + exit_brake - std::int64_t(s_) - margin) * (std::int64_t{1} << (kRampFrac - kDistFrac));
+    const std::int64_t k = thr > ph_ ? (thr - 1 - ph_) / v + 1 : 0;
+    n = std::min(n, k);
   }
-  return n;
+  return std::uint64_t(n);
 }
 
 void Pacer::skip(const In& in, std::uint64_t clocks) {
-  ph_ += clocks * v_;
+  ph_ += std::int64_t(clocks * v_);
   down_ = decelerate(in);
 }
 
-void Pacer::edge(const In& in, bool stepped) {
+std::optional<std::int64_t> Pacer::norm_edge(const In& in, bool it) {
+  // A step on the last edge (or one due) starts the norm unit on the new run, whose
+  // iterations the pacer paces with the d it has (provisionally, counted in m) until the
+  // unit has the run's own: then it takes it, with the correction, m times the
+  // difference. A take starts it on the new piece's first run, whose d the pacer waits
+  // for.
+  const bool seen = pending_ && in.stepped, free = busy_ == 0;
+  const bool load = free && !fresh_;
+  const bool start = in.take || (free && (seen || due_));
+  const std::int64_t corr = std::int64_t(m_) * (std::int64_t(nd_) - std::int64_t(d_));
+  // The unit reads each axis' operands on the first edge of its division (x's on the
+  // edge after the start); a start on its last edge starts it again.
+  if (busy_ == kNormLatency) qx_ = unit_quotient(in.norm.v_x, in.norm.cap);
+  if (busy_ == kNormLatency - kNormClocks) qy_ = unit_quotient(in.norm.v_y, in.norm.cap);
+  if (busy_ == kNormLatency - 2 * kNormClocks) qz_ = unit_quotient(in.norm.v_z, in.norm.cap_z);
+  if (busy_ > 0 && --busy_ == 0 && !start) nd_ = unit_d();
+  if (it && !fresh_) ++m_;
+  if (load) {
+    d_ = nd_;
+    fresh_ = true;
+    first_ = false;
+  }
+  if (start) {
+    busy_ = kNormLatency;
+    fresh_ = due_ = false;
+    m_ = 0;
+  } else if (seen) {
+    due_ = true;
+  }
+  pending_ = it;
+  return load ? std::optional<std::int64_t>(corr) : std::nullopt;
+}
+
+void Pacer::ramp_edge(const In& in, std::uint64_t t) {
+  const std::uint64_t a = in.set.accel, vmin = ramp(in.set.vmin);
+  std::uint64_t v = v_;
+  if (a == 0) {
+    v = t;
+    s_ = 0;
+  } else if (v_ < t) {
+    v = t - v_ > a ? v_ + a : t;
+    if (v_ > vmin) s_ += dist_of_speed(v_);
+  } else if (v_ > t) {
+    v = v_ - t > a ? v_ - a : t;
+    if (v > vmin) s_ -= std::min(s_, dist_of_speed(v));
+  }
+  v_ = v;
+  if (v_ == 0) s_ = 0;
+}
+
+void Pacer::edge(const In& in) {
   // Every decision from the state before the edge (as the hardware's wires).
   const bool it = iterate(in);
   const std::uint64_t t = target(in);
-  // The norm unit: a fresh d kNormLatency clocks after a take or a stepping iteration,
-  // from the core's registers then (the core does not iterate meanwhile).
-  if (pending_ && stepped) busy_ = kNormLatency;
-  pending_ = false;
-  // (After a piece's last step the core's counters are 0: d of the finished piece is 0.)
-  if (busy_ > 0 && --busy_ == 0) d_ = iteration_distance(in.norm);
+  const std::uint64_t d_it = d_;
+  const std::optional<std::int64_t> corr = norm_edge(in, it);  // (a value: the pacer takes the run's d)
+  // The distance to go and the phase: d off on an iteration, the correction when the
+  // pacer takes the run's own d; v per clock while a piece runs.
   if (it) {
-    pending_ = true;
-    rem_ -= std::min(rem_, dist_of_norm(d_));
+    rem_ -= std::min(rem_, dist_of_norm(d_it));
+  } else if (corr) {
+    const std::int64_t r = std::int64_t(rem_) - *corr * (std::int64_t{1} << (kDistFrac - kNormFrac));
+    rem_ = r > 0 ? std::uint64_t(r) : 0;
   }
-  // The phase: v per clock while a piece runs, d off on an iteration.
-  const std::uint64_t D = d_ << (kRampFrac - kNormFrac);
   if (!in.running) {
     ph_ = 0;
-  } else if (in.advance) {
-    ph_ = std::min(ph_ + v_ - (it ? D : 0), (std::uint64_t{1} << kPhaseBits) - 1);
+  } else if (in.advance || corr) {
+    const std::int64_t sub = it ? std::int64_t(d_it << (kRampFrac - kNormFrac))
+                                : corr.value_or(0) * (std::int64_t{1} << (kRampFrac - kNormFrac));
+    ph_ = std::min(ph_ + (in.advance ? std::int64_t(v_) : 0) - sub, (std::int64_t{1} << kPhaseBits) - 1);
   }
-  // The ramp, with the braking distance.
-  if (in.advance && in.running) {
-    const std::uint64_t a = in.set.accel, vmin = ramp(in.set.vmin);
-    std::uint64_t v = v_;
-    if (a == 0) {
-      v = t;
-      s_ = 0;
-    } else if (v_ < t) {
-      v = t - v_ > a ? v_ + a : t;
-      if (v_ > vmin) s_ += dist_of_speed(v_);
-    } else if (v_ > t) {
-      v = v_ - t > a ? v_ - a : t;
-      if (v > vmin) s_ -= std::min(s_, dist_of_speed(v));
-    }
-    v_ = v;
-    if (v_ == 0) s_ = 0;
-  }
+  if (in.advance && in.running) ramp_edge(in, t);
   if (!in.running && !in.take) v_ = s_ = 0;  // no piece: at rest
   // The cruise speed times the override: kOverrideClocks after a take or a change of
   // the override (either starts it again), from the entry then in force.
@@ -234,8 +307,9 @@ void Pacer::edge(const In& in, bool stepped) {
     e_ = in.entry;
     eff_ = std::min(eff_, ramp(e_.limit));  // the product in force, within the new limit at once
     rem_ = dist_of_len(e_.length);
-    busy_ = kNormLatency;
-    pending_ = false;
+    pending_ = due_ = fresh_ = false;
+    first_ = true;
+    m_ = 0;
   }
   down_ = decelerate(in);
 }

@@ -9,12 +9,23 @@
 // Constant tangential feed. An iteration moves the tool by d = |(jv_x, jv_y) / cap,
 // jv_z / cap_z| steps along the path (the integrands are the DDA's velocity; an axis
 // whose counter is done, or whose integrand is not positive, adds 0). A phase adds v on
-// every clock and the core iterates when it reaches d, taking d off: the path speed is v
-// whatever d does along an ellipse. d comes from the norm unit, which recomputes it
-// after every iteration that stepped (only a step changes an integrand or ends an
-// axis): kNormLatency clocks during which the phase keeps adding but the core waits.
-// d is exact to kNormFrac bits: q = floor(jv_i * 2^kNormFrac / cap_i) per axis,
-// d = floor(sqrt(q_x^2 + q_y^2 + q_z^2)).
+// every clock and the core iterates when it reaches the pacer's d, taking it off: the
+// path speed is v whatever d does along an ellipse. d comes from the norm unit, exact
+// to kNormFrac bits: q = floor(jv_i * 2^kNormFrac / cap_i) per axis, d =
+// floor(sqrt(q_x^2 + q_y^2 + q_z^2)). Only a step changes an integrand or ends an axis,
+// so the iterations between two steps (a run) have one d. The norm unit takes
+// kNormLatency clocks, longer than the core takes for a run at speed, so the core does
+// not wait for it: when a step comes in (on the edge after its iteration: the core's
+// registered step pulses), the norm unit starts on the new run's registers and the
+// pacer goes on with the run before's d, provisionally, counting those iterations (m).
+// Once the unit has the run's own d, the pacer takes it and corrects the phase and the
+// distance to go by m times the difference, as if every iteration of the run had been
+// paced with its own d from the start. Every iteration therefore counts its own d, as
+// pace_length sums it, whenever the clocks fall. The core waits on the clock a step
+// comes in, while the norm unit reads its operands (kNormOperandEdges edges after its
+// start), on the clock of a correction, when a step comes while the unit is still at
+// work (it is due: the correction and the start wait for the unit), and after a take
+// until the first run's d is in; else it can iterate on every clock.
 //
 // The cruise speed the ramp heads for, the entry's times the override clamped to the
 // entry's limit, is formed by shift and add over kOverrideClocks clocks after a take or
@@ -34,6 +45,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "model/datapath/datapath.hpp"
@@ -64,8 +76,8 @@ struct NormOperands {
   std::uint64_t v_x = 0, v_y = 0, v_z = 0, cap = 0, cap_z = 0;
 };
 NormOperands norm_operands(const Command& c, const RegState& r);
-// The DDA's path length per iteration, x 2^kNormFrac steps: from the norm operands, or
-// from the core's registers.
+// The DDA's path length per iteration, x 2^kNormFrac steps (the norm unit's d): from the
+// norm operands, or from the core's registers.
 std::uint64_t iteration_distance(const NormOperands& o);
 std::uint64_t iteration_distance(const Command& c, const RegState& r);
 // The distance a ramp down from speed v to vmin (x 2^kSpeedFrac) at accel travels, as
@@ -76,8 +88,9 @@ std::uint32_t brake_distance(std::uint32_t v, std::uint32_t vmin, std::uint64_t 
 // not end or is longer than the field holds.
 std::uint32_t pace_length(const Command& c);
 // The shortest positive iteration_distance over a piece's iterations (x 2^kNormFrac
-// steps; 0 when none moves): the core iterates at most every other clock, so a piece
-// at v steps/s asks up to v / d iterations per second.
+// steps; 0 when none moves): a piece at v steps/s asks up to v / d iterations per
+// second (also provisionally: a run is paced with the d of the run before until its
+// own is in).
 std::uint64_t min_iteration_distance(const Command& c);
 // The highest speed up to cap (x 2^kSpeedFrac) whose brake_distance is within budget
 // (x 2^kLenFrac steps): at least min(vmin, cap), which brakes in no distance.
@@ -100,12 +113,14 @@ class Pacer {
  public:
   // The inputs of one clock: advance (ce_i, no stage holds the core), whether a piece
   // runs and the norm operands of the core's registers before the edge (the running or
-  // the last piece's), whether the core takes an entry on this edge and that entry,
-  // whether another entry waits in the queue.
+  // the last piece's), whether the core's last iteration (on the edge before) made a
+  // step (its registered step pulses), whether the core takes an entry on this edge
+  // and that entry, whether another entry waits in the queue.
   struct In {
     bool advance = false;
     bool running = false;
     NormOperands norm;
+    bool stepped = false;
     bool take = false;
     PaceEntry entry;
     bool next_queued = false;
@@ -119,22 +134,25 @@ class Pacer {
   // that many such edges at once, exactly as edge() would one by one.
   std::uint64_t idle_clocks(const In& in) const;
   void skip(const In& in, std::uint64_t clocks);
-  // The edge: stepped says whether the core's last iteration (on the edge before) made
-  // a step; it is read on the edge after every iteration.
-  void edge(const In& in, bool stepped);
+  void edge(const In& in);
 
   std::uint64_t speed() const { return v_; }  // x 2^kRampFrac steps/clock
-  std::uint64_t phase() const { return ph_; }
-  int norm_busy() const { return busy_; }  // clocks until d is fresh after a take or a step
+  std::uint64_t phase() const;                // the register: kPhaseWidth bits, two's complement
+  std::int64_t phase_value() const { return ph_; }
+  int norm_busy() const { return busy_; }  // clocks until the norm unit's d is new
   bool pending() const { return pending_; }
+  bool first() const { return first_; }   // after a take: the first run's d is not in yet
+  bool due() const { return due_; }       // a step's norm waits for the unit
+  bool fresh() const { return fresh_; }   // d is the run's own (no correction waits)
+  int provisional() const { return m_; }  // the run's iterations paced with the d before
   const PaceEntry& entry() const { return e_; }
   // The cruise speed times the override, clamped to the limit (x 2^kRampFrac), the
   // override it is of, and the clocks until a new one is ready (0: ready).
   std::uint64_t cruise_speed() const { return eff_; }
   std::uint32_t override_of() const { return ovr_; }
   int override_busy() const { return mul_; }
-  std::uint64_t distance() const { return d_; }
-  bool distance_valid() const { return busy_ == 0 && !pending_; }
+  std::uint64_t distance() const { return d_; }        // the d the pacer paces with
+  std::uint64_t norm_distance() const { return nd_; }  // the norm unit's last d
   bool ramping_down() const { return down_; }
   std::uint64_t brake() const { return s_; }    // x 2^kDistFrac steps
   std::uint64_t to_go() const { return rem_; }  // x 2^kDistFrac steps
@@ -142,14 +160,30 @@ class Pacer {
 
  private:
   bool decelerate(const In& in) const;
+  bool blocked(const In& in) const;  // the core waits for d or for the norm unit
+  // The norm unit's and the hand-over's part of the edge: the correction when the pacer
+  // takes the run's own d (x 2^-kNormFrac steps), else nothing.
+  std::optional<std::int64_t> norm_edge(const In& in, bool it);
+  void ramp_edge(const In& in, std::uint64_t target);  // v toward the target, with s
 
-  std::uint64_t v_ = 0, ph_ = 0, d_ = 0, s_ = 0, rem_ = 0, eff_ = 0;
+  std::uint64_t v_ = 0, d_ = 0, nd_ = 0, s_ = 0, rem_ = 0, eff_ = 0;
+  std::int64_t ph_ = 0;  // below 0 after a correction: the core went ahead
   std::uint32_t ovr_ = 0;
   int mul_ = 0;
   PaceEntry e_;
-  int busy_ = 0;          // clocks until the norm unit's d is fresh
-  bool pending_ = false;  // an iteration happened on the last edge: d waits for its step
+  int busy_ = 0;          // clocks until the norm unit's d is new
+  bool pending_ = false;  // an iteration happened on the last edge: did it step?
+  bool first_ = false;    // a take: the first run's d is not in yet
+  bool due_ = false;      // a step came while the norm unit was at work
+  bool fresh_ = false;    // d_ is the run's own
+  int m_ = 0;             // the run's iterations paced with the d before (fresh_ false)
   bool down_ = false;
+  // The norm unit's quotients, each from the operands on the edge it reads them (x's
+  // on the edge after its start, y's and z's kNormClocks and 2 kNormClocks later), and
+  // its d from them, made public (nd_) when its count runs out: iteration_distance of
+  // the operands when they hold.
+  std::uint64_t qx_ = 0, qy_ = 0, qz_ = 0;
+  std::uint64_t unit_d() const;
 };
 
 }  // namespace dda::motion

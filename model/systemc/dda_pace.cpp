@@ -25,18 +25,25 @@ dda_pace::dda_pace(sc_core::sc_module_name name, int aw) : sc_core::sc_module(na
   u_norm.busy_o(norm_busy_);
   u_norm.d_o(d_);
   SC_METHOD(comb);
-  sensitive << advance_i << running_i << take_i << v_q << ph_q << busy_q << pend_q << d_;
+  sensitive << advance_i << running_i << take_i << stepped_i << v_q << ph_q << busy_q << pend_q << first_q << due_q
+            << fresh_q << d_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
 }
 
-// s + the phase + the margin against the distance to go + the exit speed's braking
-// distance, at kDistFrac bits.
+std::int64_t dda_pace::phase() const {
+  const std::uint64_t sign = std::uint64_t{1} << kPhaseBits, r = ph_q.read();
+  return (r & sign) != 0 ? std::int64_t(r) - std::int64_t(sign << 1) : std::int64_t(r);
+}
+
+// s + the phase (floor, also below 0) + the margin against the distance to go + the
+// exit speed's braking distance, at kDistFrac bits.
 bool dda_pace::decel() const {
-  const std::uint64_t eb = next_queued_i.read() ? std::uint64_t(brake_q.read()) << (kDistFrac - kLenFrac) : 0;
-  const std::uint64_t margin = std::uint64_t{1} << (kDistFrac - kMarginShift);
-  return s_q.read() + (ph_q.read() >> (kRampFrac - kDistFrac)) + margin >= rem_q.read() + eb;
+  const std::int64_t eb =
+      next_queued_i.read() ? std::int64_t(std::uint64_t(brake_q.read()) << (kDistFrac - kLenFrac)) : 0;
+  const std::int64_t margin = std::int64_t{1} << (kDistFrac - kMarginShift);
+  return std::int64_t(s_q.read()) + (phase() >> (kRampFrac - kDistFrac)) + margin >= std::int64_t(rem_q.read()) + eb;
 }
 
 std::uint64_t dda_pace::target() const {
@@ -48,11 +55,12 @@ std::uint64_t dda_pace::target() const {
 }
 
 void dda_pace::comb() {
-  const bool d_valid = busy_q.read() == 0 && !pend_q.read();
-  const std::uint64_t dd = d_.read() << (kRampFrac - kNormFrac);
-  const bool it = advance_i.read() && running_i.read() && d_valid && ph_q.read() + v_q.read() >= dd;
+  const bool blocked = first_q.read() || due_q.read() || seen() || load() ||
+                       busy_q.read() > std::uint32_t(kNormLatency - kNormOperandEdges + 1);
+  const std::int64_t dd = std::int64_t(d_q.read() << (kRampFrac - kNormFrac));
+  const bool it = advance_i.read() && running_i.read() && !blocked && phase() + std::int64_t(v_q.read()) >= dd;
   iterate_o.write(it);
-  start_.write(take_i.read() || it);
+  start_.write(take_i.read() || (free() && (seen() || due_q.read())));
   speed_o.write(v_q.read());
 }
 
@@ -82,60 +90,83 @@ void dda_pace::multiply() {
   }
 }
 
+void dda_pace::reset() {
+  for (auto* r : {&v_q, &ph_q, &s_q, &rem_q, &d_q, &mcand_q, &macc_q, &eff_q}) r->write(0);
+  for (auto* r : {&cruise_q, &limit_q, &exit_q, &brake_q, &busy_q, &m_q, &ovr_q, &mplier_q, &mcnt_q}) r->write(0);
+  for (auto* r : {&pend_q, &first_q, &due_q, &fresh_q}) r->write(false);
+}
+
+// The norm unit (its d is new kNormLatency clocks after its start) and the hand-over of
+// its d with the correction of the run's provisional iterations.
+void dda_pace::norm_seq(bool it) {
+  if (start_.read())
+    busy_q.write(std::uint32_t(kNormLatency));
+  else if (busy_q.read() != 0)
+    busy_q.write(busy_q.read() - 1);
+  if (it && !fresh_q.read()) m_q.write(m_q.read() + 1);
+  if (load()) {
+    d_q.write(d_.read());
+    fresh_q.write(true);
+    first_q.write(false);
+  }
+  if (start_.read()) {
+    fresh_q.write(false);
+    due_q.write(false);
+    m_q.write(0);
+  } else if (seen()) {
+    due_q.write(true);
+  }
+  pend_q.write(it);
+}
+
+// v toward the target by at most a, with the braking distance s.
+void dda_pace::ramp_seq() {
+  const std::uint64_t v = v_q.read(), s = s_q.read(), t = target(), a = accel_i.read();
+  const std::uint64_t vmin = ramp(vmin_i.read());
+  const auto dist = [](std::uint64_t speed) { return speed >> (kRampFrac - kDistFrac); };
+  if (a == 0) {
+    v_q.write(t);
+    s_q.write(0);
+  } else if (v < t) {
+    v_q.write(t - v > a ? v + a : t);
+    if (v > vmin) s_q.write(s + dist(v));
+  } else if (v > t) {
+    const std::uint64_t vn = v - t > a ? v - a : t;
+    v_q.write(vn);
+    if (vn > vmin) s_q.write(s > dist(vn) ? s - dist(vn) : 0);
+    if (vn == 0) s_q.write(0);
+  } else if (v == 0) {
+    s_q.write(0);
+  }
+}
+
 void dda_pace::seq() {
   if (!rst_ni.read()) {
-    v_q.write(0);
-    ph_q.write(0);
-    s_q.write(0);
-    rem_q.write(0);
-    cruise_q.write(0);
-    limit_q.write(0);
-    exit_q.write(0);
-    brake_q.write(0);
-    busy_q.write(0);
-    pend_q.write(false);
-    ovr_q.write(0);
-    mplier_q.write(0);
-    mcand_q.write(0);
-    macc_q.write(0);
-    mcnt_q.write(0);
-    eff_q.write(0);
+    reset();
     return;
   }
   multiply();
   const bool it = iterate_o.read();
-  const std::uint64_t v = v_q.read(), s = s_q.read(), t = target(), a = accel_i.read();
-  const std::uint64_t vmin = ramp(vmin_i.read());
-  const std::uint64_t d_dist = d_.read() << (kDistFrac - kNormFrac);
-  if (pend_q.read() && stepped_i.read())
-    busy_q.write(std::uint32_t(kNormLatency - 1));
-  else if (busy_q.read() != 0)
-    busy_q.write(busy_q.read() - 1);
-  pend_q.write(it);
-  if (it) rem_q.write(rem_q.read() > d_dist ? rem_q.read() - d_dist : 0);
+  const std::uint64_t d_dist = d_q.read() << (kDistFrac - kNormFrac);
+  // The correction of the run's provisional iterations, x 2^-kNormFrac steps.
+  const std::int64_t corr = std::int64_t(m_q.read()) * (std::int64_t(d_.read()) - std::int64_t(d_q.read()));
+  norm_seq(it);
+  if (it) {
+    rem_q.write(rem_q.read() > d_dist ? rem_q.read() - d_dist : 0);
+  } else if (load()) {
+    const std::int64_t r = std::int64_t(rem_q.read()) - corr * (std::int64_t{1} << (kDistFrac - kNormFrac));
+    rem_q.write(r > 0 ? std::uint64_t(r) : 0);
+  }
   if (!running_i.read()) {
     ph_q.write(0);
-  } else if (advance_i.read()) {
-    const std::uint64_t next = ph_q.read() + v - (it ? d_.read() << (kRampFrac - kNormFrac) : 0);
-    ph_q.write(std::min(next, (std::uint64_t{1} << kPhaseBits) - 1));
+  } else if (advance_i.read() || load()) {
+    const std::int64_t sub =
+        it ? std::int64_t(d_q.read() << (kRampFrac - kNormFrac)) : corr * (std::int64_t{1} << (kRampFrac - kNormFrac));
+    const std::int64_t next = std::min(phase() + (advance_i.read() ? std::int64_t(v_q.read()) : 0) - sub,
+                                       (std::int64_t{1} << kPhaseBits) - 1);
+    ph_q.write(std::uint64_t(next) & ((std::uint64_t{1} << kPhaseWidth) - 1));
   }
-  if (advance_i.read() && running_i.read()) {
-    const auto dist = [](std::uint64_t speed) { return speed >> (kRampFrac - kDistFrac); };
-    if (a == 0) {
-      v_q.write(t);
-      s_q.write(0);
-    } else if (v < t) {
-      v_q.write(t - v > a ? v + a : t);
-      if (v > vmin) s_q.write(s + dist(v));
-    } else if (v > t) {
-      const std::uint64_t vn = v - t > a ? v - a : t;
-      v_q.write(vn);
-      if (vn > vmin) s_q.write(s > dist(vn) ? s - dist(vn) : 0);
-      if (vn == 0) s_q.write(0);
-    } else if (v == 0) {
-      s_q.write(0);
-    }
-  }
+  if (advance_i.read() && running_i.read()) ramp_seq();
   if (!running_i.read() && !take_i.read()) {
     v_q.write(0);
     s_q.write(0);
@@ -146,8 +177,11 @@ void dda_pace::seq() {
     exit_q.write(exit_i.read());
     brake_q.write(brake_exit_i.read());
     rem_q.write(std::uint64_t(length_i.read()) << (kDistFrac - kLenFrac));
-    busy_q.write(std::uint32_t(kNormLatency));
     pend_q.write(false);
+    first_q.write(true);
+    due_q.write(false);
+    fresh_q.write(false);
+    m_q.write(0);
   }
 }
 

@@ -22,11 +22,14 @@ SC_MODULE(dda_pace) {
   // aw: the integrands' width (the RTL's AW); the other widths are model/motion/pacer.hpp's.
   dda_pace(sc_core::sc_module_name name, int aw);
 
-  // The registers (names as in the RTL); d is the norm unit's.
+  // The registers (names as in the RTL); d_ is the norm unit's last d.
   sc_core::sc_signal<std::uint64_t> v_q{"v_q"}, ph_q{"ph_q"}, s_q{"s_q"}, rem_q{"rem_q"};
   sc_core::sc_signal<std::uint32_t> cruise_q{"cruise_q"}, limit_q{"limit_q"}, exit_q{"exit_q"}, brake_q{"brake_q"},
       busy_q{"busy_q"};
-  sc_core::sc_signal<bool> pend_q{"pend_q"};
+  sc_core::sc_signal<bool> pend_q{"pend_q"}, first_q{"first_q"}, due_q{"due_q"}, fresh_q{"fresh_q"};
+  sc_core::sc_signal<std::uint32_t> m_q{"m_q"};  // the run's provisional iterations
+  sc_core::sc_signal<std::uint64_t> d_q{"d_q"};  // the d the pacer paces with
+  // (ph_q holds the signed phase in kPhaseWidth bits, two's complement, as the RTL.)
   // The cruise speed times the override, by shift and add.
   sc_core::sc_signal<std::uint32_t> ovr_q{"ovr_q"}, mplier_q{"mplier_q"}, mcnt_q{"mcnt_q"};
   sc_core::sc_signal<std::uint64_t> mcand_q{"mcand_q"}, macc_q{"macc_q"}, eff_q{"eff_q"};
@@ -35,9 +38,16 @@ SC_MODULE(dda_pace) {
  private:
   void comb();
   void seq();
+  void reset();
+  void norm_seq(bool it);        // the norm unit's count and the hand-over of its d
+  void ramp_seq();               // the ramp and the braking distance
   void multiply();               // the shift-and-add product's step and start
   std::uint64_t target() const;  // the speed the ramp heads for
   bool decel() const;
+  bool seen() const { return pend_q.read() && stepped_i.read(); }  // a step on the last edge
+  bool free() const { return busy_q.read() == 0; }
+  bool load() const { return free() && !fresh_q.read(); }  // d_q takes the norm unit's d
+  std::int64_t phase() const;                              // ph_q's value
 
   sc_core::sc_signal<bool> start_{"start"}, norm_busy_{"norm_busy"};
   sc_core::sc_signal<std::uint64_t> d_{"d"};

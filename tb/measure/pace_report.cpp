@@ -78,6 +78,7 @@ struct Run {
     in.running = dp && !dp->done();
     // The running piece's, or the finished one's (the core's registers as it left them).
     if (dp) in.norm = motion::norm_operands(plan.pieces[cur].cmd, dp->regs());
+    in.stepped = stepped;
     in.take = !in.running && next < plan.pieces.size();
     if (in.take) in.entry = entries[next];
     in.next_queued = next + (in.take ? 1 : 0) < plan.pieces.size();
@@ -104,8 +105,10 @@ struct Run {
     }
     last_clock = clock;
     last_v = pacer.speed();
+    // (An iteration paced provisionally, with the run before's d, is not one: its time is
+    // corrected once the run's own d is in.)
     if (pacer.speed() == pacer.target(in) && !pacer.ramping_down() && !in.set.hold &&
-        in.set.override_ == motion::kOverrideOne && d > 0) {
+        in.set.override_ == motion::kOverrideOne && d > 0 && pacer.fresh()) {
       const double want = hooks.entries ? ramp_steps_per_s(pacer.target(in), o.clock_hz) : o.feed;
       res.worst_cruise_error = std::max(res.worst_cruise_error, std::fabs(path_speed - want) / want);
       ++res.cruise_iterations;
@@ -154,9 +157,8 @@ struct Run {
     }
     const bool it = pacer.iterate(in);
     if (it) measure(in, clock);
-    const bool was_stepped = stepped;
-    if (hooks.edge) hooks.edge(pacer, in, was_stepped);
-    pacer.edge(in, was_stepped);
+    if (hooks.edge) hooks.edge(pacer, in);
+    pacer.edge(in);
     stepped = false;
     std::array<bool, 3> step{}, dir{};
     if (it) {

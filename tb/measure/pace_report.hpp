@@ -47,7 +47,8 @@ struct PaceRow {
 struct PaceResult {
   std::uint64_t clocks = 0, iterations = 0, cruise_iterations = 0;
   double path = 0;                 // steps
-  double worst_cruise_error = 0;   // |path speed - feed| / feed over the cruise iterations
+  double worst_cruise_error = 0;   // |path speed - feed| / feed over the cruise iterations (paced
+                                   // with their own d, not provisionally)
   double worst_speed_change = 0;   // steps/s^2: the commanded speed's change between iterations
   double last_speed = 0;           // steps/s: the commanded speed of the last iteration
   double peak_iteration_rate = 0;  // iterations/s the pace asks for: the commanded speed over d, at most
@@ -71,7 +72,7 @@ struct PaceHooks {
   std::function<void(std::uint64_t clock, const motion::Pacer&, double path)> watch;
   // Just before every clock's edge (clock by clock only): the pacer's inputs and
   // whether the last iteration stepped, what an RTL pacer run beside it is given.
-  std::function<void(const motion::Pacer&, const motion::Pacer::In&, bool stepped)> edge;
+  std::function<void(const motion::Pacer&, const motion::Pacer::In&)> edge;
   // Every iteration.
   std::function<void(const PaceRow&)> row;
   bool clock_by_clock = false;  // never skip (the skipping is checked against this)

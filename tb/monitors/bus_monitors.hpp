@@ -47,8 +47,9 @@ class SpeedWatch : public BusTap {
   explicit SpeedWatch(BusTarget& inner) : BusTap(inner) {}
   SpeedWatch(BusTarget& inner, const MotionLimits& limits) : BusTap(inner) { watch(limits); }
   void tick(const BusIn& bus) override;
-  // A new monitor from here on (the one before, if any, is dropped).
-  void watch(const MotionLimits& limits) { mon_.emplace(limits); }
+  // A new monitor from here on (the one before, if any, is dropped); sub_clocks as
+  // SpeedMonitor's.
+  void watch(const MotionLimits& limits, std::uint64_t sub_clocks = 0) { mon_.emplace(limits, sub_clocks); }
   void unwatch() { mon_.reset(); }
   bool watching() const { return mon_.has_value(); }
   const SpeedMonitor& monitor() const { return mon_.value(); }

@@ -12,22 +12,24 @@ namespace dda::motion {
 
 std::uint64_t SpeedMonitor::window_for(const MotionLimits& l, double share) {
   if (!(l.clock_hz > 0)) throw GuardError("speed monitor: the clock must be positive");
+  if (l.subs < 1) throw GuardError("speed monitor: a window takes at least one sample");
   if (!(share > 0)) return 1;
   // 2 * kQuantSteps / T^2 <= share * max_accel and kQuantSteps / T <= share / 2 *
-  // max_speed, T = kSubs * sub / clock.
+  // max_speed, T = subs * sub / clock.
   double t = 0;
   if (l.max_accel > 0) t = std::sqrt(2 * kQuantSteps / (share * l.max_accel));
   if (l.max_speed > 0) t = std::max(t, kQuantSteps / (share / 2 * l.max_speed));
-  return std::max<std::uint64_t>(1, std::uint64_t(std::ceil(t * l.clock_hz / kSubs)));
+  return std::max<std::uint64_t>(1, std::uint64_t(std::ceil(t * l.clock_hz / l.subs)));
 }
 
 SpeedMonitor::SpeedMonitor(const MotionLimits& limits, std::uint64_t sub_clocks)
     : lim_(limits), sub_(sub_clocks ? sub_clocks : window_for(limits)) {
   if (!(lim_.clock_hz > 0)) throw GuardError("speed monitor: the clock must be positive");
+  if (lim_.subs < 1) throw GuardError("speed monitor: a window takes at least one sample");
   // The machine is at rest when the monitor starts: the windows before it are still.
-  at_.assign(std::size_t(kSubs) + 1, pos_);
-  speeds_.assign(std::size_t(kSubs) + 1, 0.0);
-  axis_v_.assign(std::size_t(kSubs) + 1, std::array<double, 3>{});
+  at_.assign(std::size_t(lim_.subs) + 1, pos_);
+  speeds_.assign(std::size_t(lim_.subs) + 1, 0.0);
+  axis_v_.assign(std::size_t(lim_.subs) + 1, std::array<double, 3>{});
 }
 
 void SpeedMonitor::edge(const std::array<bool, 3>& step, const std::array<bool, 3>& dir) {
@@ -60,7 +62,7 @@ void SpeedMonitor::sample() {
     }
     len += std::sqrt(s);
   }
-  const double t_win = double(kSubs * sub_) / lim_.clock_hz;
+  const double t_win = double(std::uint64_t(lim_.subs) * sub_) / lim_.clock_hz;
   Sample s;
   s.t = double(cycle_) / lim_.clock_hz;
   s.speed = len / t_win;
@@ -115,8 +117,9 @@ std::string SpeedMonitor::summary() const {
   return fmt::format(
       "speed monitor: {} windows of {} clocks, peak speed {:.1f} steps/s (limit {}), peak acceleration "
       "{:.4g} steps/s^2 (limit {})",
-      samples_.size(), kSubs * sub_, peak_speed_, lim_.max_speed > 0 ? fmt::format("{:.1f}", lim_.max_speed) : "none",
-      peak_accel_, lim_.max_accel > 0 ? fmt::format("{:.4g}", lim_.max_accel) : "none");
+      samples_.size(), std::uint64_t(lim_.subs) * sub_, peak_speed_,
+      lim_.max_speed > 0 ? fmt::format("{:.1f}", lim_.max_speed) : "none", peak_accel_,
+      lim_.max_accel > 0 ? fmt::format("{:.4g}", lim_.max_accel) : "none");
 }
 
 }  // namespace dda::motion

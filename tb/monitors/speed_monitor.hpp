@@ -7,7 +7,7 @@
 //
 // Method. The monitor counts each axis' rising step edges in the direction the pin shows
 // (the position a drive would count) and samples the positions every `sub` clocks. The
-// path length over a window of kSubs samples (window = kSubs * sub clocks, T seconds) is
+// path length over a window of `subs` samples (window = subs * sub clocks, T seconds) is
 // the length of the polyline through them; the speed v is that length over T, the
 // acceleration the change of v from one window to the next (windows T apart) over T.
 // Counting whole steps puts each sampled position within one step of the motion per
@@ -16,8 +16,9 @@
 // 2 * kQuantSteps / T^2: window_for() picks the shortest window that keeps both within a
 // share of their limits. Windows slide by one sample. The machine is at rest
 // when the monitor starts (a run that leaves rest at speed fails). The polyline follows a
-// curve whose radius is large against a window's length; on a curve as short as the
-// window the chord shortens the path and the figures are not meaningful.
+// curve whose radius is large against a sample's length (a chord of s steps on a radius
+// r is short by about (s / r)^2 / 24 of it); on a curve as short as that the figures are
+// not meaningful. More samples per window follow a tighter curve.
 #pragma once
 
 #include <array>
@@ -34,6 +35,7 @@ struct MotionLimits {
   double max_accel = 0;  // steps/s^2 along the path; 0: not checked
   // The share over each limit a measured figure may reach before it fails.
   double speed_tolerance = 0.01, accel_tolerance = 0.05;
+  int subs = 4;  // samples per window
   // Each axis' own speed and acceleration (steps/s, steps/s^2; 0: not checked): its
   // position's change over a window, and that change's change between windows.
   std::array<double, 3> axis_speed{}, axis_accel{};
@@ -41,7 +43,6 @@ struct MotionLimits {
 
 class SpeedMonitor {
  public:
-  static constexpr int kSubs = 4;             // samples per window
   static constexpr double kQuantSteps = 2.0;  // a window length's error from whole steps, at most
   // The sampling period (clocks) whose window keeps the quantization's share of the
   // acceleration at most `share` of max_accel and of the speed at most half that of
@@ -83,8 +84,8 @@ class SpeedMonitor {
   std::uint64_t sub_ = 1, cycle_ = 0;
   std::array<bool, 3> step_{};
   std::array<std::int64_t, 3> pos_{};
-  std::deque<std::array<std::int64_t, 3>> at_;  // the last kSubs + 1 sampled positions
-  std::deque<double> speeds_;                   // the last kSubs + 1 windows' speeds
+  std::deque<std::array<std::int64_t, 3>> at_;  // the last subs + 1 sampled positions
+  std::deque<double> speeds_;                   // the last subs + 1 windows' speeds
   std::deque<std::array<double, 3>> axis_v_;    // and each axis' velocity
   std::vector<Sample> samples_;
   double peak_speed_ = 0, peak_accel_ = 0;

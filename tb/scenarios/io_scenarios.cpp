@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "tb/scenarios/io_scenarios.hpp"
 
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "host/driver/homing.hpp"
 #include "host/planner/planner.hpp"
@@ -235,6 +238,102 @@ void probing(BusTarget& block, const Expect& ex) {
   ex(refused, "a probing move without contact is refused (no contact)");
 }
 
+// One clock's registers the snapshot latches, by the cycle counter's value in that clock.
+struct SnapRec {
+  std::int32_t x, y;
+  std::uint32_t level, done;
+};
+using SnapHistory = std::map<std::uint32_t, SnapRec>;
+void record_snapshots(MachineSim& t, SnapHistory& hist) {
+  t.force = [&t, &hist](MachinePins&) {
+    hist[std::uint32_t(t.model().regs()[breg("u_io.cycle_q")])] =
+        SnapRec{reg32(t, "pos_x_q"), reg32(t, "pos_y_q"), std::uint32_t(reg32(t, "level_q")),
+                std::uint32_t(reg32(t, "done_count_q"))};
+  };
+}
+// The snapshot's registers are the clock's it names; returns that clock's record and the
+// next clock's (the edge the snapshot was written on), or nothing.
+std::optional<std::pair<SnapRec, SnapRec>> check_snapshot(const MotionDriver::Snapshot& s, const SnapHistory& hist,
+                                                          const Expect& ex) {
+  const auto at = hist.find(s.cycle), next = hist.find(s.cycle + 1);
+  ex(at != hist.end() && next != hist.end(), "SNAP_CYCLE is a cycle of the run");
+  if (at == hist.end() || next == hist.end()) return std::nullopt;
+  const SnapRec& r = at->second;
+  ex.eq(s.pos.x, r.x, "s.pos.x == r.x");
+  ex.eq(s.pos.y, r.y, "s.pos.y == r.y");
+  ex.eq(s.level, r.level, "s.level == r.level");
+  ex.eq(s.done, r.done, "s.done == r.done");
+  return std::make_pair(r, next->second);
+}
+
+// The snapshot on the edges where the queue level changes, atomic there: written in one
+// CTRL write with a commit (SNAP_LEVEL the level before it), with an abort, and a clock
+// at a time across a take (each run from reset, the same but for when the snapshot is
+// written: the clocks before the take, the take's own edge, the clocks after).
+void snapshot_edges(BusTarget& block, const Expect& ex) {
+  const auto run = [&](SnapHistory& hist, std::int64_t wait, const std::function<void(MotionDriver&)>& at_end) {
+    fresh(block);
+    MachineSim t(block, Point{}, MachineSwitches{});
+    record_snapshots(t, hist);
+    WishboneMaster m(t, 31, false, 0);
+    MotionDriver d(m, 31);
+    queue_unpaced(d, Point{400, 300, 0}, 3);
+    queue_unpaced(d, Point{-20, 10, 0}, 3);
+    const std::uint32_t queued = std::uint32_t(reg32(t, "u_io.cycle_q"));
+    if (wait > 0) m.idle(int(wait));
+    at_end(d);
+    return queued;
+  };
+  // With a commit: the level goes up on the snapshot's own edge.
+  {
+    SnapHistory hist;
+    run(hist, 0, [&](MotionDriver& d) {
+      const Plan p = plan_line(Point{}, Point{5, 5, 0}, Preload::Half);
+      d.queue(p.pieces[0].cmd, 0, 0, {}, field_bit("CTRL", "snapshot"));
+      const auto r = check_snapshot(d.snapshot_registers(), hist, ex);
+      ex(r && r->second.level == r->first.level + 1, "the commit's edge is the snapshot's");
+      d.drain();
+    });
+  }
+  // With an abort: the level drops to 0 on the snapshot's own edge.
+  {
+    SnapHistory hist;
+    run(hist, 20, [&](MotionDriver& d) {
+      d.write("CTRL", field_bit("CTRL", "abort") | field_bit("CTRL", "snapshot"));
+      const auto r = check_snapshot(d.snapshot_registers(), hist, ex);
+      ex(r && r->first.level > 0 && r->second.level == 0, "the abort's edge is the snapshot's");
+    });
+  }
+  // Across the take of the second line: find its edge, and where a snapshot right after
+  // the queueing lands, then land one on each clock from 3 before to 3 after.
+  SnapHistory cal;
+  std::uint32_t landed = 0;
+  const std::uint32_t queued = run(cal, 0, [&](MotionDriver& d) {
+    landed = d.snapshot().cycle;
+    d.drain();
+  });
+  std::optional<std::uint32_t> take;
+  for (auto it = cal.find(queued); it != cal.end() && std::next(it) != cal.end(); ++it) {
+    if (std::next(it)->second.level + 1 == it->second.level) {
+      take = it->first;
+      break;
+    }
+  }
+  ex(take.has_value() && *take > landed + 3, "the second line's take comes after the queueing");
+  if (!take || *take <= landed + 3) return;
+  int on_take = 0;
+  for (std::uint32_t c = *take - 3; c <= *take + 3; ++c) {
+    SnapHistory hist;
+    run(hist, std::int64_t(c) - std::int64_t(landed), [&](MotionDriver& d) {
+      const MotionDriver::Snapshot s = d.snapshot();
+      ex.eq(s.cycle, c, "the snapshot lands on the clock asked");
+      const auto r = check_snapshot(s, hist, ex);
+      on_take += r && r->second.level + 1 == r->first.level;
+    });
+  }
+  ex.eq(on_take, 1, "one snapshot on the take's edge");
+}
+
 // The snapshot while two axes run: each SNAP_* set equals the positions, level and count
 // the block held in one clock (recorded here, before every edge, from the registers),
 // where reading POS_X then POS_Y gives two clocks' values.
@@ -270,6 +369,7 @@ void snapshot_moving(BusTarget& block, const Expect& ex) {
     moving += a.x != s.pos.x && a.y != s.pos.y;
   }
   ex(moving >= 6, "moving >= 6");  // both axes moved between the snapshot and the reads
+  snapshot_edges(block, ex);
 }
 
 // Pulses shorter than the filter are ignored on every input; one as long passes.

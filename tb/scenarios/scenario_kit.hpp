@@ -14,8 +14,8 @@
 namespace dda::motion::scenario {
 
 // Pacing: 2^-20 steps per clock^2, the minimum speed 1/1024 step per clock; speeds x
-// 2^32 steps per clock, under the pacer's top speed (a stepping iteration every 107
-// clocks at most): from 1/128 step per clock the braking distance is 32 steps.
+// 2^32 steps per clock, under the pacer's top speed (a step every 57 clocks at most):
+// from 1/128 step per clock the braking distance is 32 steps.
 constexpr std::uint32_t kAccel = 1u << 28, kVmin = 1u << 22;
 constexpr std::uint32_t kFast = 1u << 25, kSlow = 1u << 23;  // 1/128 and 1/512 step per clock
 
