@@ -5,7 +5,9 @@
 # `dda feed --feed-rate F --accel A --clock 40e6 --summary` on the paper's example, the
 # lathe arc, a 4:1 quarter ellipse, a full circle of radius 2000 and a 100 x 30 mm line
 # (1 um per step), at feeds of 10 mm/min to 10 m/min (167 to 166,667 steps/s) and
-# accelerations of 50 and 500 mm/s^2 (5e5 and 5e6 steps/s^2). Runs the arcs in parallel
+# accelerations of 50 and 500 mm/s^2 (5e5 and 5e6 steps/s^2); and the block's rate at
+# 40 MHz: 400,000 steps/s at 4e7 steps/s^2 on the full circle, a full 2000 x 500 ellipse
+# and a 20000 x 6000 line. Runs the arcs in parallel
 # (GNU parallel, one job per core).
 #   usage: scripts/pace-table.sh [--write]   (--write puts it into docs/results.md)
 set -euo pipefail
@@ -26,6 +28,14 @@ for arc in "${arcs[@]}"; do
       jobs+=("${arc%%|*}|${arc#*|}|$feed|$accel")
     done
   done
+done
+fast=(
+  "a full circle of radius 2000|--a 2000 --b 2000 --from-theta 0 --to-theta 0 --preload half"
+  "a full ellipse 2000 x 500|--a 2000 --b 500 --from-theta 0 --to-theta 0 --preload half"
+  "a line 20000 x 6000|--line --from 0,0 --to 20000,6000 --preload half"
+)
+for arc in "${fast[@]}"; do
+  jobs+=("${arc%%|*}|${arc#*|}|400000|4e7")
 done
 run_one() {
   IFS='|' read -r label opts feed accel <<<"$1"

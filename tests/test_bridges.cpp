@@ -49,6 +49,9 @@ TEST_CASE("bridges: the same random work over Wishbone, AXI4-Lite and SPI does t
     CHECK(w.back().snap_after_write == w.back().snap);
     CHECK(w.back().irq_seen);
     CHECK(w.back().irq_cleared);
+    // Reads while a write's response waits (AXI4-Lite), frames of the wrong length (SPI).
+    CHECK((w.back().reads_past_response > 0) == (bus == Bus::axil));
+    CHECK((w.back().stray_frames > 0) == (bus == Bus::spi));
   }
   CHECK(w[0].pieces >= 8);
   CHECK(w[0].iterations.size() > 100);

@@ -224,3 +224,42 @@ TEST_CASE("pace unit: holds and overrides in lockstep with the reference model",
   });
   CHECK(over.end == plan.to);
 }
+
+TEST_CASE("pace unit: the decisions exactly at their comparison boundaries, in lockstep with the reference model",
+          "[pacer][rtl]") {
+  // Fields chosen so that the comparisons meet their thresholds: the cruise speed k ramp
+  // steps above the minimum speed, and one unit either side (the last step up with the
+  // target exactly a away, the speed equal to the minimum); lone lines of the shortest
+  // lengths along an axis (d exactly one step: the distance to go equal to d on the last
+  // iteration, the braking distance and the margin against it); and a circle of radius 2,
+  // four pieces back to back whose exit speed equals the cruise speed.
+  const std::uint64_t a = std::uint64_t{1} << 20;                           // x 2^-kRampFrac steps/clock^2
+  const std::uint32_t vmin = 1u << 22;                                      // x 2^-kSpeedFrac steps/clock
+  const std::uint32_t step = std::uint32_t(a >> (kRampFrac - kSpeedFrac));  // a in entry speed units
+  const auto speed = [](std::uint32_t f) { return std::ldexp(double(f), -kSpeedFrac) * kClock; };
+  ArcSpec tiny;
+  tiny.a = tiny.b = 2;
+  tiny.preload = Preload::Half;
+  tiny.from = tiny.to = Point{2, 0, 0};
+  std::vector<std::pair<std::string, Plan>> plans;
+  for (std::int64_t len = 1; len <= 3; ++len)
+    plans.emplace_back("a line of " + std::to_string(len), plan_line(Point{}, Point{len, 0, 0}, Preload::Half));
+  plans.emplace_back("a circle of radius 2", plan_arc(tiny));
+  int runs = 0;
+  for (std::uint32_t k = 0; k <= 3; ++k) {
+    for (int off = -1; off <= 1; ++off) {
+      if (k == 0 && off < 0) continue;  // (the cruise speed below the minimum)
+      const std::uint32_t cruise = vmin + k * step + std::uint32_t(off);
+      const PaceOptions o{speed(cruise), std::ldexp(double(a), -kRampFrac) * kClock * kClock, speed(vmin), kClock};
+      REQUIRE(speed_field(o.feed, kClock) == cruise);
+      REQUIRE(accel_field(o.accel, kClock) == a);
+      for (const auto& [name, plan] : plans) {
+        INFO(name << ", cruise " << cruise << " (" << k << " ramp steps above the minimum speed, " << off << ")");
+        const PaceResult r = lockstep(plan, o);
+        CHECK(r.end == plan.to);
+        ++runs;
+      }
+    }
+  }
+  CHECK(runs == 44);
+}

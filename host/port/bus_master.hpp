@@ -59,16 +59,24 @@ class WishboneMaster : public BusMaster {
 
 // An AXI4-Lite master (for the block behind rtl/dda_axil.v): a write's address and data
 // each after a random delay (either first), a read's address; the response taken after a
-// random delay; random idle cycles before each access.
+// random delay; random idle cycles before each access. One write in four, once done,
+// leaves its response waiting (BVALID high, BREADY low) while the reads after it go on;
+// the next write takes it first.
 class AxilMaster : public BusMaster {
  public:
   AxilMaster(BusTarget& t, std::uint64_t seed, int idle_percent)
       : BusMaster(t), rng_(seed), idle_percent_(idle_percent) {}
   std::uint32_t run(const Transfer& t) override;
+  bool response_waiting() const { return b_waiting_; }
+  // The reads made while a write's response waited.
+  std::uint64_t reads_past_response() const { return reads_past_response_; }
 
  private:
+  void take_response();
   std::mt19937_64 rng_;
   int idle_percent_;
+  bool b_waiting_ = false;
+  std::uint64_t reads_past_response_ = 0;
 };
 
 // An SPI master, mode 0 (for the block behind rtl/dda_spi.v): one frame per write; a
@@ -84,6 +92,10 @@ class SpiMaster : public BusMaster {
   std::uint32_t run(const Transfer& t) override;
   // One frame of kSpiFrameBits bits as given (MSB first); returns the bits MISO carried.
   std::uint64_t frame(std::uint64_t mosi, int bits = kSpiFrameBits);
+  // A write frame one edge short, or one or nine edges long: the block must make no
+  // access, and the next frame's status must say bad (run() checks it).
+  void stray_write(std::uint32_t adr, std::uint32_t dat);
+  int strays() const { return strays_; }
 
  private:
   void hold(BusIn& b, int cycles);
@@ -91,7 +103,9 @@ class SpiMaster : public BusMaster {
   std::mt19937_64 rng_;
   int half_;
   bool jitter_;
-  int count_ = -1;  // the status' access count expected next (-1: not known yet)
+  int count_ = -1;      // the status' access count expected next (-1: not known yet)
+  bool stray_ = false;  // the last frame was of the wrong length
+  int strays_ = 0;
 };
 
 // A master for a target's bus: Wishbone (pipelined or classic), AXI4-Lite or SPI.

@@ -59,13 +59,36 @@ std::uint32_t status_field(std::string_view name, std::uint32_t status) {
 
 }  // namespace
 
+void AxilMaster::take_response() {
+  for (int guard = 0; guard < kGuard; ++guard) {
+    const AxilOut o = t_.outputs().axil;
+    BusIn b;
+    b.axil.bready = true;
+    tick(b);
+    if (o.bvalid) {
+      b_waiting_ = false;
+      if (o.bresp != 0) throw GuardError("AXI4-Lite master: BRESP " + std::to_string(o.bresp));
+      return;
+    }
+  }
+  throw GuardError("AXI4-Lite master: no response within " + std::to_string(kGuard) + " cycles");
+}
+
 std::uint32_t AxilMaster::run(const Transfer& t) {
   std::uniform_int_distribution<int> pct(0, 99);
   while (pct(rng_) < idle_percent_) idle(1);
+  // (The slave takes no write while a response waits.)
+  if (t.we && b_waiting_) take_response();
+  reads_past_response_ += !t.we && b_waiting_;
+  const bool leave = t.we && rng_() % 4 == 0;  // its response left waiting
   int aw_wait = t.we ? int(rng_() % 3) : 0, w_wait = t.we ? int(rng_() % 3) : 0;
   bool aw_done = !t.we, w_done = !t.we, ar_done = t.we;
   for (int guard = 0; guard < kGuard; ++guard) {
     const AxilOut o = t_.outputs().axil;  // this cycle's ready and valid
+    if (leave && o.bvalid) {              // the write is done; its response left waiting
+      b_waiting_ = true;
+      return 0;
+    }
     BusIn b;
     AxilIn& a = b.axil;
     a.awvalid = !aw_done && aw_wait == 0;
@@ -76,7 +99,7 @@ std::uint32_t AxilMaster::run(const Transfer& t) {
     a.arvalid = !ar_done;
     a.araddr = t.adr;
     const bool ready = rng_() % 3 != 0;  // the response is taken, or not yet
-    a.bready = t.we && ready;
+    a.bready = t.we && ready && !leave;
     a.rready = !t.we && ready;
     tick(b);
     aw_done = aw_done || (a.awvalid && o.awready);
@@ -84,6 +107,7 @@ std::uint32_t AxilMaster::run(const Transfer& t) {
     ar_done = ar_done || (a.arvalid && o.arready);
     aw_wait = std::max(0, aw_wait - 1);
     w_wait = std::max(0, w_wait - 1);
+
     if (a.bready && o.bvalid) {
       if (o.bresp != 0) throw GuardError("AXI4-Lite master: BRESP " + std::to_string(o.bresp));
       return 0;
@@ -123,19 +147,34 @@ std::uint64_t SpiMaster::frame(std::uint64_t mosi, int bits) {
   return miso;
 }
 
+namespace {
+std::uint64_t spi_frame_word(bool we, std::uint32_t sel, std::uint32_t adr, std::uint32_t dat) {
+  const std::uint32_t cmd = (we ? 1u << kSpiWriteBit : 0u) | (we ? sel & 0xFu : 0u);
+  return place("command", cmd) | place("address", adr) | place("data", dat);
+}
+}  // namespace
+
+void SpiMaster::stray_write(std::uint32_t adr, std::uint32_t dat) {
+  static constexpr int kOff[] = {-1, 1, 9};
+  frame(spi_frame_word(true, 0xFu, adr, dat), kSpiFrameBits + kOff[rng_() % 3]);
+  stray_ = true;
+  ++strays_;
+}
+
 std::uint32_t SpiMaster::run(const Transfer& t) {
-  const auto word = [](bool we, std::uint32_t sel, std::uint32_t adr, std::uint32_t dat) {
-    const std::uint32_t cmd = (we ? 1u << kSpiWriteBit : 0u) | (we ? sel & 0xFu : 0u);
-    return place("command", cmd) | place("address", adr) | place("data", dat);
-  };
   const auto check = [](std::uint32_t status, const char* what) {
     if (status_field("bad", status)) throw GuardError(std::string("SPI master: the status says bad ") + what);
   };
-  const std::uint32_t s1 = take("status", frame(word(t.we, t.sel, t.adr, t.dat))) & 0xFFu;
-  check(s1, "before this access");
+  const std::uint32_t s1 = take("status", frame(spi_frame_word(t.we, t.sel, t.adr, t.dat))) & 0xFFu;
+  if (stray_) {
+    if (!status_field("bad", s1)) throw GuardError("SPI master: a frame of the wrong length, and the status not bad");
+    stray_ = false;
+  } else {
+    check(s1, "before this access");
+  }
   if (t.we) return 0;
   // The read's data comes back in the next frame: a read of ID.
-  const std::uint64_t back = frame(word(false, 0, reg_offset("ID"), 0));
+  const std::uint64_t back = frame(spi_frame_word(false, 0, reg_offset("ID"), 0));
   const std::uint32_t s2 = take("status", back);
   check(s2, "for a read");
   if (!status_field("done", s2) || status_field("count", s2) != ((status_field("count", s1) + 1) & 0xFu)) {

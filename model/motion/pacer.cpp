@@ -208,10 +208,11 @@ std::uint64_t Pacer::idle_clocks(const In& in) const {
     // The decision reads floor(ph / 2^(kRampFrac - kDistFrac)) + j v against rem + brake - s - margin.
     const std::int64_t exit_brake = in.next_queued ? std::int64_t(dist_of_len(e_.brake_exit)) : 0;
     const std::int64_t margin = std::int64_t{1} << (kDistFrac - kMarginShift);
-    const std::int64_t thr =
-        (std::int64_t(rem_) + exit_brake - std::int64_t(s_) - margin) * (std::int64_t{1} << (kRampFrac - kDistFrac));
-    const std::int64_t k = thr > ph_ ? (thr - 1 - ph_) / v + 1 : 0;
-    n = std::min(n, k);
+    using i128 = __int128;  // (the threshold at the phase's scale passes 2^63)
+    const i128 thr = i128(std::int64_t(rem_) + exit_brake - std::int64_t(s_) - margin) *
+                     (std::int64_t{1} << (kRampFrac - kDistFrac));
+    const i128 k = thr > ph_ ? (thr - 1 - ph_) / v + 1 : 0;
+    n = std::int64_t(std::min<i128>(n, k));
   }
   return std::uint64_t(n);
 }

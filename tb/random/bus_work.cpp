@@ -110,6 +110,9 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
       at = at + Point{piece.to.x - piece.from.x, piece.to.y - piece.from.y, piece.to.z - piece.from.z};
       mon.expect(at);
       const std::uint32_t feed = rng() % 2 == 0 ? 0 : 0x40000000u + std::uint32_t(rng() % 0xC0000000u);
+      // Over SPI now and then a frame of the wrong length: an abort it must not make.
+      if (auto* spi = dynamic_cast<SpiMaster*>(m.get()); spi && rng() % 4 == 0)
+        spi->stray_write(reg_offset("CTRL"), field_bit("CTRL", "abort"));
       d.queue(piece.cmd, feed, piece.rot);
       ++w.pieces;
     }
@@ -124,6 +127,8 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
   w.irq_cleared = !rec.outputs().irq;
   w.want = at;
   w.end = d.position();
+  if (const auto* axil = dynamic_cast<const AxilMaster*>(m.get())) w.reads_past_response = axil->reads_past_response();
+  if (const auto* spi = dynamic_cast<const SpiMaster*>(m.get())) w.stray_frames = spi->strays();
   return w;
 }
 

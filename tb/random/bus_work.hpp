@@ -32,6 +32,10 @@ struct BusWork {
   std::uint32_t entry_read = ~0u;  // ENTRY read at the end (write-only: reads 0)
   std::uint64_t cycles = 0, pieces = 0;
   bool irq_seen = false, irq_cleared = false;  // the done interrupt at the end; off once cleared
+  // AXI4-Lite: the reads made while a write's response waited (BREADY low); SPI: the
+  // write frames of the wrong length sent among the others (each must make no access).
+  std::uint64_t reads_past_response = 0;
+  int stray_frames = 0;
 };
 
 // Runs `arcs` random arcs drawn from `seed` on t through a master of `bus`; throws
