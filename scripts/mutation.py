@@ -3,6 +3,7 @@
 """Mutation testing of rtl/: how many injected faults the project's vector sets catch.
 
   scripts/mutation.py [--count 100] [--seed 1] [--timeout 120] [--jobs N] [--build build]
+                     [--files FILE...]
 
 Draws COUNT mutants (seeded) from every site of the mutation operators below in the
 simulated sources of rtl/ (the file lists dda_core.f, dda_motion.f, dda_motion_axil.f,
@@ -199,6 +200,11 @@ def run_set(d, s, opts, build, timeout):
 def draw(args):
     rng = random.Random(args.seed)
     pool = sites()
+    if args.files:
+        unknown = sorted(set(args.files) - set(s["file"] for s in pool))
+        if unknown:
+            raise SystemExit(f"mutation: --files names what no bench simulates: {', '.join(unknown)}")
+        pool = [s for s in pool if s["file"] in args.files]
     rng.shuffle(pool)
     return pool
 
@@ -253,6 +259,8 @@ def main():
     ap.add_argument("--build", default=str(ROOT / "build"))
     ap.add_argument("--floor", type=float, default=95.0)
     ap.add_argument("--list", action="store_true", help="print the drawn mutants and stop")
+    ap.add_argument("--files", nargs="+", metavar="FILE",
+                    help="draw only in these files of rtl/ (e.g. the ones a change touched)")
     a = ap.parse_args()
     # Absolute: iverilog reads a nested file list's relative paths from the list's own
     # folder (rtl/), so a relative mutant folder would fail every block mutant's compile.

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "Vdda_pace.h"
@@ -262,4 +263,84 @@ TEST_CASE("pace unit: the decisions exactly at their comparison boundaries, in l
     }
   }
   CHECK(runs == 44);
+}
+
+namespace {
+
+// The pacer's decision to slow down compares s + the phase + the margin with the
+// distance to go (+ the exit's braking distance): the left side less the right, plus
+// the distance the iterations have taken off (which the phase loses as much of), on the
+// clock before edge `clock` of a lone entry of `length`, driven by hand (a core whose
+// every iteration moves one step, never stepping: one run), as the reference sees it.
+struct Drive {
+  Pacer::In in;
+  Drive(std::uint64_t accel, std::uint32_t vmin, std::uint32_t cruise, std::uint32_t length) {
+    in.advance = in.running = true;
+    in.set.accel = accel;
+    in.set.vmin = vmin;
+    in.norm = NormOperands{1u << 20, 0, 0, 1u << 20, 1u << 20};  // d: one step
+    in.entry = PaceEntry{cruise, cruise, 0, length, 0};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("pace unit: the braking decision on the very clock its two sides are equal, RTL and reference",
+          "[pacer][rtl]") {
+  // The comparison meets equality only when both sides agree to 2^-32 step, which
+  // planned pieces reach by chance alone. Built here: a ramp of 2^31 per clock to the
+  // minimum speed, a whole number of steps of it (so no braking distance is counted on
+  // the way up), and a cruise speed within a step above it, with every speed a multiple
+  // of 2^16 at the phase's scale; the phase as a distance then comes back to every
+  // residue modulo one length unit (2^24 at kDistFrac) within 512 clocks. A first run
+  // with a long entry finds a clock at cruise where the left side, with the distance
+  // gone, is a whole number of length units; the entry of exactly that length then meets
+  // equality on that clock, and the pacer heads for the minimum speed from it.
+  const std::uint64_t a = std::uint64_t{1} << 31;
+  const std::uint32_t vmin = std::uint32_t((std::uint64_t{40} * a) >> (kRampFrac - kSpeedFrac));
+  const std::uint32_t cruise = vmin + (1u << 13);
+  const std::int64_t margin = std::int64_t{1} << (kDistFrac - kMarginShift);
+  const std::int64_t unit = std::int64_t{1} << (kDistFrac - kLenFrac);
+  // The left side with the distance gone, clock by clock, on a long entry.
+  std::optional<std::pair<int, std::int64_t>> hit;
+  {
+    Drive dr(a, vmin, cruise, 1u << 30);
+    Pacer p;
+    dr.in.take = true;
+    p.edge(dr.in);
+    dr.in.take = false;
+    const std::int64_t length = std::int64_t(std::uint64_t{1} << 30) * unit;
+    for (int c = 1; c < 4000 && !hit; ++c) {
+      const std::int64_t left = std::int64_t(p.brake()) + (p.phase_value() >> (kRampFrac - kDistFrac)) + margin;
+      const std::int64_t gone = length - std::int64_t(p.to_go());
+      if (c > 2 * kOverrideClocks && p.speed() == p.cruise_speed() && (left + gone) % unit == 0)
+        hit = std::make_pair(c, (left + gone) / unit);
+      p.edge(dr.in);
+    }
+  }
+  REQUIRE(hit);
+  INFO("equal on clock " << hit->first << " of an entry of " << hit->second << " length units");
+  Lockstep rtl;
+  Pacer p;
+  Drive dr(a, vmin, cruise, std::uint32_t(hit->second));
+  dr.in.take = true;
+  rtl.edge(p, dr.in);
+  p.edge(dr.in);
+  rtl.compare(p);
+  dr.in.take = false;
+  bool equal = false;
+  std::uint64_t before = 0;
+  for (int c = 1; c < 4000; ++c) {
+    const std::int64_t left = std::int64_t(p.brake()) + (p.phase_value() >> (kRampFrac - kDistFrac)) + margin;
+    if (c == hit->first) {
+      equal = left == std::int64_t(p.to_go());
+      before = p.speed();
+      CHECK(p.target(dr.in) == std::uint64_t(vmin) << (kRampFrac - kSpeedFrac));  // slowing down from here
+    }
+    rtl.edge(p, dr.in);
+    p.edge(dr.in);
+    rtl.compare(p);
+    if (c == hit->first) CHECK(p.speed() < before);
+  }
+  CHECK(equal);
 }

@@ -81,6 +81,8 @@ void estop_mid_piece(BusTarget& block, const Expect& ex) {
   queue_unpaced(d, Point{50, 0, 0}, 1);
   d.drain();
   ex.eq(d.position().x, stopped.x + 50, "d.position().x == stopped.x + 50");
+  // LATCH_* keep the trip's positions through the clear and the moves after it.
+  ex.eq(d.positions("LATCH"), stopped, "d.positions(\"LATCH\") == stopped after the clear");
 }
 
 // A limit hit during a move, in both stop modes. Hard: no pulse ever starts toward the
