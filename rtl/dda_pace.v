@@ -99,7 +99,16 @@ module dda_pace #(
   wire load  = free & ~fresh_q;
   wire start = take_i | (free & (seen | due_q));
   wire signed [NF+2:0]  delta = $signed({1'b0, d}) - $signed({1'b0, d_q});
-  wire signed [CW-1:0]  corr  = $signed({1'b0, m_q}) * delta;  // x 2^-NF steps
+  // corr = m_q x delta (x 2^-NF steps), by shift and add on the difference's magnitude.
+  wire          dneg = delta[NF+2];
+  wire [NF+2:0] dmag = dneg ? -delta : delta;
+  reg  [CW-1:0] cmag;
+  integer       ci;
+  always @(*) begin
+    cmag = '0;
+    for (ci = 0; ci < MCW; ci = ci + 1) if (m_q[ci]) cmag = cmag + (CW'(dmag) << ci);
+  end
+  wire signed [CW-1:0]  corr  = dneg ? -$signed(cmag) : $signed(cmag);
 
   dda_norm #(.AW(AW), .NF(NF)) u_norm (
     .clk_i(clk_i), .rst_ni(rst_ni), .start_i(start),
@@ -164,7 +173,9 @@ module dda_pace #(
   wire signed [PW+1:0] ph_next = ph_add - ph_sub;
   wire                 ph_sat  = ~ph_next[PW+1] & ph_next[PW];  // 2^PW or above
   // The distance to go less d on an iteration, or the correction; at least 0.
-  wire signed [SW+1:0] rem_c   = $signed({2'b0, rem_q}) - ($signed((SW+2)'(corr)) <<< (DF - NF));
+  // (one subtractor: an iteration and a correction never come on the same clock)
+  wire signed [SW+1:0] rem_sub = iterate_o ? $signed({2'b0, d_dist}) : $signed((SW+2)'(corr)) <<< (DF - NF);
+  wire signed [SW+1:0] rem_c   = $signed({2'b0, rem_q}) - rem_sub;
 
   always @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -221,8 +232,7 @@ module dda_pace #(
         due_q   <= 1'b1;
       end
       pend_q <= iterate_o;
-      if (iterate_o) rem_q <= rem_q > d_dist ? rem_q - d_dist : '0;
-      else if (load) rem_q <= rem_c[SW+1] ? '0 : rem_c[SW-1:0];
+      if (iterate_o || load) rem_q <= rem_c[SW+1] ? '0 : rem_c[SW-1:0];
       if (!running_i) ph_q <= '0;
       else if (advance_i || load) ph_q <= ph_sat ? {1'b0, {PW{1'b1}}} : ph_next[PW:0];
       if (advance_i && running_i) begin
