@@ -42,18 +42,23 @@ inline constexpr int kPhaseWidth = kPhaseBits + 1;
 // The iterations the pacer paces with the run before's d, at most: the norm unit's
 // clocks after it has read its operands.
 inline constexpr int kProvisionalMax = kNormLatency - kNormOperandEdges + 1;
-inline constexpr int kProvisionalWidth = 6;
+// The bits of a count from 0 to n (the RTL's $clog2(n + 1)): the pacer's counters'
+// widths, derived from their ranges as rtl/dda_pace.v derives them.
+constexpr int count_bits(int n) {
+  int b = 0;
+  while ((1 << b) <= n) ++b;
+  return b;
+}
+inline constexpr int kProvisionalWidth = count_bits(kProvisionalMax);
 // The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
 inline constexpr int kAccelWidth = 32;
 // The widths of rtl/dda_pace.v's registers the block harnesses compare: s and the distance
 // to go (below 2^(kDistFrac + 25)), the norm unit's clock count (up to kNormLatency), the
 // product's clock count (up to kOverrideClocks).
 inline constexpr int kDistWidth = kDistFrac + 26;
-inline constexpr int kNormBusyWidth = 6;
+inline constexpr int kNormBusyWidth = count_bits(kNormLatency);
 inline constexpr int kOverrideCountWidth = 4;
-static_assert(kNormLatency < (1 << kNormBusyWidth) && kOverrideClocks < (1 << kOverrideCountWidth) &&
-                  kProvisionalMax < (1 << kProvisionalWidth),
-              "the pacer's counts fit their registers");
+static_assert(kOverrideClocks < (1 << kOverrideCountWidth), "the product's clock count fits its register");
 // A correction: at most kProvisionalMax times a d (below 2^(kNormFrac + 2)), at the
 // phase's scale, within the phase's range below 0.
 static_assert(std::int64_t(kProvisionalMax) << (kNormFrac + 2 + kRampFrac - kNormFrac) < std::int64_t(1) << kPhaseBits,
