@@ -100,21 +100,23 @@ module dda_pace #(
   wire start = take_i | (free & (seen | due_q));
   wire signed [NF+2:0]  delta = $signed({1'b0, d}) - $signed({1'b0, d_q});
   // corr = m_q x delta (x 2^-NF steps), by shift and add on the difference's magnitude.
-  wire          dneg = delta[NF+2];
-  wire [NF+2:0] dmag = dneg ? -delta : delta;
-  reg  [CW-1:0] cmag;
+  reg  signed [CW-1:0] corr;
   integer       ci;
   always @(*) begin
-    cmag = '0;
-    for (ci = 0; ci < MCW; ci = ci + 1) if (m_q[ci]) cmag = cmag + (CW'(dmag) << ci);
+    corr = '0;
+    for (ci = 0; ci < MCW; ci = ci + 1) if (m_q[ci]) corr = corr + ((CW)'(delta) <<< ci);
   end
-  wire signed [CW-1:0]  corr  = dneg ? -$signed(cmag) : $signed(cmag);
 
   dda_norm #(.AW(AW), .NF(NF)) u_norm (
     .clk_i(clk_i), .rst_ni(rst_ni), .start_i(start),
     .v_x_i(v_x_i), .v_y_i(v_y_i), .v_z_i(v_z_i), .cap_i(cap_i), .cap_z_i(cap_z_i),
     .busy_o(norm_busy), .d_o(d)
   );
+
+  // x > (y << (RF - SF)) for a speed x at RF fraction bits and an entry speed y at SF.
+  function automatic above(input [RF-1:0] x, input [31:0] y);
+    above = {x[RF-1:RF-SF], |x[RF-SF-1:0]} > {y, 1'b0};
+  endfunction
 
   // Distances at DF fraction bits.
   wire [PW-1:0] dd     = PW'(d_q) << (RF - NF);                     // D, at the phase's scale
@@ -142,35 +144,45 @@ module dda_pace #(
   wire [31:0]    mcruise = take_i ? cruise_i : cruise_q;
   wire [MW-1:0]  msum   = macc_q + (mplier_q[0] ? mcand_q : '0);
   wire [MW-1:0]  lim    = MW'(limit_q) << (RF - SF);
-  wire [MW-1:0]  eff_d  = msum < lim ? msum : lim;
+  wire [MW-1:0]  eff_d  = msum[MW-1:RF-SF] < (MW-RF+SF)'(limit_q) ? msum : lim;
   // A take clamps the product in force to the new entry's limit at once (the new
   // product is OW clocks away).
   wire [RF-1:0]  eff_m  = mcnt_q == 4'd1 ? eff_d[RF-1:0] : eff_q;
   wire [RF-1:0]  lim_in = RF'(limit_i) << (RF - SF);
-  wire [RF-1:0]  eff_n  = take_i && lim_in < eff_m ? lim_in : eff_m;
+  wire [RF-1:0]  eff_n  = take_i && above(eff_m, limit_i) ? lim_in : eff_m;
 
   // The target: the cruise speed; the exit speed on the way down; 0 on a hold.
   wire [RF-1:0] t_ex  = next_queued_i ? RF'(exit_q) << (RF - SF) : '0;
-  wire [RF-1:0] t_dn  = decel && accel_i != 32'd0 && t_ex < eff_q ? t_ex : eff_q;  // (no ramp: no slowing down)
+  wire [RF-1:0] t_dn  = decel && accel_i != 32'd0 && (!next_queued_i || above(eff_q, exit_q)) ? t_ex : eff_q;  // (no ramp: no slowing down)
   wire [RF-1:0] t_min = RF'(vmin_i) << (RF - SF);
-  wire [RF-1:0] target = hold_i ? '0 : t_dn > t_min ? t_dn : t_min;
+  wire [RF-1:0] target = hold_i ? '0 : above(t_dn, vmin_i) ? t_dn : t_min;
   wire unused_t = &{1'b0, eff_d[MW-1:RF], norm_busy};
 
   wire blocked = first_q | due_q | seen | load | (busy_q > BW'(Latency - OperandEdges + 1));
-  wire signed [PW+1:0] ph_sum = $signed({ph_q[PW], ph_q}) + $signed((PW+2)'(v_q));
-  assign iterate_o = advance_i & running_i & ~blocked & (ph_sum >= $signed((PW+2)'(dd)));
+  // The phase plus v while the core may go on; less D: the core iterates when that is not below 0.
+  wire signed [PW+1:0] ph_add  = $signed({ph_q[PW], ph_q}) + (advance_i ? $signed((PW+2)'(v_q)) : '0);
+  wire signed [PW+1:0] ph_left = ph_add - $signed((PW+2)'(dd));
+  assign iterate_o = advance_i & running_i & ~blocked & ~ph_left[PW+1];
   assign speed_o   = v_q;
 
   // The ramp.
   wire [RF-1:0] a     = RF'(accel_i);
-  wire [RF-1:0] vmin  = RF'(vmin_i) << (RF - SF);
-  wire [RF-1:0] v_up  = target - v_q > a ? v_q + a : target;
-  wire [RF-1:0] v_dn  = v_q - target > a ? v_q - a : target;
-  wire [SW-1:0] vdn_dist = SW'(v_dn[RF-1:RF-DF]);
+  // From the target less v (gap): up while it is above 0, down while below; a step of a
+  // (va) while the gap is wider than a, else the target.
+  wire signed [RF+1:0] gap  = $signed({2'b0, target}) - $signed({2'b0, v_q});
+  wire                 up   = ~gap[RF+1] & (gap != '0);
+  wire                 down = gap[RF+1];
+  wire signed [RF+1:0] gpa  = gap + $signed({2'b0, a});
+  wire                 far  = up ? gap > $signed({2'b0, a}) : gpa[RF+1];
+  wire [RF-1:0]        va   = up ? v_q + a : v_q - a;
+  wire [RF-1:0]        v_n  = far ? va : target;  // v after the edge, on a ramp step
+  wire [SW-1:0]        vn_dist = SW'(v_n[RF-1:RF-DF]);
+  // s plus v's distance on a step up, less the new v's on a step down (at least 0: below
+  // it the sum is negative)
+  wire signed [SW:0] s_sum = $signed({1'b0, s_q}) + (up ? $signed({1'b0, v_dist}) : -$signed({1'b0, vn_dist}));
   // The phase: v while the core may go on, less D on an iteration or the correction.
-  wire signed [PW+1:0] ph_add  = $signed({ph_q[PW], ph_q}) + (advance_i ? $signed((PW+2)'(v_q)) : '0);
-  wire signed [PW+1:0] ph_sub  = iterate_o ? $signed((PW+2)'(dd)) : $signed((PW+2)'(corr)) <<< (RF - NF);
-  wire signed [PW+1:0] ph_next = ph_add - ph_sub;
+  wire signed [PW+1:0] ph_corr = ph_add - ($signed((PW+2)'(corr)) <<< (RF - NF));
+  wire signed [PW+1:0] ph_next = iterate_o ? ph_left : ph_corr;
   wire                 ph_sat  = ~ph_next[PW+1] & ph_next[PW];  // 2^PW or above
   // The distance to go less d on an iteration, or the correction; at least 0.
   // (one subtractor: an iteration and a correction never come on the same clock)
@@ -239,13 +251,13 @@ module dda_pace #(
         if (accel_i == 32'd0) begin
           v_q <= target;
           s_q <= '0;
-        end else if (v_q < target) begin
-          v_q <= v_up;
-          if (v_q > vmin) s_q <= s_q + v_dist;
-        end else if (v_q > target) begin
-          v_q <= v_dn;
-          if (v_dn > vmin) s_q <= s_q > vdn_dist ? s_q - vdn_dist : '0;
-          if (v_dn == '0) s_q <= '0;
+        end else if (up) begin
+          v_q <= v_n;
+          if (above(v_q, vmin_i)) s_q <= s_sum[SW-1:0];
+        end else if (down) begin
+          v_q <= v_n;
+          if (above(v_n, vmin_i)) s_q <= s_sum[SW] ? '0 : s_sum[SW-1:0];
+          if (v_n == '0) s_q <= '0;
         end else if (v_q == '0) begin
           s_q <= '0;
         end
