@@ -71,7 +71,7 @@ module dda_pace #(
   localparam integer MCW = $clog2(Latency - OperandEdges + 2);  // m_q: up to Latency - OperandEdges + 1
   localparam integer CW = NF + MCW + 4;  // corr: m_q times a difference of two d's, signed
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
-  localparam integer MW = RF - OF + OW;  // the cruise speed times the override (below 2^MW)
+  localparam integer MW = 32 + OW;  // the cruise speed times the override (below 2^MW)
 
   reg  [RF-1:0] v_q      /* verilator public_flat_rd */;
   reg  [PW:0]   ph_q     /* verilator public_flat_rd */;  // signed: below 0 after a correction
@@ -99,7 +99,7 @@ module dda_pace #(
   wire load  = free & ~fresh_q;
   wire start = take_i | (free & (seen | due_q));
   wire signed [NF+2:0]  delta = $signed({1'b0, d}) - $signed({1'b0, d_q});
-  // corr = m_q x delta (x 2^-NF steps), by shift and add on the difference's magnitude.
+  // corr = m_q x delta (x 2^-NF steps), by shift and add of the signed difference.
   reg  signed [CW-1:0] corr;
   integer       ci;
   always @(*) begin
@@ -124,30 +124,33 @@ module dda_pace #(
   wire [SW-1:0] v_dist = SW'(v_q[RF-1:RF-DF]);
   wire [SW-1:0] margin = SW'(1) << (DF - MarginShift);
   wire [SW-1:0] eb     = next_queued_i ? SW'(brake_q) << (DF - LF) : '0;
-  // The phase as a distance (floor, also below 0) against the distance to go.
+  // The phase as a distance (floor, also below 0) against the distance to go: slow down
+  // once s + the phase + the margin is not below the distance to go + the exit's braking
+  // (one sum: not below 0).
   wire signed [SW+1:0] ph_dist = (SW+2)'($signed(ph_q[PW:RF-DF]));
-  wire signed [SW+1:0] decel_l = $signed({2'b0, s_q}) + ph_dist + $signed({2'b0, margin});
-  wire signed [SW+1:0] decel_r = $signed({2'b0, rem_q}) + $signed({2'b0, eb});
-  wire          decel  = decel_l >= decel_r;
+  wire signed [SW+2:0] decel_x = $signed({3'b0, s_q}) + ph_dist + $signed({3'b0, margin})
+                                 - $signed({3'b0, rem_q}) - $signed({3'b0, eb});
+  wire                 decel   = ~decel_x[SW+2];
 
-  // The cruise speed times the override, clamped to the limit (eff_q), by shift and add:
-  // a bit of the override per clock (mplier_q, shifting down) adds the cruise speed
-  // (mcand_q, shifting up) for OW clocks after a take or an override change (ovr_q: the
-  // override of the product), which start it again.
+  // The cruise speed times the override, clamped to the limit (eff_q), by shift and add,
+  // the override's top bit first: each clock doubles the product so far (macc_q, the
+  // entry's cruise speed times the override's bits so far) and adds the cruise speed for
+  // the next bit (mplier_q, shifting up), for OW clocks after a take or an override
+  // change (ovr_q: the override of the product), which start it again. At the ramp's
+  // scale the product is macc_q << (RF - SF - OF); it is below the limit's
+  // (limit << (RF - SF)) when macc_q is below limit << OF.
   reg  [OW-1:0]  ovr_q    /* verilator public_flat_rd */;
   reg  [OW-1:0]  mplier_q /* verilator public_flat_rd */;
-  reg  [MW-1:0]  mcand_q  /* verilator public_flat_rd */;
   reg  [MW-1:0]  macc_q   /* verilator public_flat_rd */;
   reg  [3:0]     mcnt_q   /* verilator public_flat_rd */;  // clocks until the product is ready
   reg  [RF-1:0]  eff_q    /* verilator public_flat_rd */;
   wire           mstart = take_i | (override_i != ovr_q);
-  wire [31:0]    mcruise = take_i ? cruise_i : cruise_q;
-  wire [MW-1:0]  msum   = macc_q + (mplier_q[0] ? mcand_q : '0);
-  wire [MW-1:0]  lim    = MW'(limit_q) << (RF - SF);
-  wire [MW-1:0]  eff_d  = msum[MW-1:RF-SF] < (MW-RF+SF)'(limit_q) ? msum : lim;
+  wire [MW-1:0]  msum   = {macc_q[MW-2:0], 1'b0} + (mplier_q[OW-1] ? MW'(cruise_q) : '0);
+  wire [RF-1:0]  lim    = RF'(limit_q) << (RF - SF);
+  wire [RF-1:0]  eff_d  = msum[MW-1:OF] < (MW-OF)'(limit_q) ? RF'(msum) << (RF - SF - OF) : lim;
   // A take clamps the product in force to the new entry's limit at once (the new
   // product is OW clocks away).
-  wire [RF-1:0]  eff_m  = mcnt_q == 4'd1 ? eff_d[RF-1:0] : eff_q;
+  wire [RF-1:0]  eff_m  = mcnt_q == 4'd1 ? eff_d : eff_q;
   wire [RF-1:0]  lim_in = RF'(limit_i) << (RF - SF);
   wire [RF-1:0]  eff_n  = take_i && above(eff_m, limit_i) ? lim_in : eff_m;
 
@@ -156,7 +159,7 @@ module dda_pace #(
   wire [RF-1:0] t_dn  = decel && accel_i != 32'd0 && (!next_queued_i || above(eff_q, exit_q)) ? t_ex : eff_q;  // (no ramp: no slowing down)
   wire [RF-1:0] t_min = RF'(vmin_i) << (RF - SF);
   wire [RF-1:0] target = hold_i ? '0 : above(t_dn, vmin_i) ? t_dn : t_min;
-  wire unused_t = &{1'b0, eff_d[MW-1:RF], norm_busy};
+  wire unused_t = &{1'b0, macc_q[MW-1], norm_busy};
 
   wire blocked = first_q | due_q | seen | load | (busy_q > BW'(Latency - OperandEdges + 1));
   // The phase plus v while the core may go on; less D: the core iterates when that is not below 0.
@@ -208,22 +211,19 @@ module dda_pace #(
       d_q      <= '0;
       ovr_q    <= '0;
       mplier_q <= '0;
-      mcand_q  <= '0;
       macc_q   <= '0;
       mcnt_q   <= 4'd0;
       eff_q    <= '0;
     end else begin
       if (mcnt_q != 4'd0) begin
         macc_q   <= msum;
-        mcand_q  <= mcand_q << 1;
-        mplier_q <= mplier_q >> 1;
+        mplier_q <= mplier_q << 1;
         mcnt_q   <= mcnt_q - 4'd1;
       end
       eff_q <= eff_n;
       if (mstart) begin
         ovr_q    <= override_i;
         mplier_q <= override_i;
-        mcand_q  <= MW'(mcruise) << (RF - SF - OF);
         macc_q   <= '0;
         mcnt_q   <= 4'(OW);
       end

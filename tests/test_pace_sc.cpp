@@ -132,7 +132,6 @@ struct Bench {
         {"d_q", r.dda_pace__DOT__d_q, m.d_q.read()},
         {"ovr_q", r.dda_pace__DOT__ovr_q, m.ovr_q.read()},
         {"mplier_q", r.dda_pace__DOT__mplier_q, m.mplier_q.read()},
-        {"mcand_q", r.dda_pace__DOT__mcand_q, m.mcand_q.read()},
         {"macc_q", r.dda_pace__DOT__macc_q, m.macc_q.read()},
         {"mcnt_q", r.dda_pace__DOT__mcnt_q, m.mcnt_q.read()},
         {"eff_q", r.dda_pace__DOT__eff_q, m.eff_q.read()},

@@ -64,34 +64,32 @@ void dda_pace::comb() {
   speed_o.write(v_q.read());
 }
 
-// A bit of the override per clock adds the cruise speed, shifting up; a take or an
-// override change starts it again (the RTL's mcand_q: cruise << (kRampFrac - kSpeedFrac
-// - 8), 8 = log2 kOverrideOne).
+// The override's top bit first: each clock doubles the product so far and adds the
+// cruise speed for the next bit; a take or an override change starts it again. The
+// product at the ramp's scale: macc_q times kRampFrac - kSpeedFrac - log2 kOverrideOne.
 void dda_pace::multiply() {
-  const std::uint64_t msum = macc_q.read() + ((mplier_q.read() & 1u) ? mcand_q.read() : 0);
+  const std::uint32_t top = 1u << (kOverrideBits - 1);
+  const std::uint64_t msum = 2 * macc_q.read() + ((mplier_q.read() & top) != 0 ? cruise_q.read() : 0);
   std::uint64_t eff = eff_q.read();
   if (mcnt_q.read() != 0) {
     macc_q.write(msum);
-    mcand_q.write(mcand_q.read() << 1);
-    mplier_q.write(mplier_q.read() >> 1);
+    mplier_q.write((mplier_q.read() << 1) & ((1u << kOverrideBits) - 1));
     mcnt_q.write(mcnt_q.read() - 1);
-    if (mcnt_q.read() == 1) eff = std::min(msum, ramp(limit_q.read()));
+    if (mcnt_q.read() == 1) eff = std::min((msum << (kRampFrac - kSpeedFrac)) / kOverrideOne, ramp(limit_q.read()));
   }
   // A take clamps the product in force to the new limit at once.
   if (take_i.read()) eff = std::min(eff, ramp(limit_i.read()));
   eff_q.write(eff);
   if (take_i.read() || override_i.read() != ovr_q.read()) {
-    const std::uint64_t cruise = take_i.read() ? cruise_i.read() : cruise_q.read();
     ovr_q.write(override_i.read());
     mplier_q.write(override_i.read());
-    mcand_q.write(ramp(cruise) / kOverrideOne);
     macc_q.write(0);
     mcnt_q.write(std::uint32_t(kOverrideClocks));
   }
 }
 
 void dda_pace::reset() {
-  for (auto* r : {&v_q, &ph_q, &s_q, &rem_q, &d_q, &mcand_q, &macc_q, &eff_q}) r->write(0);
+  for (auto* r : {&v_q, &ph_q, &s_q, &rem_q, &d_q, &macc_q, &eff_q}) r->write(0);
   for (auto* r : {&cruise_q, &limit_q, &exit_q, &brake_q, &busy_q, &m_q, &ovr_q, &mplier_q, &mcnt_q}) r->write(0);
   for (auto* r : {&pend_q, &first_q, &due_q, &fresh_q}) r->write(false);
 }

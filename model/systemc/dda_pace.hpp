@@ -30,9 +30,9 @@ SC_MODULE(dda_pace) {
   sc_core::sc_signal<std::uint32_t> m_q{"m_q"};  // the run's provisional iterations
   sc_core::sc_signal<std::uint64_t> d_q{"d_q"};  // the d the pacer paces with
   // (ph_q holds the signed phase in kPhaseWidth bits, two's complement, as the RTL.)
-  // The cruise speed times the override, by shift and add.
+  // The cruise speed times the override, by shift and add (the override's top bit first).
   sc_core::sc_signal<std::uint32_t> ovr_q{"ovr_q"}, mplier_q{"mplier_q"}, mcnt_q{"mcnt_q"};
-  sc_core::sc_signal<std::uint64_t> mcand_q{"mcand_q"}, macc_q{"macc_q"}, eff_q{"eff_q"};
+  sc_core::sc_signal<std::uint64_t> macc_q{"macc_q"}, eff_q{"eff_q"};
   dda_norm u_norm;
 
  private:
