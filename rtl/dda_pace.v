@@ -12,12 +12,14 @@
 // comes in on the edge after its iteration (stepped_i with pend_q): the norm unit starts
 // on the new run's registers, and the pacer goes on with the d it has, provisionally,
 // counting those iterations (m_q, fresh_q low). When the unit has the run's own d, the
-// pacer takes it and corrects the phase and the distance to go by m_q times the
-// difference (corr), as if the run had been paced with it from the start. A step that
-// comes while the unit is at work is due (due_q): its start waits for the unit. The core
-// waits on the clock a step comes in, while the unit reads its operands (OperandEdges
-// edges after its start), on a correction's clock, while a step is due, and after a take
-// until the first run's d is in (first_q). v ramps by at most a per clock towards its
+// pacer takes it (load) and corrects the phase and the distance to go by m_q times the
+// difference, as if the run had been paced with it from the start: a bit of m_q per
+// clock after the load (cm_q, cd_q), each clock taking its part (corr) off beside the D
+// of an iteration on it, up to MCW clocks. A step that comes while the unit is at work
+// is due (due_q): its start waits for the unit. The core waits on the clock a step
+// comes in, while the unit reads its operands (OperandEdges edges after its start), on
+// the load's clock, while a step is due, and after a take until the first run's d is in
+// (first_q). v ramps by at most a per clock towards its
 // target: the entry's cruise speed times the override, clamped to its limit; the exit
 // speed (0 with no next piece) once the braking distance s, less the exit speed's,
 // reaches the distance still
@@ -69,7 +71,7 @@ module dda_pace #(
   localparam integer OperandEdges = 2 * ((NF + 2) / 2) + 1;  // kNormOperandEdges: it reads z's then
   localparam integer BW = $clog2(Latency + 1);  // busy_q counts Latency .. 0
   localparam integer MCW = $clog2(Latency - OperandEdges + 2);  // m_q: up to Latency - OperandEdges + 1
-  localparam integer CW = NF + MCW + 4;  // corr: m_q times a difference of two d's, signed
+  localparam integer CW = NF + MCW + 2;  // cd_q: a difference of two d's times up to 2^(MCW-1), signed
   localparam integer SW = DF + 26;  // s, the distance to go and their sums (below 2^(DF + 25))
   localparam integer MW = 32 + OW;  // the cruise speed times the override (below 2^MW)
 
@@ -88,6 +90,8 @@ module dda_pace #(
   reg           fresh_q  /* verilator public_flat_rd */;  // d_q is the run's own
   reg  [MCW-1:0] m_q     /* verilator public_flat_rd */;  // the run's provisional iterations
   reg  [NF+1:0] d_q      /* verilator public_flat_rd */;  // the d the pacer paces with
+  reg  [MCW-1:0] cm_q    /* verilator public_flat_rd */;  // the correction's multiplier bits still to apply
+  reg  [CW-1:0] cd_q     /* verilator public_flat_rd */;  // the difference of the d's times 2^(bits applied), signed
   wire [NF+1:0] d;          // the norm unit's last
   wire          norm_busy;  // (the pacer counts the norm unit's clocks itself: busy_q)
 
@@ -99,13 +103,10 @@ module dda_pace #(
   wire load  = free & ~fresh_q;
   wire start = take_i | (free & (seen | due_q));
   wire signed [NF+2:0]  delta = $signed({1'b0, d}) - $signed({1'b0, d_q});
-  // corr = m_q x delta (x 2^-NF steps), by shift and add of the signed difference.
-  reg  signed [CW-1:0] corr;
-  integer       ci;
-  always @(*) begin
-    corr = '0;
-    for (ci = 0; ci < MCW; ci = ci + 1) if (m_q[ci]) corr = corr + ((CW)'(delta) <<< ci);
-  end
+  // The correction, m_q x delta (x 2^-NF steps), a bit of m_q per clock after the load
+  // (cm_q, shifting down; cd_q the difference, shifting up): corr is this clock's part.
+  wire          correcting = cm_q != '0;
+  wire signed [CW-1:0] corr = cm_q[0] ? $signed(cd_q) : '0;
 
   dda_norm #(.AW(AW), .NF(NF)) u_norm (
     .clk_i(clk_i), .rst_ni(rst_ni), .start_i(start),
@@ -120,7 +121,6 @@ module dda_pace #(
 
   // Distances at DF fraction bits.
   wire [PW-1:0] dd     = PW'(d_q) << (RF - NF);                     // D, at the phase's scale
-  wire [SW-1:0] d_dist = SW'(d_q) << (DF - NF);
   wire [SW-1:0] v_dist = SW'(v_q[RF-1:RF-DF]);
   wire [SW-1:0] margin = SW'(1) << (DF - MarginShift);
   wire [SW-1:0] eb     = next_queued_i ? SW'(brake_q) << (DF - LF) : '0;
@@ -183,13 +183,14 @@ module dda_pace #(
   // s plus v's distance on a step up, less the new v's on a step down (at least 0: below
   // it the sum is negative)
   wire signed [SW:0] s_sum = $signed({1'b0, s_q}) + (up ? $signed({1'b0, v_dist}) : -$signed({1'b0, vn_dist}));
-  // The phase: v while the core may go on, less D on an iteration or the correction.
-  wire signed [PW+1:0] ph_corr = ph_add - ($signed((PW+2)'(corr)) <<< (RF - NF));
-  wire signed [PW+1:0] ph_next = iterate_o ? ph_left : ph_corr;
+  // What the edge takes off the phase and the distance to go (x 2^-NF steps): d on an
+  // iteration, and the correction's part.
+  wire signed [CW:0]   amt     = $signed({1'b0, iterate_o ? CW'(d_q) : '0}) + corr;
+  // The phase: v while the core may go on, less that.
+  wire signed [PW+1:0] ph_next = ph_add - ($signed((PW+2)'(amt)) <<< (RF - NF));
   wire                 ph_sat  = ~ph_next[PW+1] & ph_next[PW];  // 2^PW or above
-  // The distance to go less d on an iteration, or the correction; at least 0.
-  // (one subtractor: an iteration and a correction never come on the same clock)
-  wire signed [SW+1:0] rem_sub = iterate_o ? $signed({2'b0, d_dist}) : $signed((SW+2)'(corr)) <<< (DF - NF);
+  // The distance to go less that; at least 0.
+  wire signed [SW+1:0] rem_sub = $signed((SW+2)'(amt)) <<< (DF - NF);
   wire signed [SW+1:0] rem_c   = $signed({2'b0, rem_q}) - rem_sub;
 
   always @(posedge clk_i) begin
@@ -209,6 +210,8 @@ module dda_pace #(
       fresh_q  <= 1'b0;
       m_q      <= '0;
       d_q      <= '0;
+      cm_q     <= '0;
+      cd_q     <= '0;
       ovr_q    <= '0;
       mplier_q <= '0;
       macc_q   <= '0;
@@ -231,7 +234,13 @@ module dda_pace #(
       if (start) busy_q <= BW'(Latency);
       else if (!free) busy_q <= busy_q - 1'b1;
       if (iterate_o && !fresh_q) m_q <= m_q + 1'b1;
+      if (correcting) begin
+        cm_q <= cm_q >> 1;
+        cd_q <= cd_q << 1;
+      end
       if (load) begin
+        cm_q    <= m_q;
+        cd_q    <= CW'(delta);
         d_q     <= d;
         fresh_q <= 1'b1;
         first_q <= 1'b0;
@@ -244,9 +253,9 @@ module dda_pace #(
         due_q   <= 1'b1;
       end
       pend_q <= iterate_o;
-      if (iterate_o || load) rem_q <= rem_c[SW+1] ? '0 : rem_c[SW-1:0];
+      if (iterate_o || correcting) rem_q <= rem_c[SW+1] ? '0 : rem_c[SW-1:0];
       if (!running_i) ph_q <= '0;
-      else if (advance_i || load) ph_q <= ph_sat ? {1'b0, {PW{1'b1}}} : ph_next[PW:0];
+      else if (advance_i || correcting) ph_q <= ph_sat ? {1'b0, {PW{1'b1}}} : ph_next[PW:0];
       if (advance_i && running_i) begin
         if (accel_i == 32'd0) begin
           v_q <= target;
@@ -277,6 +286,7 @@ module dda_pace #(
         due_q    <= 1'b0;
         fresh_q  <= 1'b0;
         m_q      <= '0;
+        cm_q     <= '0;  // (a correction left of the piece before is dropped with it)
       end
     end
   end

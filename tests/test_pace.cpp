@@ -98,6 +98,8 @@ class Lockstep {
     one("due_q", r.dda_pace__DOT__due_q, p.due());
     one("fresh_q", r.dda_pace__DOT__fresh_q, p.fresh());
     one("m_q", r.dda_pace__DOT__m_q, std::uint64_t(p.provisional()));
+    one("cm_q", r.dda_pace__DOT__cm_q, std::uint64_t(p.correction_bits()));
+    one("cd_q", r.dda_pace__DOT__cd_q, p.correction_step());
     one("d_q", r.dda_pace__DOT__d_q, p.distance());
     one("u_norm.d_q", r.dda_pace__DOT__u_norm__DOT__d_q, p.norm_distance());
     one("eff_q", r.dda_pace__DOT__eff_q, p.cruise_speed());

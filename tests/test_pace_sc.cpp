@@ -129,6 +129,8 @@ struct Bench {
         {"due_q", r.dda_pace__DOT__due_q, m.due_q.read()},
         {"fresh_q", r.dda_pace__DOT__fresh_q, m.fresh_q.read()},
         {"m_q", r.dda_pace__DOT__m_q, m.m_q.read()},
+        {"cm_q", r.dda_pace__DOT__cm_q, m.cm_q.read()},
+        {"cd_q", r.dda_pace__DOT__cd_q, m.cd_q.read()},
         {"d_q", r.dda_pace__DOT__d_q, m.d_q.read()},
         {"ovr_q", r.dda_pace__DOT__ovr_q, m.ovr_q.read()},
         {"mplier_q", r.dda_pace__DOT__mplier_q, m.mplier_q.read()},

@@ -66,8 +66,9 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
 namespace {
 // The core's pace (docs/design.md, "Pacer"), at most: an iteration takes a clock; one
 // that steps also the clocks on which the core then waits (the step's edge into the
-// pacer, the norm unit reading its operands, the run's correction); and from one step to
-// the next the norm unit makes the run's d, kNormLatency clocks, and hands it over.
+// pacer, the norm unit reading its operands, the hand-over of the run's d); and from one
+// step to the next the norm unit makes the run's d, kNormLatency clocks, and hands it
+// over. (The correction's clocks after the hand-over do not hold the core.)
 constexpr int kIterationClocks = 1;
 constexpr int kStepClocks = motion::kNormOperandEdges + 2;
 constexpr int kRunClocks = motion::kNormLatency + 1;

@@ -25,6 +25,8 @@ hw::WaveGroup pace_group(const Reg& reg) {
            reg("u_pace.pend_q"),
            reg("u_pace.fresh_q"),
            reg("u_pace.m_q"),
+           reg("u_pace.cm_q"),
+           reg("u_pace.cd_q"),
            {"pace_iterate", 1}}};
 }
 }  // namespace

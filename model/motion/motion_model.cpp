@@ -78,6 +78,8 @@ int width_bits(Width w, int depth_log2) {
       return kNormFrac + 2;
     case Width::Provisional:
       return kProvisionalWidth;
+    case Width::Correction:
+      return kCorrectionWidth;
     case Width::OverrideCount:
       return kOverrideCountWidth;
     case Width::Five:

@@ -94,6 +94,7 @@ enum class Width {
   NormBusy,
   NormD,        // kNormFrac + 2: a d of the norm unit
   Provisional,  // kProvisionalWidth
+  Correction,   // kCorrectionWidth
   OverrideCount,
   Five,
   Inputs,        // a bit per machine input (kNumInputs)
@@ -110,7 +111,7 @@ struct BlockReg {
 // rtl/dda_stepdir.v; u_pace: the pacer, rtl/dda_pace.v, the registers its reference
 // model motion::Pacer holds; u_io: the machine's inputs, rtl/dda_motion_io.v, and below
 // it each input's synchronizer and filter, rtl/dda_input.v).
-inline constexpr std::array<BlockReg, 155> kBlockRegs{{
+inline constexpr std::array<BlockReg, 157> kBlockRegs{{
     {"ack_q", Width::One},
     {"dat_q", Width::Word},
     {"head_q", Width::Index},
@@ -190,6 +191,8 @@ inline constexpr std::array<BlockReg, 155> kBlockRegs{{
     {"u_pace.due_q", Width::One},
     {"u_pace.fresh_q", Width::One},
     {"u_pace.m_q", Width::Provisional},
+    {"u_pace.cm_q", Width::Provisional},
+    {"u_pace.cd_q", Width::Correction},
     {"u_pace.d_q", Width::NormD},
     {"u_pace.ovr_q", Width::Override},
     {"u_pace.mcnt_q", Width::OverrideCount},

@@ -83,6 +83,8 @@ void MotionModel::load_pace(const Wires& w) {
   reg("u_pace.due_q") = pacer_.due();
   reg("u_pace.fresh_q") = pacer_.fresh();
   reg("u_pace.m_q") = std::uint64_t(pacer_.provisional());
+  reg("u_pace.cm_q") = std::uint64_t(pacer_.correction_bits());
+  reg("u_pace.cd_q") = pacer_.correction_step();
   reg("u_pace.d_q") = pacer_.distance();
   reg("u_pace.ovr_q") = pacer_.override_of();
   reg("u_pace.mcnt_q") = std::uint64_t(pacer_.override_busy());

@@ -50,6 +50,10 @@ constexpr int count_bits(int n) {
   return b;
 }
 inline constexpr int kProvisionalWidth = count_bits(kProvisionalMax);
+// The correction is applied a bit of the provisional count per clock after the pacer
+// takes the run's d: the difference of two d's (below 2^(kNormFrac + 2) either way)
+// shifted up by up to kProvisionalWidth - 1 bits, signed.
+inline constexpr int kCorrectionWidth = kNormFrac + 2 + kProvisionalWidth;
 // The widths of the block's pacing registers: ACCEL (x 2^kRampFrac), VMIN (x 2^kSpeedFrac).
 inline constexpr int kAccelWidth = 32;
 // The widths of rtl/dda_pace.v's registers the block harnesses compare: s and the distance

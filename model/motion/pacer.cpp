@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "model/datapath/hw_params.hpp"
 
@@ -26,9 +25,8 @@ std::uint64_t isqrt(u128 n) {
 // A ramp speed of an entry speed.
 std::uint64_t ramp(std::uint32_t v) { return std::uint64_t(v) << (kRampFrac - kSpeedFrac); }
 
-// Distances inside: the speed per clock (kRampFrac) and d (kNormFrac) at kDistFrac bits.
+// Distances inside: the speed per clock (kRampFrac) and an entry's length at kDistFrac bits.
 std::uint64_t dist_of_speed(std::uint64_t v) { return v >> (kRampFrac - kDistFrac); }
-std::uint64_t dist_of_norm(std::uint64_t d) { return d << (kDistFrac - kNormFrac); }
 std::uint64_t dist_of_len(std::uint32_t l) { return std::uint64_t(l) << (kDistFrac - kLenFrac); }
 
 }  // namespace
@@ -197,8 +195,8 @@ bool Pacer::iterate(const In& in) const {
 }
 
 std::uint64_t Pacer::idle_clocks(const In& in) const {
-  if (!in.advance || !in.running || in.take || busy_ != 0 || pending_ || first_ || due_ || !fresh_ || v_ == 0 ||
-      v_ != target(in) || mul_ != 0 || in.set.override_ != ovr_)
+  if (!in.advance || !in.running || in.take || busy_ != 0 || pending_ || first_ || due_ || !fresh_ || cm_ != 0 ||
+      v_ == 0 || v_ != target(in) || mul_ != 0 || in.set.override_ != ovr_)
     return 0;
   // Clock j (from 0) adds v to ph + j v: no iteration while ph + (j + 1) v < D.
   const std::int64_t D = std::int64_t(d_ << (kRampFrac - kNormFrac)), v = std::int64_t(v_);
@@ -222,16 +220,26 @@ void Pacer::skip(const In& in, std::uint64_t clocks) {
   down_ = decelerate(in);
 }
 
-std::optional<std::int64_t> Pacer::norm_edge(const In& in, bool it) {
+std::int64_t Pacer::correction_part() const {
+  if ((cm_ & 1) == 0) return 0;
+  const std::uint64_t sign = std::uint64_t{1} << (kCorrectionWidth - 1);
+  return std::int64_t(cd_ ^ sign) - std::int64_t(sign);
+}
+
+void Pacer::norm_edge(const In& in, bool it) {
   // A step on the last edge (or one due) starts the norm unit on the new run, whose
   // iterations the pacer paces with the d it has (provisionally, counted in m) until the
-  // unit has the run's own: then it takes it, with the correction, m times the
-  // difference. A take starts it on the new piece's first run, whose d the pacer waits
-  // for.
+  // unit has the run's own: then it takes it and corrects by m times the difference, a
+  // bit of m per clock (cm_, cd_). A take starts it on the new piece's first run, whose
+  // d the pacer waits for.
   const bool seen = pending_ && in.stepped, free = busy_ == 0;
   const bool load = free && !fresh_;
   const bool start = in.take || (free && (seen || due_));
-  const std::int64_t corr = std::int64_t(m_) * (std::int64_t(nd_) - std::int64_t(d_));
+  const std::uint64_t cmask = (std::uint64_t{1} << kCorrectionWidth) - 1;
+  if (cm_ != 0) {
+    cm_ >>= 1;
+    cd_ = (cd_ << 1) & cmask;
+  }
   // The unit reads each axis' operands on the first edge of its division (x's on the
   // edge after the start); a start on its last edge starts it again.
   if (busy_ == kNormLatency) qx_ = unit_quotient(in.norm.v_x, in.norm.cap);
@@ -240,6 +248,8 @@ std::optional<std::int64_t> Pacer::norm_edge(const In& in, bool it) {
   if (busy_ > 0 && --busy_ == 0 && !start) nd_ = unit_d();
   if (it && !fresh_) ++m_;
   if (load) {
+    cm_ = m_;
+    cd_ = std::uint64_t(std::int64_t(nd_) - std::int64_t(d_)) & cmask;
     d_ = nd_;
     fresh_ = true;
     first_ = false;
@@ -252,7 +262,6 @@ std::optional<std::int64_t> Pacer::norm_edge(const In& in, bool it) {
     due_ = true;
   }
   pending_ = it;
-  return load ? std::optional<std::int64_t>(corr) : std::nullopt;
 }
 
 void Pacer::ramp_edge(const In& in, std::uint64_t t) {
@@ -277,20 +286,21 @@ void Pacer::edge(const In& in) {
   const bool it = iterate(in);
   const std::uint64_t t = target(in);
   const std::uint64_t d_it = d_;
-  const std::optional<std::int64_t> corr = norm_edge(in, it);  // (a value: the pacer takes the run's d)
-  // The distance to go and the phase: d off on an iteration, the correction when the
-  // pacer takes the run's own d; v per clock while a piece runs.
-  if (it) {
-    rem_ -= std::min(rem_, dist_of_norm(d_it));
-  } else if (corr) {
-    const std::int64_t r = std::int64_t(rem_) - *corr * (std::int64_t{1} << (kDistFrac - kNormFrac));
+  const bool correcting = cm_ != 0;
+  const std::int64_t corr = correction_part();
+  norm_edge(in, it);
+  // The distance to go and the phase: d off on an iteration and a part of the
+  // correction on each of its clocks (x 2^-kNormFrac steps); v per clock while a piece
+  // runs.
+  const std::int64_t amt = (it ? std::int64_t(d_it) : 0) + corr;
+  if (it || correcting) {
+    const std::int64_t r = std::int64_t(rem_) - amt * (std::int64_t{1} << (kDistFrac - kNormFrac));
     rem_ = r > 0 ? std::uint64_t(r) : 0;
   }
   if (!in.running) {
     ph_ = 0;
-  } else if (in.advance || corr) {
-    const std::int64_t sub = it ? std::int64_t(d_it << (kRampFrac - kNormFrac))
-                                : corr.value_or(0) * (std::int64_t{1} << (kRampFrac - kNormFrac));
+  } else if (in.advance || correcting) {
+    const std::int64_t sub = amt * (std::int64_t{1} << (kRampFrac - kNormFrac));
     ph_ = std::min(ph_ + (in.advance ? std::int64_t(v_) : 0) - sub, (std::int64_t{1} << kPhaseBits) - 1);
   }
   if (in.advance && in.running) ramp_edge(in, t);
@@ -310,7 +320,7 @@ void Pacer::edge(const In& in) {
     rem_ = dist_of_len(e_.length);
     pending_ = due_ = fresh_ = false;
     first_ = true;
-    m_ = 0;
+    m_ = cm_ = 0;  // (a correction left of the piece before is dropped with it)
   }
   down_ = decelerate(in);
 }

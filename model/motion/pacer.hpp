@@ -45,7 +45,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "model/datapath/datapath.hpp"
@@ -145,6 +144,11 @@ class Pacer {
   bool due() const { return due_; }       // a step's norm waits for the unit
   bool fresh() const { return fresh_; }   // d is the run's own (no correction waits)
   int provisional() const { return m_; }  // the run's iterations paced with the d before
+  // The correction of a run's provisional iterations, a bit of their count per clock:
+  // the bits still to apply, and the difference of the d's times 2^(bits applied)
+  // (the register: kCorrectionWidth bits, two's complement).
+  int correction_bits() const { return cm_; }
+  std::uint64_t correction_step() const { return cd_; }
   const PaceEntry& entry() const { return e_; }
   // The cruise speed times the override, clamped to the limit (x 2^kRampFrac), the
   // override it is of, and the clocks until a new one is ready (0: ready).
@@ -161,9 +165,10 @@ class Pacer {
  private:
   bool decelerate(const In& in) const;
   bool blocked(const In& in) const;  // the core waits for d or for the norm unit
-  // The norm unit's and the hand-over's part of the edge: the correction when the pacer
-  // takes the run's own d (x 2^-kNormFrac steps), else nothing.
-  std::optional<std::int64_t> norm_edge(const In& in, bool it);
+  // The norm unit's and the hand-over's part of the edge: the pacer takes the run's own
+  // d and starts its correction.
+  void norm_edge(const In& in, bool it);
+  std::int64_t correction_part() const;                // this clock's part of the correction, x 2^-kNormFrac steps
   void ramp_edge(const In& in, std::uint64_t target);  // v toward the target, with s
 
   std::uint64_t v_ = 0, d_ = 0, nd_ = 0, s_ = 0, rem_ = 0, eff_ = 0;
@@ -177,6 +182,8 @@ class Pacer {
   bool due_ = false;      // a step came while the norm unit was at work
   bool fresh_ = false;    // d_ is the run's own
   int m_ = 0;             // the run's iterations paced with the d before (fresh_ false)
+  int cm_ = 0;            // the correction's bits of m still to apply, shifting down
+  std::uint64_t cd_ = 0;  // the difference of the d's, shifting up (kCorrectionWidth bits)
   bool down_ = false;
   // The norm unit's quotients, each from the operands on the edge it reads them (x's
   // on the edge after its start, y's and z's kNormClocks and 2 kNormClocks later), and

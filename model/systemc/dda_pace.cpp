@@ -26,7 +26,7 @@ dda_pace::dda_pace(sc_core::sc_module_name name, int aw) : sc_core::sc_module(na
   u_norm.d_o(d_);
   SC_METHOD(comb);
   sensitive << advance_i << running_i << take_i << stepped_i << v_q << ph_q << busy_q << pend_q << first_q << due_q
-            << fresh_q << d_q;
+            << fresh_q << d_q << cm_q;
   SC_METHOD(seq);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -89,8 +89,9 @@ void dda_pace::multiply() {
 }
 
 void dda_pace::reset() {
-  for (auto* r : {&v_q, &ph_q, &s_q, &rem_q, &d_q, &macc_q, &eff_q}) r->write(0);
-  for (auto* r : {&cruise_q, &limit_q, &exit_q, &brake_q, &busy_q, &m_q, &ovr_q, &mplier_q, &mcnt_q}) r->write(0);
+  for (auto* r : {&v_q, &ph_q, &s_q, &rem_q, &d_q, &macc_q, &eff_q, &cd_q}) r->write(0);
+  for (auto* r : {&cruise_q, &limit_q, &exit_q, &brake_q, &busy_q, &m_q, &cm_q, &ovr_q, &mplier_q, &mcnt_q})
+    r->write(0);
   for (auto* r : {&pend_q, &first_q, &due_q, &fresh_q}) r->write(false);
 }
 
@@ -102,7 +103,14 @@ void dda_pace::norm_seq(bool it) {
   else if (busy_q.read() != 0)
     busy_q.write(busy_q.read() - 1);
   if (it && !fresh_q.read()) m_q.write(m_q.read() + 1);
+  const std::uint64_t cmask = (std::uint64_t{1} << kCorrectionWidth) - 1;
+  if (cm_q.read() != 0) {
+    cm_q.write(cm_q.read() >> 1);
+    cd_q.write((cd_q.read() << 1) & cmask);
+  }
   if (load()) {
+    cm_q.write(m_q.read());
+    cd_q.write(std::uint64_t(std::int64_t(d_.read()) - std::int64_t(d_q.read())) & cmask);
     d_q.write(d_.read());
     fresh_q.write(true);
     first_q.write(false);
@@ -145,21 +153,20 @@ void dda_pace::seq() {
   }
   multiply();
   const bool it = iterate_o.read();
-  const std::uint64_t d_dist = d_q.read() << (kDistFrac - kNormFrac);
-  // The correction of the run's provisional iterations, x 2^-kNormFrac steps.
-  const std::int64_t corr = std::int64_t(m_q.read()) * (std::int64_t(d_.read()) - std::int64_t(d_q.read()));
+  // What the edge takes off the distance to go and the phase, x 2^-kNormFrac steps: d on
+  // an iteration and this clock's part of the correction of the run's provisional
+  // iterations.
+  const bool correcting = cm_q.read() != 0;
+  const std::int64_t amt = (it ? std::int64_t(d_q.read()) : 0) + correction_part();
   norm_seq(it);
-  if (it) {
-    rem_q.write(rem_q.read() > d_dist ? rem_q.read() - d_dist : 0);
-  } else if (load()) {
-    const std::int64_t r = std::int64_t(rem_q.read()) - corr * (std::int64_t{1} << (kDistFrac - kNormFrac));
+  if (it || correcting) {
+    const std::int64_t r = std::int64_t(rem_q.read()) - amt * (std::int64_t{1} << (kDistFrac - kNormFrac));
     rem_q.write(r > 0 ? std::uint64_t(r) : 0);
   }
   if (!running_i.read()) {
     ph_q.write(0);
-  } else if (advance_i.read() || load()) {
-    const std::int64_t sub =
-        it ? std::int64_t(d_q.read() << (kRampFrac - kNormFrac)) : corr * (std::int64_t{1} << (kRampFrac - kNormFrac));
+  } else if (advance_i.read() || correcting) {
+    const std::int64_t sub = amt * (std::int64_t{1} << (kRampFrac - kNormFrac));
     const std::int64_t next = std::min(phase() + (advance_i.read() ? std::int64_t(v_q.read()) : 0) - sub,
                                        (std::int64_t{1} << kPhaseBits) - 1);
     ph_q.write(std::uint64_t(next) & ((std::uint64_t{1} << kPhaseWidth) - 1));
@@ -180,7 +187,14 @@ void dda_pace::seq() {
     due_q.write(false);
     fresh_q.write(false);
     m_q.write(0);
+    cm_q.write(0);  // (a correction left of the piece before is dropped with it)
   }
+}
+
+std::int64_t dda_pace::correction_part() const {
+  if ((cm_q.read() & 1u) == 0) return 0;
+  const std::uint64_t sign = std::uint64_t{1} << (kCorrectionWidth - 1);
+  return std::int64_t(cd_q.read() ^ sign) - std::int64_t(sign);
 }
 
 }  // namespace dda::sc

@@ -28,6 +28,10 @@ SC_MODULE(dda_pace) {
       busy_q{"busy_q"};
   sc_core::sc_signal<bool> pend_q{"pend_q"}, first_q{"first_q"}, due_q{"due_q"}, fresh_q{"fresh_q"};
   sc_core::sc_signal<std::uint32_t> m_q{"m_q"};  // the run's provisional iterations
+  // The correction, a bit of m per clock: the bits still to apply, and the difference of
+  // the d's shifting up (kCorrectionWidth bits, two's complement).
+  sc_core::sc_signal<std::uint32_t> cm_q{"cm_q"};
+  sc_core::sc_signal<std::uint64_t> cd_q{"cd_q"};
   sc_core::sc_signal<std::uint64_t> d_q{"d_q"};  // the d the pacer paces with
   // (ph_q holds the signed phase in kPhaseWidth bits, two's complement, as the RTL.)
   // The cruise speed times the override, by shift and add (the override's top bit first).
@@ -48,6 +52,7 @@ SC_MODULE(dda_pace) {
   bool free() const { return busy_q.read() == 0; }
   bool load() const { return free() && !fresh_q.read(); }  // d_q takes the norm unit's d
   std::int64_t phase() const;                              // ph_q's value
+  std::int64_t correction_part() const;                    // this clock's part of the correction
 
   sc_core::sc_signal<bool> start_{"start"}, norm_busy_{"norm_busy"};
   sc_core::sc_signal<std::uint64_t> d_{"d"};
