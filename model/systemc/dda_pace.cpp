@@ -66,7 +66,7 @@ void dda_pace::comb() {
 
 // The override's top bit first: each clock doubles the product so far and adds the
 // cruise speed for the next bit; a take or an override change starts it again. The
-// product at the ramp's scale: macc_q times kRampFrac - kSpeedFrac - log2 kOverrideOne.
+// product at the ramp's scale: macc_q shifted up by kRampFrac - kSpeedFrac - log2 kOverrideOne.
 void dda_pace::multiply() {
   const std::uint32_t top = 1u << (kOverrideBits - 1);
   const std::uint64_t msum = 2 * macc_q.read() + ((mplier_q.read() & top) != 0 ? cruise_q.read() : 0);
