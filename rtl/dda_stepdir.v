@@ -68,9 +68,10 @@ module dda_stepdir #(
   wire tf_ge_space    = tf_q >= space;
   wire tf_ge_hold     = tf_q >= dirhold_i;
   wire ts_ge_setup    = ts_q >= dirsetup_i;
-  wire inc_ge_space   = tf_inc >= space;
-  wire inc_ge_hold    = tf_inc >= dirhold_i;
-  wire tsinc_ge_setup = ts_inc >= dirsetup_i;
+  // (a count one up reaches a bound it had reached, or one it now equals)
+  wire inc_ge_space   = tf_ge_space | (tf_inc == space);
+  wire inc_ge_hold    = tf_ge_hold | (tf_inc == dirhold_i);
+  wire tsinc_ge_setup = ts_ge_setup | (ts_inc == dirsetup_i);
   wire hold0          = dirhold_i == '0;
   wire setup0         = dirsetup_i == '0;
   wire hold_le1       = dirhold_i <= One;
