@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Where the motion block's logic cells go on the iCE40 HX8K (docs/results.md, "Where the
+# block's logic cells go"): Yosys synth_ice40 of rtl/dda_motion.v as scripts/synth
+# makes it, packed by nextpnr-ice40 (not placed), then the same with a part replaced
+# by a stub of the same ports, so that the difference is what the part costs packed:
+#   - the pacer (rtl/dda_pace.v with its norm unit): the core iterates on every clock
+#     it may (iterate_o = advance_i & running_i), the speed is 0;
+#   - the norm unit alone (rtl/dda_norm.v): d is a register of x's operand's low bits,
+#     so the pacer's logic around d stays.
+# Each row: the packed cells and what they hold (a LUT4 with its flip-flop, a LUT4
+# alone, a flip-flop alone: its input is no LUT4 of its own, a carry alone); then the
+# registers of the whole block with the most flip-flops alone.
+#   usage: scripts/area-budget.sh [--alone N]   (N registers listed, default 20)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+alone=20
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --alone) alone=$2; shift 2 ;;
+    *) echo "usage: $0 [--alone N]" >&2; exit 2 ;;
+  esac
+done
+for tool in yosys nextpnr-ice40 python3; do
+  command -v "$tool" >/dev/null || { echo "area-budget: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
+done
+work=$(mktemp -d -t dda-area.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+srcs=$(scripts/rtl-files.sh rtl/dda_motion.f | tr "\n" " ")
+
+# stub MODULE FILE BODY: the module's header (its parameters and ports, copied from
+# FILE) with BODY instead of its logic.
+stub() {
+  local out="$work/$1_stub.v"
+  MOD=$1 BODY=$3 python3 - "$2" > "$out" <<'PY'
+import os, sys
+src = open(sys.argv[1]).read()
+start = src.index("module " + os.environ["MOD"])
+end = src.index(");", src.index("output", start)) + 2
+print('`include "dda_params.vh"')
+print(src[start:end])
+print(os.environ["BODY"])
+print("endmodule")
+PY
+  echo "$out"
+}
+# pack NAME SOURCES...: the packed design's cells (scripts/packed_cells.py's line).
+pack() {
+  local name=$1
+  shift
+  yosys -q -p "read_verilog -sv -DDDA_ICE40 -Irtl $*; synth_ice40 -top dda_motion -json $work/$name.json" >/dev/null
+  nextpnr-ice40 --hx8k --package ct256 --json "$work/$name.json" --pack-only --write "$work/$name.packed.json" \
+    -l "$work/$name.log" >/dev/null 2>&1 || { echo "area-budget: nextpnr failed to pack $name:" >&2; tail -5 "$work/$name.log" >&2; exit 1; }
+  python3 scripts/packed_cells.py "$work/$name.packed.json" --alone "${alone_n:-0}"
+}
+
+pace_stub=$(stub dda_pace rtl/dda_pace.v "  assign iterate_o = advance_i & running_i;
+  assign speed_o = '0;
+  wire unused = &{1'b0, clk_i, rst_ni, take_i, cruise_i, limit_i, exit_i, length_i, brake_exit_i, next_queued_i,
+                 accel_i, vmin_i, override_i, hold_i, stepped_i, v_x_i, v_y_i, v_z_i, cap_i, cap_z_i};")
+norm_stub=$(stub dda_norm rtl/dda_norm.v "  reg [NF+1:0] d_q;
+  always @(posedge clk_i) d_q <= start_i ? v_x_i[NF+1:0] : d_q;
+  assign d_o = d_q;
+  assign busy_o = 1'b0;
+  wire unused = &{1'b0, rst_ni, v_x_i[AW-1:NF+2], v_y_i, v_z_i, cap_i, cap_z_i};")
+no_pace=$(echo "$srcs" | tr " " "\n" | grep -v -e '/dda_pace\.v$' -e '/dda_norm\.v$' | tr "\n" " ")
+no_norm=$(echo "$srcs" | tr " " "\n" | grep -v '/dda_norm\.v$' | tr "\n" " ")
+
+full=$(alone_n=$alone pack full $srcs)
+nopace=$(pack nopace $no_pace "$pace_stub")
+nonorm=$(pack nonorm $no_norm "$norm_stub")
+field() { echo "$1" | head -1 | awk -v k="$2" '{for (i = 1; i < NF; i += 2) if ($i == k) print $(i + 1)}'; }
+row() {  # row LABEL LINE
+  printf '| %s | %d (%.1f%%) | %d | %d | %d | %d |\n' "$1" "$(field "$2" cells)" \
+    "$(awk -v a="$(field "$2" cells)" 'BEGIN {print 100 * a / 7680}')" "$(field "$2" lut_ff)" \
+    "$(field "$2" lut)" "$(field "$2" ff_alone)" "$(field "$2" carry_alone)"
+}
+echo "rtl/dda_motion.v on the iCE40 HX8K (ct256), packed by nextpnr-ice40 (not placed), 7680 logic cells"
+echo
+echo "| design | logic cells | LUT4 and flip-flop | LUT4 alone | flip-flop alone | carry alone |"
+echo "|---|---|---|---|---|---|"
+row "the block" "$full"
+row "the block, the pacer a stub" "$nopace"
+row "the block, the norm unit a stub" "$nonorm"
+echo
+echo "the pacer with its norm unit: $(($(field "$full" cells) - $(field "$nopace" cells))) cells;" \
+  "the norm unit: $(($(field "$full" cells) - $(field "$nonorm" cells))) cells (less its stub's 22-bit register)"
+echo
+echo "the block's registers with the most flip-flops alone:"
+echo "$full" | tail -n +2
