@@ -143,6 +143,16 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
+# The pacer's comparisons at their thresholds on the bus: on a clock of 2^20 Hz the entry
+# speeds and the acceleration are whole fields, the cruise speed exactly one ramp step
+# above the minimum speed, and two ramp steps less one unit (tests/test_pace.cpp checks
+# the fields); a circle of radius 2, its pieces' exits equal to the cruise speed.
+dda_bus_vec_set(pace_step --a 2 --b 2 --from 2,0 --to 2,0 --feed-rate 1000.0625 --accel 65536 --vmin 1000
+                --clock 1048576)
+dda_bus_vec_set(pace_step_less --a 2 --b 2 --from 2,0 --to 2,0 --feed-rate 1000.124755859375 --accel 65536
+                --vmin 1000 --clock 1048576)
+set_property(TEST vectors.bus.gen_pace_step vectors.bus.pace_step vectors.bus.gen_pace_step_less
+             vectors.bus.pace_step_less APPEND PROPERTY LABELS pacer)
 # The machine-input scenarios (tb/scenarios/io_scenarios.hpp, label io): the block on a
 # simulated machine, its input pins in the set.
 foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches overflow limits ranges)

@@ -304,11 +304,12 @@ TEST_CASE("motion: abort, overflow, partial commit and reset in the middle of a 
 TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and overflows, on both bus modes", "[motion]") {
   const std::uint64_t seed = test_seed(79);
   INFO("seed " << seed << " (DDA_SEED reruns it)");
-  std::uint64_t input_trips = 0;
+  std::uint64_t input_trips = 0, thresholds = 0;
   for (const bool pipelined : {false, true}) {
     MotionHarness h;
     const MixStats st = run_motion_mix(h, seed + pipelined, 50, pipelined);
     input_trips += st.input_trips;
+    thresholds += st.threshold_batches;
     INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
     CHECK(st.arcs == 50);
     CHECK(st.position_checks > 0);
@@ -321,4 +322,5 @@ TEST_CASE("motion: 100 random arcs with aborts, resets, partial commits and over
     CHECK(st.glitches > 0);  // glitches on the machine's inputs, ignored
   }
   CHECK(input_trips > 0);  // batches stopped by an input
+  CHECK(thresholds > 0);   // paced batches with the pacer's comparisons at their thresholds
 }

@@ -267,6 +267,17 @@ TEST_CASE("pace unit: the decisions exactly at their comparison boundaries, in l
   CHECK(runs == 44);
 }
 
+TEST_CASE("pace unit: the bus vector sets at the thresholds carry the fields they are named for", "[pacer]") {
+  // tests/rtl_checks.cmake's pace_step and pace_step_less: on a clock of 2^20 Hz, 65536
+  // steps/s^2 is a ramp step of 256 entry speed units, 1000 steps/s a whole field.
+  const double clock = 1048576;
+  const std::uint32_t vmin = speed_field(1000, clock);
+  const std::uint32_t step = std::uint32_t(accel_field(65536, clock) >> (kRampFrac - kSpeedFrac));
+  CHECK(step == 256);
+  CHECK(speed_field(1000.0625, clock) == vmin + step);
+  CHECK(speed_field(1000.124755859375, clock) == vmin + 2 * step - 1);
+}
+
 namespace {
 
 // The pacer's decision to slow down compares s + the phase + the margin with the

@@ -54,6 +54,7 @@ class Mix {
   struct Pacing {
     bool on = false;
     std::uint32_t cruise = 0, vmin = 0, accel = 0;
+    bool threshold = false;  // the comparisons at their thresholds (no piece slowed)
   };
   std::vector<Plan> draw_batch(bool large, bool paced, std::uint64_t arcs);
   Pacing draw_pacing(bool paced);
@@ -108,7 +109,7 @@ MixStats Mix::run(std::uint64_t arcs) {
     st_.arcs += batch.size();
     const bool cut = cut_short(batch.front());
     if (!cut) {
-      if (pc.on) pace_events();
+      if (pc.on && !pc.threshold) pace_events();
       d_.drain();
       check_position(want);
     }
@@ -161,19 +162,31 @@ void Mix::set_outputs(unsigned kind, bool large) {
 // A paced batch's settings: a cruise speed of 0.002 to 0.02 steps per clock (above about
 // 0.009 the norm unit's latency is the limit: the phase saturates), a minimum speed of
 // 0.0005 to 0.0015, a ramp to the cruise speed over 1000 to 4000 clocks (no ramp an
-// eighth of the time).
+// eighth of the time). A third of the batches put the pacer's comparisons at their
+// thresholds instead: the cruise speed a whole number of ramp steps (0 to 3) above the
+// minimum speed, or one unit either side of it.
 Mix::Pacing Mix::draw_pacing(bool paced) {
   Pacing pc;
   if (!paced) return pc;
-  std::uniform_real_distribution<double> u(0, 1);
-  const double cruise = 0.002 + 0.018 * u(rng_), vmin = 0.0005 + 0.001 * u(rng_);
-  const double accel = rng_() % 8 == 0 ? 0 : cruise / (1000 + 3000 * u(rng_));
   pc.on = true;
-  pc.cruise = std::uint32_t(std::ldexp(cruise, kSpeedFrac));
-  pc.vmin = std::uint32_t(std::ldexp(vmin, kSpeedFrac));
-  pc.accel = std::uint32_t(std::min(std::ldexp(accel, kRampFrac), 4294967295.0));
-  d_.set_pacing(pc.accel, pc.vmin);
   ++st_.paced_batches;
+  if (rng_() % 3 == 0) {
+    pc.threshold = true;
+    ++st_.threshold_batches;
+    pc.accel = 1u << 20;  // x 2^-kRampFrac steps/clock^2: a ramp step of 16 entry speed units
+    pc.vmin = 1u << 24;   // 1/256 step per clock
+    const std::uint32_t k = std::uint32_t(rng_() % 4), step = pc.accel >> (kRampFrac - kSpeedFrac);
+    const int off = k == 0 ? int(rng_() % 2) : int(rng_() % 3) - 1;
+    pc.cruise = pc.vmin + k * step + std::uint32_t(off);
+  } else {
+    std::uniform_real_distribution<double> u(0, 1);
+    const double cruise = 0.002 + 0.018 * u(rng_), vmin = 0.0005 + 0.001 * u(rng_);
+    const double accel = rng_() % 8 == 0 ? 0 : cruise / (1000 + 3000 * u(rng_));
+    pc.cruise = std::uint32_t(std::ldexp(cruise, kSpeedFrac));
+    pc.vmin = std::uint32_t(std::ldexp(vmin, kSpeedFrac));
+    pc.accel = std::uint32_t(std::min(std::ldexp(accel, kRampFrac), 4294967295.0));
+  }
+  d_.set_pacing(pc.accel, pc.vmin);
   return pc;
 }
 
@@ -217,7 +230,7 @@ Point Mix::queue_batch(const std::vector<Plan>& batch, const Pacing& pc) {
     for (const auto& p : batch)
       for (const auto& piece : p.pieces) cmds.push_back(piece.cmd);
     pace = pace_entries(cmds, pc.cruise, pc.vmin, pc.accel);
-    slow_some(pace, pc);
+    if (!pc.threshold) slow_some(pace, pc);
   }
   std::size_t k = 0;
   for (const auto& p : batch) {

@@ -32,9 +32,10 @@ struct MixStats {
   std::uint64_t spatial = 0, pulses_z = 0;  // arcs that move the third axis, its pulses
   std::uint64_t turned = 0;                 // of those, turned onto another plane (the entry's axes)
   std::uint64_t paced_batches = 0, paced_pieces = 0, holds = 0;  // batches paced by the pacer
-  std::uint64_t hard_stops = 0, soft_stops = 0, watchdogs = 0;   // batches cut short so
-  std::uint64_t speed_watched = 0, speed_windows = 0;            // paced batches under the speed monitor, its windows
-  double peak_speed_share = 0;                                   // the fastest window over its batch's cruise speed
+  std::uint64_t threshold_batches = 0;  // of those, with the pacer's comparisons at their thresholds
+  std::uint64_t hard_stops = 0, soft_stops = 0, watchdogs = 0;  // batches cut short so
+  std::uint64_t speed_watched = 0, speed_windows = 0;           // paced batches under the speed monitor, its windows
+  double peak_speed_share = 0;                                  // the fastest window over its batch's cruise speed
   std::uint64_t glitches = 0, input_trips = 0;  // glitches on the machine's inputs; batches an input stopped
 };
 

@@ -27,8 +27,10 @@ int sc_main(int argc, char* argv[]) {
     std::printf(
         "motion regression: seed %llu: %llu arcs in %llu pieces (%llu ended on their end points; %llu batches: %llu "
         "position checks, %llu aborts, %llu resets, %llu partial commits, %llu overflows; %llu with step/dir timings, "
-        "%llu of them large; %llu pieces at a feed increment; %llu paced by the pacer in %llu batches with as many "
-        "feed holds and override changes; %llu hard stops, %llu soft stops, %llu watchdog timeouts), %llu step pulses "
+        "%llu of them large; %llu pieces at a feed increment; %llu paced by the pacer in %llu batches, %llu of them "
+        "with "
+        "its comparisons at their thresholds, the others with a feed hold and override changes; %llu hard stops, %llu "
+        "soft stops, %llu watchdog timeouts), %llu step pulses "
         "checked by the timing monitor, %llu "
         "cycles co-simulated, 0 mismatches, 0 timing violations\n",
         (unsigned long long)seed, (unsigned long long)(a.arcs + b.arcs), (unsigned long long)(a.pieces + b.pieces),
@@ -38,9 +40,11 @@ int sc_main(int argc, char* argv[]) {
         (unsigned long long)(a.overflow + b.overflow), (unsigned long long)(a.timed_batches + b.timed_batches),
         (unsigned long long)(a.large_timing_batches + b.large_timing_batches),
         (unsigned long long)(a.fed_pieces + b.fed_pieces), (unsigned long long)(a.paced_pieces + b.paced_pieces),
-        (unsigned long long)(a.paced_batches + b.paced_batches), (unsigned long long)(a.hard_stops + b.hard_stops),
-        (unsigned long long)(a.soft_stops + b.soft_stops), (unsigned long long)(a.watchdogs + b.watchdogs),
-        (unsigned long long)(a.pulses + b.pulses), (unsigned long long)h.cycle());
+        (unsigned long long)(a.paced_batches + b.paced_batches),
+        (unsigned long long)(a.threshold_batches + b.threshold_batches),
+        (unsigned long long)(a.hard_stops + b.hard_stops), (unsigned long long)(a.soft_stops + b.soft_stops),
+        (unsigned long long)(a.watchdogs + b.watchdogs), (unsigned long long)(a.pulses + b.pulses),
+        (unsigned long long)h.cycle());
     std::printf(
         "motion regression: the speed monitor at the pins on %llu paced batches (%llu windows): the fastest window "
         "%.4f of its batch's cruise speed, 0 speed or acceleration violations\n",
