@@ -153,6 +153,23 @@ dda_bus_vec_set(pace_step_less --a 2 --b 2 --from 2,0 --to 2,0 --feed-rate 1000.
                 --vmin 1000 --clock 1048576)
 set_property(TEST vectors.bus.gen_pace_step vectors.bus.pace_step vectors.bus.gen_pace_step_less
              vectors.bus.pace_step_less APPEND PROPERTY LABELS pacer)
+# Direction reversals on the step/dir stages' look-ahead: lines back to back along X and
+# then Y that turn round at full speed, the reversed step waiting on dirhold (2 clocks on
+# X, 6 on Y, dirsetup 0) while the next one comes: the core must be held exactly until
+# the waiting step can leave.
+dda_bus_vec_set(reversals --line --from 0,0 --to 60,0 --then "--line --from 60,0 --to 0,0"
+                --then "--line --from 0,0 --to 60,0" --then "--line --from 60,0 --to 60,60"
+                --then "--line --from 60,60 --to 60,0" --then "--line --from 60,0 --to 60,60"
+                --timing-x 1,1,0,2 --timing-y 1,1,0,6)
+set_property(TEST vectors.bus.gen_reversals vectors.bus.reversals APPEND PROPERTY LABELS stepdir)
+# The override below 100% on paced pieces back to back: the cruise speed times the
+# override is then below the exit speeds, which the pacer must not head for when it
+# decides to slow down near a piece's end (a large acceleration makes the braking
+# distances differ by less than the margin there).
+dda_bus_vec_set(paced_slower --line --from 0,0 --to 20,0 --then "--line --from 20,0 --to 40,10"
+                --then "--line --from 40,10 --to 60,10" --feed-rate 8000 --accel 6e7 --vmin 500 --clock 2e6
+                --override 95 --override-at 100)
+set_property(TEST vectors.bus.gen_paced_slower vectors.bus.paced_slower APPEND PROPERTY LABELS pacer)
 # The machine-input scenarios (tb/scenarios/io_scenarios.hpp, label io): the block on a
 # simulated machine, its input pins in the set.
 foreach(_scn estop limit-hard limit-decel homing probing snapshot glitches overflow limits ranges)
