@@ -15,17 +15,20 @@
 # capacities and Z integrand, the pacer's cruise, limit, exit and braking words): what
 # those copies cost. That copy is not a working block (the queue fetches the next entry
 # while a piece runs); a block that held the running entry would fetch after it.
-# Each row: the packed cells and what they hold (a LUT4 with its flip-flop, a LUT4
-# alone, a flip-flop alone: its input is no LUT4 of its own, a carry alone); then the
-# registers of the whole block with the most flip-flops alone.
+# Each row: the packed cells of the device's and what they hold (a LUT4 with its
+# flip-flop, a LUT4 alone, a flip-flop alone: its input is no LUT4 of its own, a carry
+# alone, other: none of them, a constant); then the registers of the whole block with
+# the most flip-flops alone.
 #   usage: scripts/area-budget.sh [--alone N]   (N registers listed, default 20)
 set -euo pipefail
+shopt -s inherit_errexit  # (a failure inside $(...) stops the script too)
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 alone=20
 while [ $# -gt 0 ]; do
   case "$1" in
-    --alone) alone=$2; shift 2 ;;
+    --alone) [[ ${2:-} =~ ^[0-9]+$ ]] || { echo "area-budget: --alone takes a number" >&2; exit 2; }
+             alone=$2; shift 2 ;;
     *) echo "usage: $0 [--alone N]" >&2; exit 2 ;;
   esac
 done
@@ -46,6 +49,7 @@ src = open(sys.argv[1]).read()
 start = src.index("module " + os.environ["MOD"])
 end = src.index(");", src.index("output", start)) + 2
 print('`include "dda_params.vh"')
+print('`include "dda_motion_regs.vh"')
 print(src[start:end])
 print(os.environ["BODY"])
 print("endmodule")
@@ -59,7 +63,9 @@ pack() {
   yosys -q -p "read_verilog -sv -DDDA_ICE40 -I${inc:-rtl} $*; synth_ice40 -top dda_motion -json $work/$name.json" >/dev/null
   nextpnr-ice40 --hx8k --package ct256 --json "$work/$name.json" --pack-only --write "$work/$name.packed.json" \
     -l "$work/$name.log" >/dev/null 2>&1 || { echo "area-budget: nextpnr failed to pack $name:" >&2; tail -5 "$work/$name.log" >&2; exit 1; }
-  python3 scripts/packed_cells.py "$work/$name.packed.json" --alone "${alone_n:-0}"
+  local device
+  device=$(grep -E "ICESTORM_LC: +[0-9]+/ *[0-9]+" "$work/$name.log" | tail -1 | sed -E 's/.*\/ *([0-9]+).*/\1/')
+  python3 scripts/packed_cells.py "$work/$name.packed.json" --alone "${alone_n:-0}" | sed "1s/\$/ device $device/"
 }
 
 pace_stub=$(stub dda_pace rtl/dda_pace.v "  assign iterate_o = advance_i & running_i;
@@ -119,6 +125,9 @@ for name, pairs in edits.items():
     open(path, "w").write(text)
 PY
 held=$(echo "$srcs" | tr " " "\n" | sed "s|^$root/rtl/|$work/held/|" | tr "\n" " ")
+for f in $held; do
+  case "$f" in "$work/held/"*) ;; *) echo "area-budget: $f is not in the edited copy" >&2; exit 1 ;; esac
+done
 no_norm=$(echo "$srcs" | tr " " "\n" | grep -v '/dda_norm\.v$' | tr "\n" " ")
 
 full=$(alone_n=$alone pack full $srcs)
@@ -128,14 +137,14 @@ noio=$(pack noio $no_io "$io_stub")
 nocopy=$(inc=$work/held pack nocopy $held)
 field() { echo "$1" | head -1 | awk -v k="$2" '{for (i = 1; i < NF; i += 2) if ($i == k) print $(i + 1)}'; }
 row() {  # row LABEL LINE
-  printf '| %s | %d (%.1f%%) | %d | %d | %d | %d |\n' "$1" "$(field "$2" cells)" \
-    "$(awk -v a="$(field "$2" cells)" 'BEGIN {print 100 * a / 7680}')" "$(field "$2" lut_ff)" \
-    "$(field "$2" lut)" "$(field "$2" ff_alone)" "$(field "$2" carry_alone)"
+  printf '| %s | %d (%.1f%%) | %d | %d | %d | %d | %d |\n' "$1" "$(field "$2" cells)" \
+    "$(awk -v a="$(field "$2" cells)" -v b="$(field "$2" device)" 'BEGIN {print 100 * a / b}')" "$(field "$2" lut_ff)" \
+    "$(field "$2" lut)" "$(field "$2" ff_alone)" "$(field "$2" carry_alone)" "$(field "$2" other)"
 }
-echo "rtl/dda_motion.v on the iCE40 HX8K (ct256), packed by nextpnr-ice40 (not placed), 7680 logic cells"
+echo "rtl/dda_motion.v on the iCE40 HX8K (ct256), packed by nextpnr-ice40 (not placed), $(field "$full" device) logic cells"
 echo
-echo "| design | logic cells | LUT4 and flip-flop | LUT4 alone | flip-flop alone | carry alone |"
-echo "|---|---|---|---|---|---|"
+echo "| design | logic cells | LUT4 and flip-flop | LUT4 alone | flip-flop alone | carry alone | other |"
+echo "|---|---|---|---|---|---|---|"
 row "the block" "$full"
 row "the block, the pacer a stub" "$nopace"
 row "the block, the norm unit a stub" "$nonorm"

@@ -6,7 +6,8 @@
 # register, or from a LUT4 whose output is also used elsewhere) takes a cell of its
 # own with a pass-through LUT4. Used by scripts/area-budget.sh.
 #   usage: scripts/packed_cells.py PACKED.json [--alone N]
-#   prints: "cells N lut_ff N lut N ff_alone N carry_alone N" and, with --alone N, the N
+#   prints: "cells N lut_ff N lut N ff_alone N carry_alone N other N" (other: a cell with
+#   none of the three, a constant) and, with --alone N, the N
 #   registers with the most flip-flops packed alone ("count name" lines).
 import argparse
 import collections
@@ -54,7 +55,9 @@ def main():
             kinds["lut_ff" if ff else "lut"] += 1
         elif carry:
             kinds["carry_alone"] += 1
-    print(" ".join(f"{k} {kinds[k]}" for k in ("cells", "lut_ff", "lut", "ff_alone", "carry_alone")))
+        else:
+            kinds["other"] += 1
+    print(" ".join(f"{k} {kinds[k]}" for k in ("cells", "lut_ff", "lut", "ff_alone", "carry_alone", "other")))
     for name, n in alone.most_common(args.alone):
         print(n, name)
 

@@ -54,11 +54,11 @@ class Mix {
   struct Pacing {
     bool on = false;
     std::uint32_t cruise = 0, vmin = 0, accel = 0;
-    bool threshold = false;  // the comparisons at their thresholds (no piece slowed)
+    bool threshold = false;  // the comparisons at their thresholds (no piece slowed, no override)
   };
   std::vector<Plan> draw_batch(bool large, bool paced, std::uint64_t arcs);
   Pacing draw_pacing(bool paced);
-  void pace_events();
+  void pace_events(bool override);
   void set_outputs(unsigned kind, bool large);
   void partial_commit();
   Point queue_batch(const std::vector<Plan>& batch, const Pacing& pc);
@@ -109,7 +109,7 @@ MixStats Mix::run(std::uint64_t arcs) {
     st_.arcs += batch.size();
     const bool cut = cut_short(batch.front());
     if (!cut) {
-      if (pc.on && !pc.threshold) pace_events();
+      if (pc.on) pace_events(!pc.threshold);
       d_.drain();
       check_position(want);
     }
@@ -164,7 +164,7 @@ void Mix::set_outputs(unsigned kind, bool large) {
 // 0.0005 to 0.0015, a ramp to the cruise speed over 1000 to 4000 clocks (no ramp an
 // eighth of the time). A third of the batches put the pacer's comparisons at their
 // thresholds instead: the cruise speed a whole number of ramp steps (0 to 3) above the
-// minimum speed, or one unit either side of it.
+// minimum speed, or one unit either side of it (not below the minimum speed).
 Mix::Pacing Mix::draw_pacing(bool paced) {
   Pacing pc;
   if (!paced) return pc;
@@ -191,10 +191,11 @@ Mix::Pacing Mix::draw_pacing(bool paced) {
 }
 
 // While a paced batch runs: an override change (0 to 235%: above 200% is clamped), a
-// feed hold and its end, the override back to 100%.
-void Mix::pace_events() {
+// feed hold and its end, the override back to 100%; at the thresholds the hold alone (an
+// override would move the cruise speed off them; the resume ramps through them again).
+void Mix::pace_events(bool override) {
   m_.idle(int(rng_() % 3000));
-  d_.set_override(std::uint32_t(20 + rng_() % 580));
+  if (override) d_.set_override(std::uint32_t(20 + rng_() % 580));
   m_.idle(int(rng_() % 3000));
   d_.hold();
   ++st_.holds;
@@ -205,7 +206,7 @@ void Mix::pace_events() {
   }
   d_.resume();
   m_.idle(int(rng_() % 3000));
-  d_.set_override(kOverrideOne);
+  if (override) d_.set_override(kOverrideOne);
 }
 
 // A partial entry committed: refused, with err_partial.

@@ -27,10 +27,9 @@ int sc_main(int argc, char* argv[]) {
     std::printf(
         "motion regression: seed %llu: %llu arcs in %llu pieces (%llu ended on their end points; %llu batches: %llu "
         "position checks, %llu aborts, %llu resets, %llu partial commits, %llu overflows; %llu with step/dir timings, "
-        "%llu of them large; %llu pieces at a feed increment; %llu paced by the pacer in %llu batches, %llu of them "
-        "with "
-        "its comparisons at their thresholds, the others with a feed hold and override changes; %llu hard stops, %llu "
-        "soft stops, %llu watchdog timeouts), %llu step pulses "
+        "%llu of them large; %llu pieces at a feed increment; %llu paced by the pacer in %llu batches with %llu feed "
+        "holds, %llu of the batches with its comparisons at their thresholds, the others with override changes; %llu "
+        "hard stops, %llu soft stops, %llu watchdog timeouts), %llu step pulses "
         "checked by the timing monitor, %llu "
         "cycles co-simulated, 0 mismatches, 0 timing violations\n",
         (unsigned long long)seed, (unsigned long long)(a.arcs + b.arcs), (unsigned long long)(a.pieces + b.pieces),
@@ -40,7 +39,7 @@ int sc_main(int argc, char* argv[]) {
         (unsigned long long)(a.overflow + b.overflow), (unsigned long long)(a.timed_batches + b.timed_batches),
         (unsigned long long)(a.large_timing_batches + b.large_timing_batches),
         (unsigned long long)(a.fed_pieces + b.fed_pieces), (unsigned long long)(a.paced_pieces + b.paced_pieces),
-        (unsigned long long)(a.paced_batches + b.paced_batches),
+        (unsigned long long)(a.paced_batches + b.paced_batches), (unsigned long long)(a.holds + b.holds),
         (unsigned long long)(a.threshold_batches + b.threshold_batches),
         (unsigned long long)(a.hard_stops + b.hard_stops), (unsigned long long)(a.soft_stops + b.soft_stops),
         (unsigned long long)(a.watchdogs + b.watchdogs), (unsigned long long)(a.pulses + b.pulses),
