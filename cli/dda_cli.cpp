@@ -47,6 +47,7 @@
 #include "host/speed/pace_plan.hpp"
 #include "model/datapath/hw_command.hpp"
 #include "model/datapath/hw_params.hpp"
+#include "model/motion/build.hpp"
 #include "model/motion/motion_map.hpp"
 #include "model/motion/motion_model.hpp"
 #include "tb/measure/pace_report.hpp"
@@ -141,6 +142,7 @@ struct Cli {
   FeedCli feed;
   GenParamsCli gen_params;
   BlocksCli blocks;
+  std::string build = "";  // `dda build SPEC`
 };
 
 void set_up_trace(CLI::App* sub, Cli& c) { add_arc_options(sub, c.trace, "csv, table or json", "csv"); }
@@ -312,6 +314,22 @@ void run_plot(const Cli& c, int argc, char** argv) {
 
 void run_gen_params(const Cli& c, int, char**) { run_gen_params(c.gen_params); }
 
+void set_up_build(CLI::App* sub, Cli& c) {
+  sub->add_option(
+      "spec", c.build,
+      "the choices, key=value separated by commas (model/motion/build.hpp; empty: the default build): " + [] {
+        std::string keys;
+        for (const auto& p : motion::kBuildParams)
+          keys += fmt::format("{}{} ({} .. {}: {})", keys.empty() ? "" : ", ", p.key, p.min, p.max, p.meaning);
+        return keys;
+      }());
+}
+
+// The RTL parameters of a build, a line `NAME VALUE` each (scripts/synth sets the same).
+void run_build(const Cli& c, int, char**) {
+  for (const auto& [name, value] : motion::rtl_params(motion::parse_build(c.build))) fmt::print("{} {}\n", name, value);
+}
+
 void set_up_blocks(CLI::App* sub, Cli& c) { add_blocks_options(sub, c.blocks); }
 
 void run_blocks(const Cli& c, int, char**) { run_blocks(c.blocks); }
@@ -335,6 +353,8 @@ const Subcommand kSubcommands[] = {
      set_up_feed, run_feed},
     {"plot", "SVG picture of the path over the ideal ellipse (--out FILE.svg)", set_up_plot, run_plot},
     {"gen-params", "print the hardware widths and command fields", set_up_gen_params, run_gen_params},
+    {"build", "the motion block's RTL parameters for a build (key=value,...; docs/design.md \"Builds\")", set_up_build,
+     run_build},
     {"blocks", "the motion blocks a part program reads as, in machine coordinates (--program FILE)", set_up_blocks,
      run_blocks},
 };
@@ -346,7 +366,7 @@ void check_command_word(CLI::App& app, int argc, char** argv) {
       std::strcmp(argv[1], "--version") != 0) {
     throw InputError(
         std::string("option '") + argv[1] +
-        "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params, blocks)");
+        "' is unknown here: options follow a command (trace, path, stats, plot, vectors, gen-params, build, blocks)");
   }
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;

@@ -91,7 +91,7 @@ if(NOT DDA_WIDTHS_DEFAULT)
   set(DDA_MOTION_PARAMS ${DDA_RTL_PARAMS_DIR})
 endif()
 
-# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES]): the motion block's harness (tb/engines/)
+# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES] [NO_INPUTS]): the motion block's harness (tb/engines/)
 # around the RTL verilated with that queue depth (MotionHarness compiled with the same
 # depth); "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the
 # generated header). BRIDGES: the block behind its AXI4-Lite and SPI bridges too
@@ -111,6 +111,14 @@ function(dda_motion_harness_lib target depth_log2)
     set(gparam -GDepthLog2=${depth_log2})
   endif()
   set(tops dda_motion)
+  # NO_INPUTS: the build without the machine inputs (motion::Build::inputs; the
+  # parameter's name is kBuildParams' and the test "build: ..." checks it).
+  if("NO_INPUTS" IN_LIST ARGN)
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_INPUTS=0)
+    list(APPEND gparam -GInputs=0)
+  else()
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_INPUTS=1)
+  endif()
   if("BRIDGES" IN_LIST ARGN)
     list(APPEND tops dda_motion_axil dda_motion_spi)
     target_compile_definitions(${target} PRIVATE DDA_HARNESS_BRIDGES=1)

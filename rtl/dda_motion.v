@@ -52,8 +52,11 @@
 `include "dda_params.vh"
 `include "dda_motion_regs.vh"
 
+// The build-time choices (docs/design.md, "Builds"; their one definition:
+// model/motion/build.hpp) are the parameters.
 module dda_motion #(
-  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
+  parameter integer Inputs    = 1  // 1: the machine inputs, latches and snapshot (u_io) are built in
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,      // synchronous, active low
@@ -534,11 +537,14 @@ module dda_motion #(
   assign irq_o = |(irq_status_q & irq_enable_q);
 
   // ---- the machine's inputs, the latches and the snapshot ----
+  // Not built (Inputs 0): u_io is held in reset, so that every one of its flip-flops is a
+  // constant synthesis removes, and the hierarchy and register names stay those of every
+  // build. It then stops nothing, latches nothing and reads 0; the pins are not read.
   wire        err_estop, err_limit, probe_armed, probed;
   wire [31:0] io_rd;
   dda_motion_io #(.LW(LW)) u_io (
     .clk_i        (clk_i),
-    .rst_ni       (rst_ni),
+    .rst_ni       (rst_ni & (Inputs != 0)),
     .estop_ni     (estop_ni),
     .limit_i      (limit_i),
     .home_i       (home_i),
@@ -582,6 +588,7 @@ module dda_motion #(
         rd[`DDA_MOTION_CONFIG_ENTRY_ROWS_LSB+:`DDA_MOTION_CONFIG_ENTRY_ROWS_WIDTH]   = `DDA_MOTION_CONFIG_ENTRY_ROWS_WIDTH'(`DDA_MOTION_ENTRY_ROWS);
         rd[`DDA_MOTION_CONFIG_ACC_WIDTH_LSB+:`DDA_MOTION_CONFIG_ACC_WIDTH_WIDTH]     = `DDA_ACC_WIDTH;
         rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
+        rd[`DDA_MOTION_CONFIG_INPUTS_LSB]                                           = Inputs != 0;
       end
       `DDA_MOTION_STATUS_ADDR: begin
         rd[`DDA_MOTION_STATUS_BUSY_LSB]         = busy;

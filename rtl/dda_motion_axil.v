@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block behind an AXI4-Lite slave (rtl/dda_axil.v; docs/design.md, "Bus
-// bridges"): dda_motion with the same register map, ports and parameter, the bus
+// bridges"): dda_motion with the same register map, ports and parameters, the bus
 // aside. Register offsets are byte addresses on the AXI bus as on Wishbone.
 `include "dda_motion_regs.vh"
 
@@ -8,7 +8,8 @@
 // of rtl/ at once sees the two bridged ones as tops, by design.
 /* verilator lint_off MULTITOP */
 module dda_motion_axil #(
-  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
+  parameter integer Inputs    = 1  // the machine inputs built in (dda_motion's)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,  // synchronous, active low
@@ -87,7 +88,8 @@ module dda_motion_axil #(
   );
 
   dda_motion #(
-    .DepthLog2 (DepthLog2)
+    .DepthLog2 (DepthLog2),
+    .Inputs    (Inputs)
   ) u_motion (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The motion block behind an SPI slave (rtl/dda_spi.v: mode 0, one register access per
 // 64-edge frame; docs/design.md, "Bus bridges"): dda_motion with the same register map,
-// ports and parameter, the bus aside. spi_miso_oe_o is high while CS_n is low, for a top
+// ports and parameters, the bus aside. spi_miso_oe_o is high while CS_n is low, for a top
 // that shares MISO with other slaves.
 `include "dda_motion_regs.vh"
 
@@ -9,7 +9,8 @@
 // of rtl/ at once sees the two bridged ones as tops, by design.
 /* verilator lint_off MULTITOP */
 module dda_motion_spi #(
-  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2  // queue depth 2^DepthLog2 (1..7)
+  parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
+  parameter integer Inputs    = 1  // the machine inputs built in (dda_motion's)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,  // synchronous, active low
@@ -67,7 +68,8 @@ module dda_motion_spi #(
   );
 
   dda_motion #(
-    .DepthLog2 (DepthLog2)
+    .DepthLog2 (DepthLog2),
+    .Inputs    (Inputs)
   ) u_motion (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),

@@ -83,6 +83,7 @@ std::array<std::pair<bool, bool>, 3> MotionModel::routed_steps() const {
 }
 
 void MotionModel::io_wires(const MachinePins& pins, Wires& w) const {
+  if (!build_.inputs) return;  // no stop, no latch: the wires stay at their defaults
   const std::uint32_t pol = std::uint32_t(r_[kPol]), mode = std::uint32_t(r_[kMode]);
   const std::uint32_t bits = pins.bits();
   std::uint32_t lvl = 0, rise = 0;
@@ -121,6 +122,7 @@ void MotionModel::io_wires(const MachinePins& pins, Wires& w) const {
 }
 
 void MotionModel::load_io(const Wires& w) {
+  if (!build_.inputs) return;  // u_io's registers are not built
   const auto set = [&](const char* r, std::uint64_t v) { reg(kIo + r) = v; };
   const auto at = [&](const char* r) { return w.wr && w.adr == reg_offset(r); };
   if (at("IN_POLARITY")) r_[kPol] = w.wdat & ((1u << kNumInputs) - 1);
@@ -165,6 +167,7 @@ void MotionModel::load_io(const Wires& w) {
 }
 
 std::uint32_t MotionModel::read_io(std::uint32_t adr) const {
+  if (!build_.inputs) return 0;
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, const char* r) {
       return std::uint32_t(get(kIo + r) != 0) << field_of("STATUS", f).lsb;

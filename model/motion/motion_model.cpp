@@ -132,9 +132,13 @@ CmdFields entry_fields(const std::vector<std::uint32_t>& words) {
   return f;
 }
 
-MotionModel::MotionModel(int depth_log2)
-    : depth_log2_(depth_log2), mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
-  if (depth_log2 < 1 || depth_log2 > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");
+MotionModel::MotionModel(int depth_log2) : MotionModel(Build{depth_log2, true}) {}
+
+MotionModel::MotionModel(const Build& build)
+    : build_(build),
+      depth_log2_(build.depth_log2),
+      mem_(std::size_t{1} << build.depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
+  if (depth_log2_ < 1 || depth_log2_ > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");
 }
 
 std::uint64_t MotionModel::get(std::string_view name) const { return r_[breg(name)]; }
@@ -191,7 +195,8 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
            std::uint32_t(depth_log2_) << std::uint32_t(field_of("CONFIG", "depth_log2").lsb) |
            std::uint32_t(kEntryRows) << std::uint32_t(field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
-           std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb);
+           std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb) |
+           std::uint32_t(build_.inputs) << std::uint32_t(field_of("CONFIG", "inputs").lsb);
   }
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };

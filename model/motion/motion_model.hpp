@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/datapath/core_model.hpp"
+#include "model/motion/build.hpp"
 #include "model/motion/bus_wires.hpp"
 #include "model/motion/motion_map.hpp"
 #include "model/motion/pacer.hpp"
@@ -312,13 +313,15 @@ StageEdge stage_edge(const StageRegs& r, const StageTimings& t, bool step_in, bo
 
 class MotionModel {
  public:
-  explicit MotionModel(int depth_log2 = kMaxDepthLog2);
+  explicit MotionModel(int depth_log2 = kMaxDepthLog2);  // with every choice's default but the depth
+  explicit MotionModel(const Build& build);
   // One rising edge with these inputs (wb_stall_o of this cycle is outputs().stall).
   void edge(const BlockInputs& in);
   BlockOutputs outputs() const;
   const BlockRegs& regs() const { return r_; }
   const Signals& core() const { return core_.state(); }
   int depth_log2() const { return depth_log2_; }
+  const Build& build() const { return build_; }
   // What the last edge did: the core took a command; a bus read returned (with ack).
   bool took() const { return took_; }
   // The core's ce_i on the last edge (the feed and the stages let it go on), and whether
@@ -371,6 +374,7 @@ class MotionModel {
   InputRegs input(std::size_t i) const;
   std::uint32_t read_io(std::uint32_t adr) const;
 
+  Build build_;
   int depth_log2_;
   CoreModel core_;
   Pacer pacer_;

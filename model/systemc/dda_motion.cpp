@@ -32,10 +32,11 @@ cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
 
 }  // namespace
 
-dda_motion::dda_motion(sc_core::sc_module_name name, int depth_log2)
+dda_motion::dda_motion(sc_core::sc_module_name name, const motion::Build& build)
     : sc_core::sc_module(name),
-      depth_log2_(depth_log2),
-      mem_(std::size_t{1} << depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)),
+      build_(build),
+      depth_log2_(build.depth_log2),
+      mem_(std::size_t{1} << build.depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)),
       rd_row_q(motion::kRowWords, 0),
       row0_q(motion::kRowWords, 0) {
   u_core.clk_i(clk_i);
@@ -89,6 +90,7 @@ void dda_motion::comb() {
   const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush || iow.io_hard.read();
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
+  io_rst_n.write(rst_ni.read() && build_.inputs);  // u_io not built: held in reset
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
   // A timing written on this edge holds the core once (the stages' look-ahead used the old).
   const bool wr = req && wb_we_i.read();
@@ -147,7 +149,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            std::uint32_t(depth_log2_) << std::uint32_t(motion::field_of("CONFIG", "depth_log2").lsb) |
            std::uint32_t(motion::kEntryRows) << std::uint32_t(motion::field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(motion::field_of("CONFIG", "acc_width").lsb) |
-           std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb);
+           std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb) |
+           std::uint32_t(build_.inputs) << std::uint32_t(motion::field_of("CONFIG", "inputs").lsb);
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "model/motion/build.hpp"
 #include "model/motion/motion_map.hpp"
 #include "model/systemc/dda_core.hpp"
 #include "model/systemc/dda_motion_io.hpp"
@@ -55,7 +56,9 @@ SC_MODULE(dda_motion) {
   sc_core::sc_out<bool> step_x_o, step_y_o, dir_x_o, dir_y_o, step_z_o, dir_z_o, busy_o, irq_o;
 
   SC_HAS_PROCESS(dda_motion);
-  dda_motion(sc_core::sc_module_name name, int depth_log2);
+  // The build-time choices (motion::Build, model/motion/build.hpp) as rtl/dda_motion.v's
+  // parameters: without the inputs, u_io is held in reset.
+  dda_motion(sc_core::sc_module_name name, const motion::Build& build);
 
   dda_core u_core{"u_core"};
   dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"}, u_sz{"u_sz"};
@@ -81,6 +84,7 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<bool> err_hard_q{"err_hard_q"}, err_watchdog_q{"err_watchdog_q"};
 
  private:
+  motion::Build build_;
   int depth_log2_;
   std::vector<std::vector<std::uint32_t>> mem_;
   std::vector<std::uint32_t> rd_row_q, row0_q;  // the RAM output and the row 0 kept (words)
@@ -92,6 +96,7 @@ SC_MODULE(dda_motion) {
       stepped{"stepped"}, pace_iterate{"pace_iterate"}, pace_halt{"pace_halt"};
   sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
       norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
+  sc_core::sc_signal<bool> io_rst_n{"io_rst_n"};  // u_io's reset
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};

@@ -72,7 +72,7 @@ void dda_motion::bind_pace() {
 
 void dda_motion::bind_io() {
   u_io.clk_i(clk_i);
-  u_io.rst_ni(rst_ni);
+  u_io.rst_ni(io_rst_n);
   u_io.estop_ni(estop_ni);
   u_io.limit_i(limit_i);
   u_io.home_i(home_i);

@@ -46,8 +46,8 @@ void bind_master(B& b, BridgeWires& w) {
 }
 }  // namespace
 
-dda_motion_axil::dda_motion_axil(sc_core::sc_module_name name, int depth_log2)
-    : sc_core::sc_module(name), u_motion("u_motion", depth_log2) {
+dda_motion_axil::dda_motion_axil(sc_core::sc_module_name name, const motion::Build& build)
+    : sc_core::sc_module(name), u_motion("u_motion", build) {
   bind_motion(*this, u_motion, w);
   bind_master(u_bridge, w);
   u_bridge.clk_i(clk_i);
@@ -71,8 +71,8 @@ dda_motion_axil::dda_motion_axil(sc_core::sc_module_name name, int depth_log2)
   u_bridge.s_rresp_o(s_rresp_o);
 }
 
-dda_motion_spi::dda_motion_spi(sc_core::sc_module_name name, int depth_log2)
-    : sc_core::sc_module(name), u_motion("u_motion", depth_log2) {
+dda_motion_spi::dda_motion_spi(sc_core::sc_module_name name, const motion::Build& build)
+    : sc_core::sc_module(name), u_motion("u_motion", build) {
   bind_motion(*this, u_motion, w);
   bind_master(u_bridge, w);
   u_bridge.clk_i(clk_i);

@@ -29,7 +29,7 @@ SC_MODULE(dda_motion_axil) {
   sc_core::sc_out<bool> s_awready_o, s_wready_o, s_bvalid_o, s_arready_o, s_rvalid_o;
   sc_core::sc_out<std::uint32_t> s_bresp_o, s_rdata_o, s_rresp_o;
 
-  dda_motion_axil(sc_core::sc_module_name name, int depth_log2);
+  dda_motion_axil(sc_core::sc_module_name name, const motion::Build& build);
   dda_axil u_bridge{"u_bridge"};
   dda_motion u_motion;
   BridgeWires w;
@@ -44,7 +44,7 @@ SC_MODULE(dda_motion_spi) {
   sc_core::sc_out<bool> spi_miso_o, spi_miso_oe_o;
 
   SC_HAS_PROCESS(dda_motion_spi);
-  dda_motion_spi(sc_core::sc_module_name name, int depth_log2);
+  dda_motion_spi(sc_core::sc_module_name name, const motion::Build& build);
   dda_spi u_bridge{"u_bridge"};
   dda_motion u_motion;
   BridgeWires w;

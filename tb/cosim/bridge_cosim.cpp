@@ -142,17 +142,17 @@ struct BridgeCosim::Sim {
 };
 
 BridgeCosim::BridgeCosim(Bus bus)
-    : sim_(std::make_unique<Sim>()), bus_(bus), model_(kHarnessDepthLog2), bridge_(make_bridge(bus)) {
+    : sim_(std::make_unique<Sim>()), bus_(bus), model_(harness_build()), bridge_(make_bridge(bus)) {
   Sim& s = *sim_;
   std::string rtl_top;
   if (bus == Bus::axil) {
-    s.sc_axil = std::make_unique<sc::dda_motion_axil>("sc_bdut", kHarnessDepthLog2);
+    s.sc_axil = std::make_unique<sc::dda_motion_axil>("sc_bdut", harness_build());
     s.rtl_axil = std::make_unique<Vdda_motion_axil_sc>("rtl_bdut");
     s.bind_axil(*s.sc_axil, s.sc_out);
     s.bind_axil(*s.rtl_axil, s.rtl_out);
     rtl_top = std::string(s.rtl_axil->name()) + ".dda_motion_axil";
   } else if (bus == Bus::spi) {
-    s.sc_spi = std::make_unique<sc::dda_motion_spi>("sc_bdut", kHarnessDepthLog2);
+    s.sc_spi = std::make_unique<sc::dda_motion_spi>("sc_bdut", harness_build());
     s.rtl_spi = std::make_unique<Vdda_motion_spi_sc>("rtl_bdut");
     s.bind_spi(*s.sc_spi, s.sc_out);
     s.bind_spi(*s.rtl_spi, s.rtl_out);

@@ -53,8 +53,8 @@ void MotionCosim::bind(M& m, Ports& p) {
   m.irq_o(p.irq);
 }
 
-MotionCosim::MotionCosim() : model_(kHarnessDepthLog2) {
-  sc_ = std::make_unique<sc::dda_motion>("sc_dut", kHarnessDepthLog2);
+MotionCosim::MotionCosim() : model_(harness_build()) {
+  sc_ = std::make_unique<sc::dda_motion>("sc_dut", harness_build());
   rtl_ = std::make_unique<Vdda_motion_sc>("rtl_dut");
   bind(*sc_, sc_out_);
   bind(*rtl_, rtl_out_);

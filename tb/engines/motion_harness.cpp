@@ -251,7 +251,7 @@ class MotionHarness::TopOf : public Top {
 };
 
 MotionHarness::MotionHarness(const std::string& vcd, Bus bus)
-    : ctx_(std::make_unique<VerilatedContext>()), model_(kHarnessDepthLog2), bridge_(make_bridge(bus)), bus_(bus) {
+    : ctx_(std::make_unique<VerilatedContext>()), model_(harness_build()), bridge_(make_bridge(bus)), bus_(bus) {
   ctx_->traceEverOn(!vcd.empty());
   // Verilator (5.006) files a model's scopes under the thread's current context when
   // the model is built and looks them up there again when it is destroyed: make it this

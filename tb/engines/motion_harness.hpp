@@ -23,7 +23,11 @@ namespace dda::motion {
 // The queue depth the harness' RTL is verilated with (-GDepthLog2, set once in
 // tb/CMakeLists.txt): small in the tests' harness, so that they fill it; the RTL's
 // default in the dda command's.
+// The build the harness's verilated block is made with (dda_motion_harness_lib in
+// cmake/dda_rtl.cmake): its queue depth and whether the machine inputs are built in.
 inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
+inline constexpr bool kHarnessInputs = DDA_MOTION_TEST_INPUTS != 0;
+inline Build harness_build() { return Build{kHarnessDepthLog2, kHarnessInputs}; }
 
 // The block's registers (kBlockRegs) and the core's register table of a Verilated
 // dda_motion, by name below `scope` (e.g. "dut.dda_motion"). Throws GuardError naming a

@@ -66,6 +66,17 @@ void InputNoise::hold(std::uint32_t active, int cycles) {
 const char* InputNoise::trip() {
   const auto status = [&](std::string_view f) { return get_field("STATUS", f, d_.read("STATUS")) != 0; };
   const auto fail = [](const std::string& what) { throw GuardError("input noise: " + what); };
+  if (get_field("CONFIG", "inputs", d_.read("CONFIG")) == 0) {
+    // A block built without its inputs: every input held active stops nothing.
+    m_.idle(int(rng_() % 300));
+    forced_ = kAll;
+    m_.idle(switch_clocks() + int(probe_filter_) + 3 + int(rng_() % 20));
+    d_.wait_rest();  // the batch's motion runs to its end
+    forced_ = 0;
+    if (status("err") || status("aborted") || d_.read("TRIP") != 0 || d_.read("INPUTS") != 0)
+      fail("an input acted on a block built without them");
+    return "none built";
+  }
   const std::uint32_t mode = d_.read("IN_MODE");
   const unsigned axis = unsigned(rng_() % 3);
   m_.idle(int(rng_() % 300));

@@ -24,7 +24,9 @@ class InputNoise {
   void each_cycle();
   // A real trip on a random input in the middle of a batch; the block at rest after it,
   // the cause checked and cleared. Returns what tripped ("estop", "limit", "home",
-  // "probe"; a limit or home the batch's motion never ran into may trip nothing).
+  // "probe"; a limit or home the batch's motion never ran into may trip nothing). On a
+  // block built without its inputs (CONFIG.inputs 0): every input held active while the
+  // batch's motion runs to its end, checked to stop and latch nothing ("none built").
   const char* trip();
   std::uint64_t glitches() const { return glitches_; }
 

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block's build-time choices (docs/design.md, "Builds"): the one definition
+// the three engines take them from. Each is a parameter of rtl/dda_motion.v and of its
+// bridged tops (rtl/dda_motion_axil.v, rtl/dda_motion_spi.v) under the name kBuildParams
+// gives, a constructor argument of the SystemC model (sc::dda_motion) and of the
+// reference model (MotionModel), and a field of the CONFIG register the host reads it
+// back from. The bus is the choice of top (Wishbone: dda_motion). `dda build SPEC`
+// prints a build's RTL parameters; scripts/synth takes the same spec (`--build
+// inputs=0,depth_log2=5`), and the "build: ..." tests check the RTL's parameters and the
+// script's against this table.
+#pragma once
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "model/motion/motion_map.hpp"
+
+namespace dda::motion {
+
+struct Build {
+  // The queue holds 2^depth_log2 entries (1 .. kMaxDepthLog2).
+  int depth_log2 = kMaxDepthLog2;
+  // The machine inputs with what they stop, the trip, probe and snapshot latches and the
+  // cycle counter (rtl/dda_motion_io.v, u_io). Without them u_io is held in reset (its
+  // registers keep their reset values, so every engine has the same registers in every
+  // build, and synthesis keeps none of them): the pins are not read, the registers IN_*,
+  // INPUTS, TRIP, LATCH_*, PROBE_*, SNAP_* read 0 and take no write, CTRL.snapshot and
+  // CTRL.probe_arm do nothing and STATUS' input bits stay 0.
+  bool inputs = true;
+};
+
+// A choice: its key in a spec and in CONFIG's fields, the RTL parameter, its range.
+struct BuildParam {
+  std::string_view key;  // the spec's key and the CONFIG field
+  std::string_view rtl;  // the parameter of dda_motion
+  int min, max;
+  std::string_view meaning;
+};
+inline constexpr std::array<BuildParam, 2> kBuildParams{{
+    {"depth_log2", "DepthLog2", 1, kMaxDepthLog2, "log2 of the queue depth (entries)"},
+    {"inputs", "Inputs", 0, 1, "1: the machine inputs, their latches and the snapshot are built in"},
+}};
+
+// The value of each kBuildParams entry for a build, in kBuildParams' order.
+std::vector<int> build_values(const Build& b);
+// A spec: comma-separated key=value pairs of kBuildParams' keys, each at most once (an
+// empty spec is the default build). InputError naming the key or value at fault.
+Build parse_build(std::string_view spec);
+// The spec of a build: every key with its value ("depth_log2=7,inputs=1").
+std::string build_spec(const Build& b);
+// The RTL parameters of a build, as `name value` pairs (for chparam and -G).
+std::vector<std::pair<std::string, int>> rtl_params(const Build& b);
+
+}  // namespace dda::motion

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion block's build-time choices (model/motion/build.hpp): the RTL's tops have
+// exactly kBuildParams' parameters, in order; specs parse and refuse as documented.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/datapath/errors.hpp"
+#include "model/motion/build.hpp"
+
+using namespace dda;
+using namespace dda::motion;
+
+namespace {
+
+// The names of a module's parameters (its #( ... ) list) in rtl/FILE.
+std::vector<std::string> rtl_parameters(const std::string& file) {
+  std::ifstream in(std::string(DDA_SOURCE_DIR) + "/rtl/" + file);
+  REQUIRE(in);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const auto start = text.find("#(", text.find("\nmodule "));
+  const auto end = text.find(") (", start);
+  REQUIRE(start != std::string::npos);
+  REQUIRE(end != std::string::npos);
+  const std::string list = text.substr(start, end - start);
+  std::vector<std::string> names;
+  const std::regex param(R"(parameter\s+integer\s+(\w+))");
+  for (auto it = std::sregex_iterator(list.begin(), list.end(), param); it != std::sregex_iterator(); ++it)
+    names.push_back((*it)[1]);
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("build: the block's tops take kBuildParams' parameters, in order", "[build]") {
+  std::vector<std::string> want;
+  for (const auto& p : kBuildParams) want.emplace_back(p.rtl);
+  for (const char* f : {"dda_motion.v", "dda_motion_axil.v", "dda_motion_spi.v"}) {
+    INFO(f);
+    CHECK(rtl_parameters(f) == want);
+  }
+}
+
+TEST_CASE("build: a spec sets the choices it names, the others keep their defaults", "[build]") {
+  const Build d = parse_build("");
+  CHECK(d.depth_log2 == kMaxDepthLog2);
+  CHECK(d.inputs);
+  const Build b = parse_build("inputs=0,depth_log2=3");
+  CHECK(b.depth_log2 == 3);
+  CHECK(!b.inputs);
+  CHECK(build_spec(b) == "depth_log2=3,inputs=0");
+  CHECK(parse_build(build_spec(b)).depth_log2 == 3);
+  const auto p = rtl_params(b);
+  REQUIRE(p.size() == kBuildParams.size());
+  CHECK(p[0] == std::pair<std::string, int>{"DepthLog2", 3});
+  CHECK(p[1] == std::pair<std::string, int>{"Inputs", 0});
+  for (const char* bad : {"inputs", "inputs=2", "inputs=-1", "depth_log2=0", "depth_log2=8", "axes=2",
+                          "inputs=1,inputs=0", "inputs=1x", "inputs=", "inputs=0,"}) {
+    INFO(bad);
+    CHECK_THROWS_AS(parse_build(bad), InputError);
+  }
+}
