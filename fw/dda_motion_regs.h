@@ -32,7 +32,7 @@
 
 #define DDA_MOTION_ID_OFFSET 0x00u  /* RO: identifies the block: 0x44444131 ("DDA1") */
 #define DDA_MOTION_VERSION_OFFSET 0x04u  /* RO: register map version */
-#define DDA_MOTION_CONFIG_OFFSET 0x08u  /* RO: the block's build: entry size, queue depth, widths, the machine inputs */
+#define DDA_MOTION_CONFIG_OFFSET 0x08u  /* RO: the block's build: entry size, queue depth, widths, the machine inputs, the axes */
 #define DDA_MOTION_CTRL_OFFSET 0x0Cu  /* WO: commands to the block (each bit acts when written 1) */
 #define DDA_MOTION_STATUS_OFFSET 0x10u  /* RO: state, queue level, the sticky error and its causes */
 #define DDA_MOTION_IRQ_STATUS_OFFSET 0x14u  /* W1C: interrupt causes (events), write 1 to clear */
@@ -92,6 +92,8 @@
 #define DDA_MOTION_CONFIG_CNT_WIDTH_MASK 0x1F000000u
 #define DDA_MOTION_CONFIG_INPUTS_LSB 29u
 #define DDA_MOTION_CONFIG_INPUTS_MASK 0x20000000u
+#define DDA_MOTION_CONFIG_AXES_LSB 30u
+#define DDA_MOTION_CONFIG_AXES_MASK 0xC0000000u
 #define DDA_MOTION_CTRL_COMMIT_LSB 0u
 #define DDA_MOTION_CTRL_COMMIT_MASK 0x00000001u
 #define DDA_MOTION_CTRL_ABORT_LSB 1u

@@ -56,7 +56,8 @@
 // model/motion/build.hpp) are the parameters.
 module dda_motion #(
   parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
-  parameter integer Inputs    = 1  // 1: the machine inputs, latches and snapshot (u_io) are built in
+  parameter integer Inputs    = 1,  // 1: the machine inputs, latches and snapshot (u_io) are built in
+  parameter integer Axes      = 3   // 3: X, Y, Z; 2: X, Y (no linear axis, Z not built)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,      // synchronous, active low
@@ -204,7 +205,7 @@ module dda_motion #(
   // right above the command.
   localparam integer AxesBit = 32 * `DDA_MOTION_AXES_WORD + `DDA_MOTION_AXES_LSB;
   wire [FW-1:0] entry_feed = entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB +: FW];
-  wire [1:0]    entry_axes = entry_q[AxesBit +: 2];
+  wire [1:0]    entry_axes = Axes == 3 ? entry_q[AxesBit +: 2] : 2'd0;  // (2 axes: the plane on X, Y)
   wire unused_entry = &{1'b0, entry_q[32 * `DDA_MOTION_FEED_WORD + `DDA_MOTION_FEED_LSB - 1:AxesBit + 2],
                        entry_q[32 * `DDA_MOTION_ENTRY_ROWS * RowWords - 1:32 * Words]};
   wire [31:0] entry_cruise = entry_q[32 * `DDA_MOTION_PACE_CRUISE_WORD +: 32];
@@ -232,13 +233,22 @@ module dda_motion #(
                         : advance & ~halt & (feed_q == '0 | acc_sum[FW]);
 
   // ---- the core ----
+  // With 2 axes the core's linear axis is not built: its fields (the command's last, from
+  // jv_z up: jv_z, jr_z, cap_z, cnt_z, dir_z) read as an idle axis's, every one 0 but
+  // cap_z, 1 (motion::idle_linear_axis), so that synthesis keeps none of its logic.
+  localparam integer ZLsb = `DDA_CMD_JV_Z_LSB;
+  localparam integer CapZTop = `DDA_CMD_CAP_Z_LSB + `DDA_CMD_CAP_Z_WIDTH;
+  wire [`DDA_CMD_WIDTH-1:0] core_cmd = Axes == 3 ? entry_q[`DDA_CMD_WIDTH-1:0]
+      : {{(`DDA_CMD_WIDTH - CapZTop){1'b0}}, `DDA_CMD_CAP_Z_WIDTH'(1), {(`DDA_CMD_CAP_Z_LSB - ZLsb){1'b0}},
+         entry_q[ZLsb-1:0]};
+  wire unused_cmd = &{1'b0, entry_q[`DDA_CMD_WIDTH-1:ZLsb]};
   dda_core u_core (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni & ~abort),
     .ce_i        (core_ce),
     .cmd_valid_i (cmd_valid),
     .cmd_ready_o (core_ready),
-    .cmd_i       (entry_q[`DDA_CMD_WIDTH-1:0]),
+    .cmd_i       (core_cmd),
     .step_x_o    (core_step_x),
     .step_y_o    (core_step_y),
     .dir_x_o     (core_dir_x),
@@ -385,8 +395,10 @@ module dda_motion #(
     .step_o(sy_step), .dir_o(sy_dir), .hold_o(sy_hold), .rise_o(sy_rise), .rise_dir_o(sy_rise_dir), .wait_o(sy_wait),
     .tag_left_o(sy_tag_left), .busy_o(sy_busy), .pend_o(sy_pend), .pdir_o(sy_pdir)
   );
+  // (2 axes: Z not built, its stage held in reset)
   dda_stepdir #(.TW(TW)) u_sz (
-    .clk_i(clk_i), .rst_ni(rst_ni), .flush_i(abort), .step_i(r_step[2]), .dir_i(r_dir[2]), .tag_i(core_done),
+    .clk_i(clk_i), .rst_ni(rst_ni & (Axes == 3)), .flush_i(abort), .step_i(r_step[2] & (Axes == 3)),
+    .dir_i(r_dir[2] & (Axes == 3)), .tag_i(core_done & (Axes == 3)),
     .steplen_i(steplen_z_q), .stepspace_i(stepspace_z_q), .dirsetup_i(dirsetup_z_q), .dirhold_i(dirhold_z_q),
     .step_o(sz_step), .dir_o(sz_dir), .hold_o(sz_hold), .rise_o(sz_rise), .rise_dir_o(sz_rise_dir), .wait_o(sz_wait),
     .tag_left_o(sz_tag_left), .busy_o(sz_busy), .pend_o(sz_pend), .pdir_o(sz_pdir)
@@ -440,15 +452,15 @@ module dda_motion #(
         dirsetup_y_q <= wdat[`DDA_MOTION_DIR_Y_DIRSETUP_LSB+:TW];
         dirhold_y_q  <= wdat[`DDA_MOTION_DIR_Y_DIRHOLD_LSB+:TW];
       end
-      if (wr_step_z) begin
+      if (wr_step_z && Axes == 3) begin
         steplen_z_q   <= wdat[`DDA_MOTION_STEP_Z_STEPLEN_LSB+:TW];
         stepspace_z_q <= wdat[`DDA_MOTION_STEP_Z_STEPSPACE_LSB+:TW];
       end
-      if (wr_dir_z) begin
+      if (wr_dir_z && Axes == 3) begin
         dirsetup_z_q <= wdat[`DDA_MOTION_DIR_Z_DIRSETUP_LSB+:TW];
         dirhold_z_q  <= wdat[`DDA_MOTION_DIR_Z_DIRHOLD_LSB+:TW];
       end
-      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wdat[5:0];
+      if (wr && adr == `DDA_MOTION_POLARITY_ADDR) polarity_q <= wdat[5:0] & (Axes == 3 ? 6'h3F : 6'h0F);
     end
   end
 
@@ -531,7 +543,7 @@ module dda_motion #(
       // on the edge of a preset counts from the preset value, so none is lost.
       pos_x_q <= (wr_pos_x ? wdat : pos_x_q) + dx;
       pos_y_q <= (wr_pos_y ? wdat : pos_y_q) + dy;
-      pos_z_q <= (wr_pos_z ? wdat : pos_z_q) + dz;
+      if (Axes == 3) pos_z_q <= (wr_pos_z ? wdat : pos_z_q) + dz;
     end
   end
   assign irq_o = |(irq_status_q & irq_enable_q);
@@ -542,7 +554,7 @@ module dda_motion #(
   // build. It then stops nothing, latches nothing and reads 0; the pins are not read.
   wire        err_estop, err_limit, probe_armed, probed;
   wire [31:0] io_rd;
-  dda_motion_io #(.LW(LW)) u_io (
+  dda_motion_io #(.LW(LW), .Axes(Axes)) u_io (
     .clk_i        (clk_i),
     .rst_ni       (rst_ni & (Inputs != 0)),
     .estop_ni     (estop_ni),
@@ -589,6 +601,7 @@ module dda_motion #(
         rd[`DDA_MOTION_CONFIG_ACC_WIDTH_LSB+:`DDA_MOTION_CONFIG_ACC_WIDTH_WIDTH]     = `DDA_ACC_WIDTH;
         rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
         rd[`DDA_MOTION_CONFIG_INPUTS_LSB]                                           = Inputs != 0;
+        rd[`DDA_MOTION_CONFIG_AXES_LSB+:`DDA_MOTION_CONFIG_AXES_WIDTH]               = `DDA_MOTION_CONFIG_AXES_WIDTH'(Axes);
       end
       `DDA_MOTION_STATUS_ADDR: begin
         rd[`DDA_MOTION_STATUS_BUSY_LSB]         = busy;

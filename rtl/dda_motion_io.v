@@ -24,7 +24,8 @@
 `include "dda_motion_regs.vh"
 
 module dda_motion_io #(
-  parameter integer LW = 8  // queue level bits
+  parameter integer LW   = 8,  // queue level bits
+  parameter integer Axes = 3   // the block's (2: the Z limits and home not built, held in reset)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,
@@ -113,15 +114,15 @@ module dda_motion_io #(
                               .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[3]), .rise_o(rise[3]));
   dda_input #(.FW(SW)) u_lyp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[4]), .invert_i(invert[4]),
                               .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[4]), .rise_o(rise[4]));
-  dda_input #(.FW(SW)) u_lzn (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[5]), .invert_i(invert[5]),
+  dda_input #(.FW(SW)) u_lzn (.clk_i(clk_i), .rst_ni(rst_ni & (Axes == 3)), .pin_i(pins[5]), .invert_i(invert[5]),
                               .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[5]), .rise_o(rise[5]));
-  dda_input #(.FW(SW)) u_lzp (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[6]), .invert_i(invert[6]),
+  dda_input #(.FW(SW)) u_lzp (.clk_i(clk_i), .rst_ni(rst_ni & (Axes == 3)), .pin_i(pins[6]), .invert_i(invert[6]),
                               .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[6]), .rise_o(rise[6]));
   dda_input #(.FW(SW)) u_hx (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[7]), .invert_i(invert[7]),
                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[7]), .rise_o(rise[7]));
   dda_input #(.FW(SW)) u_hy (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[8]), .invert_i(invert[8]),
                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[8]), .rise_o(rise[8]));
-  dda_input #(.FW(SW)) u_hz (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[9]), .invert_i(invert[9]),
+  dda_input #(.FW(SW)) u_hz (.clk_i(clk_i), .rst_ni(rst_ni & (Axes == 3)), .pin_i(pins[9]), .invert_i(invert[9]),
                              .tick_i(sw_tick), .filter_i(filt_sw_q), .level_o(lvl[9]), .rise_o(rise[9]));
   dda_input #(.FW(FW)) u_probe (.clk_i(clk_i), .rst_ni(rst_ni), .pin_i(pins[10]), .invert_i(invert[10]),
                                 .tick_i(1'b1), .filter_i(filt_probe_q), .level_o(lvl[10]), .rise_o(rise[10]));

@@ -54,15 +54,36 @@ TEST_CASE("build: a spec sets the choices it names, the others keep their defaul
   const Build b = parse_build("inputs=0,depth_log2=3");
   CHECK(b.depth_log2 == 3);
   CHECK(!b.inputs);
-  CHECK(build_spec(b) == "depth_log2=3,inputs=0");
+  CHECK(b.axes == 3);
+  CHECK(build_spec(b) == "depth_log2=3,inputs=0,axes=3");
   CHECK(parse_build(build_spec(b)).depth_log2 == 3);
   const auto p = rtl_params(b);
   REQUIRE(p.size() == kBuildParams.size());
   CHECK(p[0] == std::pair<std::string, int>{"DepthLog2", 3});
   CHECK(p[1] == std::pair<std::string, int>{"Inputs", 0});
-  for (const char* bad : {"inputs", "inputs=2", "inputs=-1", "depth_log2=0", "depth_log2=8", "axes=2",
-                          "inputs=1,inputs=0", "inputs=1x", "inputs=", "inputs=0,"}) {
+  CHECK(p[2] == std::pair<std::string, int>{"Axes", 3});
+  CHECK(parse_build("axes=2").axes == 2);
+  for (const char* bad : {"inputs", "inputs=2", "inputs=-1", "depth_log2=0", "depth_log2=8", "axes=1", "axes=4",
+                          "lathe=1", "inputs=1,inputs=0", "inputs=1x", "inputs=", "inputs=0,"}) {
     INFO(bad);
     CHECK_THROWS_AS(parse_build(bad), InputError);
+  }
+}
+
+TEST_CASE("build: the core's linear axis is the command's last fields, idle as a block of two axes reads it",
+          "[build]") {
+  // The RTL masks the fields from jv_z up (rtl/dda_motion.v, core_cmd): they must be
+  // the last, in the order jv_z, jr_z, cap_z, cnt_z, dir_z.
+  const std::size_t n = hw::kCmdFields.size();
+  const std::array<std::string_view, 5> z{{"jv_z", "jr_z", "cap_z", "cnt_z", "dir_z"}};
+  for (std::size_t i = 0; i < z.size(); ++i) CHECK(hw::kCmdFields[n - z.size() + i].name == z[i]);
+  for (std::size_t i = 0; i + z.size() < n; ++i) CHECK(hw::kCmdFields[i].name.find("_z") == std::string_view::npos);
+  CmdFields c{};
+  for (std::size_t i = 0; i < n; ++i) c[i] = 5 + i;
+  const CmdFields idle = idle_linear_axis(c);
+  for (std::size_t i = 0; i < n; ++i) {
+    INFO(hw::kCmdFields[i].name);
+    const std::string_view name = hw::kCmdFields[i].name;
+    CHECK(idle[i] == (i + z.size() < n ? c[i] : name == "cap_z" ? 1u : 0u));
   }
 }

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-// The motion block built without its machine inputs (motion::Build::inputs = 0;
-// docs/design.md "Builds"): the reference model, the SystemC model and the RTL verilated
-// with the build's parameters, side by side every cycle (MotionCosim). The block reads
-// CONFIG.inputs 0, an input held active stops and latches nothing, the input registers
-// read 0 and take no write; the random work of the default build runs on it (its input
-// trips replaced by inputs held active that must act on nothing), and a paced line ends
-// on its end point with the E-stop and every limit held active.
+// The motion block's builds other than the default (motion::Build; docs/design.md
+// "Builds"): the reference model, the SystemC model and the RTL verilated with the
+// build's parameters, side by side every cycle (MotionCosim). One program per build
+// (tests/CMakeLists.txt), each registering its own build's cases:
+//   without the machine inputs: CONFIG.inputs reads 0, an input held active stops and
+//     latches nothing, the input registers read 0 and take no write; the random work of
+//     the default build runs on it (its input trips replaced by inputs held active that
+//     must act on nothing), and a paced line ends on its end point with the E-stop and
+//     every limit held active;
+//   the lathe's, two axes with the inputs: CONFIG.axes reads 2, Z's registers read 0
+//     and take no write, an entry's linear axis and axes field are not read (a 3-D line
+//     queued as is moves X and Y only, Z's pins stay low), a Z limit held active stops
+//     nothing while an X limit does; the random work runs on it (planar arcs only).
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 #include <systemc>
@@ -13,6 +19,7 @@
 #include "host/driver/motion_driver.hpp"
 #include "host/planner/planner.hpp"
 #include "host/speed/pace_plan.hpp"
+#include "model/datapath/errors.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/measure/pace_report.hpp"
 #include "tb/monitors/bus_monitors.hpp"
@@ -25,6 +32,7 @@ int sc_main(int argc, char* argv[]) { return main(argc, argv); }
 using namespace dda;
 using namespace dda::motion;
 
+#if DDA_MOTION_TEST_INPUTS == 0
 namespace {
 
 // Every input active at the pins: the E-stop low, the others high.
@@ -84,14 +92,94 @@ TEST_CASE("build: without the inputs, the three engines equal and an active inpu
   }
 }
 
-TEST_CASE("build: without the inputs, 40 random arcs, the three engines equal every cycle", "[motion][cosim][build]") {
+TEST_CASE("build: without the inputs, 24 random arcs, the three engines equal every cycle", "[motion][cosim][build]") {
   const std::uint64_t seed = test_seed(79);
   INFO("seed " << seed << " (DDA_SEED reruns it)");
   MotionCosim h;
-  const MixStats st = run_motion_mix(h, seed, 40, true);
+  const MixStats st = run_motion_mix(h, seed, 24, true);
   INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
-  CHECK(st.arcs == 40);
+  CHECK(st.arcs == 24);
   CHECK(st.position_checks > 0);
   CHECK(st.paced_pieces > 0);
   CHECK(st.input_trips > 0);  // inputs held active, checked to act on nothing
 }
+#endif
+
+#if DDA_MOTION_TEST_AXES == 2
+TEST_CASE("build: two axes, the three engines equal, Z not built", "[motion][cosim][build]") {
+  STATIC_REQUIRE(kHarnessAxes == 2);
+  MotionCosim h;
+  WishboneMaster m(h, 3, true, 10);
+  MotionDriver d(m, 4);
+  h.set_reset(false);
+  m.idle(2);
+  h.set_reset(true);
+  m.idle(2);
+  CHECK(get_field("CONFIG", "axes", d.read("CONFIG")) == 2);
+  CHECK(get_field("CONFIG", "inputs", d.read("CONFIG")) == 1);
+  d.set_timings('z', StageTimings{5, 5, 5, 5});
+  d.set_timings('x', StageTimings{2, 2, 1, 1});
+  d.set_polarity(0x3F);
+  CHECK(d.read("STEP_Z") == 0);
+  CHECK(d.read("DIR_Z") == 0);
+  CHECK(d.read("POLARITY") == 0x0F);
+  d.set_polarity(0);
+  d.preset(Point{100, 200, 300});
+  CHECK(d.position() == Point{100, 200, 0});
+  // A 3-D line queued as is: the core's linear axis is not read, Z never steps.
+  const Plan line = plan_line(Point{100, 200, 0}, Point{400, 50, 250}, Preload::Half);
+  for (const auto& p : line.pieces) d.queue(p.cmd);
+  std::uint64_t z_edges = 0;
+  for (int i = 0; i < 20000; ++i) {
+    m.idle(1);
+    z_edges += h.outputs().step_z || h.outputs().dir_z;
+  }
+  d.drain();
+  CHECK(z_edges == 0);
+  CHECK(d.position() == Point{400, 50, 0});
+  // An axes field is not read: a line queued with axes 1 (the core's X on the block's Y)
+  // runs on X and Y as queued with 0.
+  const Plan turned = plan_line(Point{400, 50, 0}, Point{450, 80, 0}, Preload::Half);
+  for (const auto& p : turned.pieces) d.queue(p.cmd, 0, 1);
+  d.drain();
+  CHECK(d.position() == Point{450, 80, 0});
+  // A driver that has read the build refuses both, before a word is written.
+  d.read_build();
+  REQUIRE(d.axes() == 2);
+  CHECK_THROWS_AS(d.queue(line.pieces.front().cmd), GuardError);
+  CHECK_THROWS_AS(d.queue(turned.pieces.front().cmd, 0, 1), GuardError);
+  CHECK(get_field("STATUS", "empty", d.read("STATUS")) == 1);
+  // A Z limit held active stops nothing; an X limit does.
+  d.set_inputs(0, 1, 1, 0, 0);
+  MachinePins pins;
+  pins.limit = 0x30;  // z-, z+
+  h.set_pins(pins);
+  const Plan back = plan_line(Point{450, 80, 0}, Point{300, 0, 0}, Preload::Half);
+  for (const auto& p : back.pieces) d.queue(p.cmd);
+  d.drain();
+  CHECK(d.position() == Point{300, 0, 0});
+  CHECK(get_field("STATUS", "err_limit", d.read("STATUS")) == 0);
+  CHECK(d.read("INPUTS") == 0);
+  pins.limit = 0x03;  // x-, x+
+  h.set_pins(pins);
+  m.idle(20);
+  const Plan more = plan_line(Point{300, 0, 0}, Point{200, 10, 0}, Preload::Half);
+  for (const auto& p : more.pieces) d.queue(p.cmd);
+  m.idle(5000);
+  CHECK(get_field("STATUS", "err_limit", d.read("STATUS")) == 1);
+  CHECK(d.position().x == 300);
+}
+
+TEST_CASE("build: two axes, 32 random planar arcs, the three engines equal every cycle", "[motion][cosim][build]") {
+  const std::uint64_t seed = test_seed(83);
+  INFO("seed " << seed << " (DDA_SEED reruns it)");
+  MotionCosim h;
+  const MixStats st = run_motion_mix(h, seed, 32, false);
+  INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
+  CHECK(st.arcs == 32);
+  CHECK(st.position_checks > 0);
+  CHECK(st.paced_pieces > 0);
+  CHECK(st.spatial == 0);
+  CHECK(st.pulses_z == 0);
+}
+#endif

@@ -19,6 +19,8 @@ std::uint32_t field_bit(std::string_view reg, std::string_view field) { return 1
 
 void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const PaceEntry& pace,
                          std::uint32_t ctrl_also) {
+  if (axes_ == 2 && (c.cnt_z != 0 || axes != 0))
+    throw GuardError("motion driver: the block has two axes (CONFIG.axes): no Z motion or axes field");
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
   const std::vector<std::uint32_t> w = entry_words(c, feed, axes, pace);
   std::vector<std::size_t> order(w.size());
@@ -27,6 +29,8 @@ void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const P
   for (const std::size_t k : order) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
   m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit") | ctrl_also);
 }
+
+void MotionDriver::read_build() { axes_ = int(get_field("CONFIG", "axes", m_.read(reg_offset("CONFIG")))); }
 
 void MotionDriver::drain(int max_polls) {
   for (int i = 0; i < max_polls; ++i) {

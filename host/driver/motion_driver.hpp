@@ -62,11 +62,17 @@ class MotionDriver {
   // Until the block is at rest: the queue empty, the core idle, no soft stop running;
   // throws GuardError after max_polls.
   void wait_rest(int max_polls = 1000000);
+  // Reads CONFIG: the block's build (docs/design.md, "Builds"). From then on queue()
+  // refuses (GuardError) what a block of two axes would drop: an entry with Z motion or
+  // an axes field. Until then the driver takes the block for one of three axes.
+  void read_build();
+  int axes() const { return axes_; }
 
  private:
   BusMaster& m_;
   std::mt19937_64 rng_;
   bool shuffle_;
+  int axes_ = 3;
 };
 
 }  // namespace dda::motion

@@ -16,6 +16,7 @@ namespace {
 int get(const Build& b, std::string_view key) {
   if (key == "depth_log2") return b.depth_log2;
   if (key == "inputs") return b.inputs ? 1 : 0;
+  if (key == "axes") return b.axes;
   throw std::logic_error(fmt::format("build: no member for '{}'", key));
 }
 void set(Build& b, std::string_view key, int v) {
@@ -23,6 +24,8 @@ void set(Build& b, std::string_view key, int v) {
     b.depth_log2 = v;
   else if (key == "inputs")
     b.inputs = v != 0;
+  else if (key == "axes")
+    b.axes = v;
   else
     throw std::logic_error(fmt::format("build: no member for '{}'", key));
 }
@@ -81,6 +84,18 @@ std::vector<std::pair<std::string, int>> rtl_params(const Build& b) {
   const auto v = build_values(b);
   for (std::size_t i = 0; i < kBuildParams.size(); ++i) r.emplace_back(std::string(kBuildParams[i].rtl), v[i]);
   return r;
+}
+
+bool input_built(const Input& in, const Build& b) {
+  return b.inputs && (b.axes == 3 || in.name.find("_z") == std::string_view::npos);
+}
+
+CmdFields idle_linear_axis(CmdFields c) {
+  for (std::size_t i = 0; i < hw::kCmdFields.size(); ++i) {
+    const std::string_view n = hw::kCmdFields[i].name;
+    if (n.size() > 2 && n.substr(n.size() - 2) == "_z") c[i] = n == "cap_z" ? 1 : 0;
+  }
+  return c;
 }
 
 }  // namespace dda::motion

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "model/datapath/core_model.hpp"
 #include "model/motion/motion_map.hpp"
 
 namespace dda::motion {
@@ -29,6 +30,15 @@ struct Build {
   // INPUTS, TRIP, LATCH_*, PROBE_*, SNAP_* read 0 and take no write, CTRL.snapshot and
   // CTRL.probe_arm do nothing and STATUS' input bits stay 0.
   bool inputs = true;
+  // The block's axes: 3 (X, Y, Z), or 2 (X and Y: a lathe's two axes or a plotter's).
+  // With 2, the core's linear axis, the Z stage, POS_Z, STEP_Z and DIR_Z, the Z bits of
+  // POLARITY and the Z limit and home inputs are not built: each is held at its reset
+  // value (the same registers in every engine and build; synthesis keeps none of them).
+  // The core reads an entry's linear-axis fields as an idle axis's
+  // (idle_linear_axis), the block reads its axes field as 0 (the core's plane on X and
+  // Y), STEP_Z, DIR_Z and POS_Z read 0 and take no write, step_z_o and dir_z_o stay low.
+  // A host must not queue an entry with Z motion or an axes field on such a block.
+  int axes = 3;
 };
 
 // A choice: its key in a spec and in CONFIG's fields, the RTL parameter, its range.
@@ -38,9 +48,10 @@ struct BuildParam {
   int min, max;
   std::string_view meaning;
 };
-inline constexpr std::array<BuildParam, 2> kBuildParams{{
+inline constexpr std::array<BuildParam, 3> kBuildParams{{
     {"depth_log2", "DepthLog2", 1, kMaxDepthLog2, "log2 of the queue depth (entries)"},
     {"inputs", "Inputs", 0, 1, "1: the machine inputs, their latches and the snapshot are built in"},
+    {"axes", "Axes", 2, 3, "the block's axes: 3 (X, Y, Z) or 2 (X, Y; no linear axis in the core)"},
 }};
 
 // The value of each kBuildParams entry for a build, in kBuildParams' order.
@@ -50,6 +61,13 @@ std::vector<int> build_values(const Build& b);
 Build parse_build(std::string_view spec);
 // The spec of a build: every key with its value ("depth_log2=7,inputs=1").
 std::string build_spec(const Build& b);
+// The core's command as a block of 2 axes hands it: the linear axis' fields (those named
+// *_z, the last of hw::kCmdFields) as an idle axis's, every one 0 but cap_z, 1 (a
+// capacity is never 0: the norm unit divides by it).
+CmdFields idle_linear_axis(CmdFields c);
+// Whether machine input `in` (kInputs) is built: with the inputs, and of an axis built
+// (with 2 axes, the Z limits and home are not).
+bool input_built(const Input& in, const Build& b);
 // The RTL parameters of a build, as `name value` pairs (for chparam and -G).
 std::vector<std::pair<std::string, int>> rtl_params(const Build& b);
 

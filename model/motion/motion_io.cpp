@@ -94,7 +94,9 @@ void MotionModel::io_wires(const MachinePins& pins, Wires& w) const {
     const bool invert = (((pol >> b) & 1u) != 0) != (b == input_bit("estop"));
     const bool probe = b == kProbeBit;
     const std::uint64_t filter = r_[probe ? kFiltProbe : kFiltSw];
-    w.in[i] = input_edge(input(i), ((bits >> b) & 1u) != 0, invert, probe || sw_tick, std::uint32_t(filter));
+    w.in[i] = input_built(kInputs[i], build_)
+                  ? input_edge(input(i), ((bits >> b) & 1u) != 0, invert, probe || sw_tick, std::uint32_t(filter))
+                  : InputEdge{};  // not built: held in reset
     lvl |= std::uint32_t(input(i).lvl) << b;
     rise |= std::uint32_t(w.in[i].rise) << b;
   }

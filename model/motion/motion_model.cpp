@@ -132,13 +132,14 @@ CmdFields entry_fields(const std::vector<std::uint32_t>& words) {
   return f;
 }
 
-MotionModel::MotionModel(int depth_log2) : MotionModel(Build{depth_log2, true}) {}
+MotionModel::MotionModel(int depth_log2) : MotionModel(Build{depth_log2, true, 3}) {}
 
 MotionModel::MotionModel(const Build& build)
     : build_(build),
       depth_log2_(build.depth_log2),
       mem_(std::size_t{1} << build.depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)) {
   if (depth_log2_ < 1 || depth_log2_ > kMaxDepthLog2) throw GuardError("motion model: queue depth out of range");
+  if (build.axes != 2 && build.axes != 3) throw GuardError("motion model: the axes are 2 or 3");
 }
 
 std::uint64_t MotionModel::get(std::string_view name) const { return r_[breg(name)]; }
@@ -196,7 +197,8 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
            std::uint32_t(kEntryRows) << std::uint32_t(field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb) |
-           std::uint32_t(build_.inputs) << std::uint32_t(field_of("CONFIG", "inputs").lsb);
+           std::uint32_t(build_.inputs) << std::uint32_t(field_of("CONFIG", "inputs").lsb) |
+           std::uint32_t(build_.axes) << std::uint32_t(field_of("CONFIG", "axes").lsb);
   }
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
@@ -220,6 +222,7 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
     if (adr == reg_offset(r)) return read_pace(adr);
   std::uint32_t v = 0;
   for (const char axis : kAxes) {
+    if (axis == 'z' && build_.axes == 2) continue;  // not built
     for (const auto& t : kTimingFields) {
       const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
       if (adr == reg_offset(r))
@@ -300,6 +303,10 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.ex = stage_edge(stage('x'), timings('x'), rs[0].first, rs[0].second, w.core_done, w.abort);
   w.ey = stage_edge(stage('y'), timings('y'), rs[1].first, rs[1].second, w.core_done, w.abort);
   w.ez = stage_edge(stage('z'), timings('z'), rs[2].first, rs[2].second, w.core_done, w.abort);
+  if (build_.axes == 2) {  // Z not built: its stage held in reset
+    w.ez = StageEdge{};
+    w.ez.next = stage_reset();
+  }
   // The feed: the core may iterate when no stage holds it and the accumulator carries
   // (a timing written on this edge holds it once: the stages' look-ahead used the old).
   bool wr_timing = false;
@@ -323,7 +330,7 @@ void MotionModel::core_wires(bool ce, Wires& w) const {
   w.head = get("head_q");
   w.tail = get("tail_q");
   w.entry_feed = (mem_[w.head][kFeedWord] >> kFeedLsb) & mask_of(kFeedWidth);
-  w.entry_axes = (mem_[w.head][kAxesWord] >> kAxesLsb) & mask_of(kAxesWidth);
+  w.entry_axes = build_.axes == 3 ? (mem_[w.head][kAxesWord] >> kAxesLsb) & mask_of(kAxesWidth) : 0;
   pace_wires(true, w);
 }
 
@@ -332,7 +339,10 @@ void MotionModel::step_core(bool rst_n, const Wires& w) {
   ci.rst_n = rst_n && !w.abort;
   ci.ce = w.core_ce;
   ci.cmd_valid = w.cmd_valid;
-  if (w.cmd_valid) ci.cmd = entry_fields(mem_[w.head]);
+  if (w.cmd_valid) {
+    ci.cmd = entry_fields(mem_[w.head]);
+    if (build_.axes == 2) ci.cmd = idle_linear_axis(ci.cmd);
+  }
   core_.edge(ci);
 }
 
@@ -408,7 +418,7 @@ void MotionModel::load_positions(const Wires& w) {
   };
   load("POS_X", "pos_x_q", w.ex);
   load("POS_Y", "pos_y_q", w.ey);
-  load("POS_Z", "pos_z_q", w.ez);
+  if (build_.axes == 3) load("POS_Z", "pos_z_q", w.ez);
 }
 
 void MotionModel::load_feed(const Wires& w) {
@@ -429,6 +439,7 @@ void MotionModel::load_feed(const Wires& w) {
 
 void MotionModel::load_settings(const Wires& w) {
   for (const char axis : kAxes) {
+    if (axis == 'z' && build_.axes == 2) continue;  // not built
     for (const auto& t : kTimingFields) {
       const std::string r = std::string(t.reg) + "_" + char(axis - 'a' + 'A');
       if (w.wr && w.adr == reg_offset(r)) {
@@ -436,7 +447,7 @@ void MotionModel::load_settings(const Wires& w) {
       }
     }
   }
-  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = w.wdat & 0x3Fu;
+  if (w.wr && w.adr == reg_offset("POLARITY")) reg("polarity_q") = w.wdat & (build_.axes == 3 ? 0x3Fu : 0x0Fu);
 }
 
 void MotionModel::edge(const BlockInputs& in) {

@@ -34,6 +34,7 @@ cmd_t entry_bits(const std::vector<std::uint32_t>& w) {
 
 dda_motion::dda_motion(sc_core::sc_module_name name, const motion::Build& build)
     : sc_core::sc_module(name),
+      u_io("u_io", build),
       build_(build),
       depth_log2_(build.depth_log2),
       mem_(std::size_t{1} << build.depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)),
@@ -131,8 +132,9 @@ void dda_motion::comb() {
   const std::array<sc_core::sc_signal<bool>*, 3> st{&step_x, &step_y, &step_z}, di{&dir_x, &dir_y, &dir_z};
   std::uint32_t r_step = 0, r_dir = 0;
   for (std::size_t j = 0; j < 3; ++j) {
-    st[j]->write(cs[(j + 3 - route) % 3]);
-    di[j]->write(cd[(j + 3 - route) % 3]);
+    const bool built = j < 2 || build_.axes == 3;  // (2 axes: the Z stage takes nothing)
+    st[j]->write(built && cs[(j + 3 - route) % 3]);
+    di[j]->write(built && cd[(j + 3 - route) % 3]);
     r_step |= std::uint32_t(cs[(j + 3 - route) % 3]) << j;
     r_dir |= std::uint32_t(cd[(j + 3 - route) % 3]) << j;
   }
@@ -150,7 +152,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            std::uint32_t(motion::kEntryRows) << std::uint32_t(motion::field_of("CONFIG", "entry_rows").lsb) |
            std::uint32_t(hw::kAccWidth) << std::uint32_t(motion::field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb) |
-           std::uint32_t(build_.inputs) << std::uint32_t(motion::field_of("CONFIG", "inputs").lsb);
+           std::uint32_t(build_.inputs) << std::uint32_t(motion::field_of("CONFIG", "inputs").lsb) |
+           std::uint32_t(build_.axes) << std::uint32_t(motion::field_of("CONFIG", "axes").lsb);
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
@@ -261,10 +264,22 @@ void dda_motion::seq_ram(const Decode& d) {
   if (d.entry_ok) mem_[d.tail][d.word] = d.dat;
   std::vector<std::uint32_t> words(row0_q);
   words.insert(words.end(), rd_row_q.begin(), rd_row_q.end());
-  entry.write(entry_bits(words));
+  cmd_t bits = entry_bits(words);
+  if (build_.axes == 2) {  // the core's linear axis not built: its fields as an idle axis's
+    CmdFields f{};
+    int off = 0;
+    for (std::size_t i = 0; i < hw::kCmdFields.size(); off += hw::kCmdFields[i].width, ++i)
+      for (int b = 0; b < hw::kCmdFields[i].width; ++b) f[i] |= std::uint64_t(bits[off + b].to_bool()) << b;
+    f = motion::idle_linear_axis(f);
+    off = 0;
+    for (std::size_t i = 0; i < hw::kCmdFields.size(); off += hw::kCmdFields[i].width, ++i)
+      for (int b = 0; b < hw::kCmdFields[i].width; ++b) bits[off + b] = bool((f[i] >> b) & 1u);
+  }
+  entry.write(bits);
   entry_feed.write(
       std::uint32_t((words[motion::kFeedWord] >> motion::kFeedLsb) & ((std::uint64_t{1} << motion::kFeedWidth) - 1)));
-  entry_axes.write((words[motion::kAxesWord] >> motion::kAxesLsb) & ((1u << motion::kAxesWidth) - 1));
+  entry_axes.write(build_.axes == 3 ? (words[motion::kAxesWord] >> motion::kAxesLsb) & ((1u << motion::kAxesWidth) - 1)
+                                    : 0u);
   for (std::size_t i = 0; i < entry_pace.size(); ++i) entry_pace[i].write(words[std::size_t(motion::kPaceWord) + i]);
 }
 
@@ -345,7 +360,7 @@ void dda_motion::seq_status(const Decode& d) {
   // the edge of a preset counts from the preset value, so none is lost.
   pos_x_q.write((d.wr && d.adr == kPosX ? d.wdat : pos_x_q.read()) + dx);
   pos_y_q.write((d.wr && d.adr == kPosY ? d.wdat : pos_y_q.read()) + dy);
-  pos_z_q.write((d.wr && d.adr == kPosZ ? d.wdat : pos_z_q.read()) + dz);
+  if (build_.axes == 3) pos_z_q.write((d.wr && d.adr == kPosZ ? d.wdat : pos_z_q.read()) + dz);
 }
 
 // feed_q, acc_q: the phase accumulator that paces the core; axes_q, route_q: which
@@ -376,9 +391,11 @@ void dda_motion::seq_settings(const Decode& d) {
   for (std::size_t i = 0; i < regs.size(); ++i) {
     const auto& t = motion::kTimingFields[i % motion::kTimingFields.size()];
     const std::string r = std::string(t.reg) + kAxisSuffix[i / motion::kTimingFields.size()];
-    if (d.wr && d.adr == motion::reg_offset(r)) regs[i]->write((d.wdat >> motion::field_of(r, t.name).lsb) & tmask);
+    const bool built = i / motion::kTimingFields.size() < 2 || build_.axes == 3;  // (2 axes: Z's not built)
+    if (built && d.wr && d.adr == motion::reg_offset(r))
+      regs[i]->write((d.wdat >> motion::field_of(r, t.name).lsb) & tmask);
   }
-  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.wdat & 0x3Fu);
+  if (d.wr && d.adr == motion::reg_offset("POLARITY")) polarity_q.write(d.wdat & (build_.axes == 3 ? 0x3Fu : 0x0Fu));
 }
 
 // A feed hold outlasts an abort: a held machine stays held until CTRL.resume.

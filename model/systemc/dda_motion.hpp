@@ -63,7 +63,7 @@ SC_MODULE(dda_motion) {
   dda_core u_core{"u_core"};
   dda_stepdir u_sx{"u_sx"}, u_sy{"u_sy"}, u_sz{"u_sz"};
   dda_pace u_pace{"u_pace", hw::kAccWidth};
-  dda_motion_io u_io{"u_io"};
+  dda_motion_io u_io;
 
   // The block's registers (names and widths as in the RTL and motion::kBlockRegs).
   sc_core::sc_signal<bool> ack_q{"ack_q"}, done_wait_q{"done_wait_q"}, err_q{"err_q"}, err_overflow_q{"err_overflow_q"},
@@ -97,6 +97,7 @@ SC_MODULE(dda_motion) {
   sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
       norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
   sc_core::sc_signal<bool> io_rst_n{"io_rst_n"};  // u_io's reset
+  sc_core::sc_signal<bool> off{"off"};            // never written: the reset and tag of a stage not built
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};

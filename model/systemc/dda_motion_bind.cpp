@@ -22,11 +22,18 @@ void dda_motion::bind_stages() {
                         stw.sz_wait, stw.sz_tag_left, stw.sz_busy, stw.sz_pend, stw.sz_pdir, steplen_z_q, stepspace_z_q,
                         dirsetup_z_q, dirhold_z_q}}) {
     t.s.clk_i(clk_i);
-    t.s.rst_ni(rst_ni);
+    const bool built = &t.s != &u_sz || build_.axes == 3;  // (2 axes: Z's stage held in reset)
+    if (built)
+      t.s.rst_ni(rst_ni);
+    else
+      t.s.rst_ni(off);
     t.s.flush_i(flush);
     t.s.step_i(t.step);
     t.s.dir_i(t.dir);
-    t.s.tag_i(core_done);
+    if (built)
+      t.s.tag_i(core_done);
+    else
+      t.s.tag_i(off);
     t.s.steplen_i(t.steplen);
     t.s.stepspace_i(t.stepspace);
     t.s.dirsetup_i(t.dirsetup);

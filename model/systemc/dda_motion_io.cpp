@@ -12,12 +12,17 @@ constexpr std::uint32_t kTripMask = (1u << motion::kTripBits) - 1;
 
 }  // namespace
 
-dda_motion_io::dda_motion_io(sc_core::sc_module_name name) : sc_core::sc_module(name) {
+dda_motion_io::dda_motion_io(sc_core::sc_module_name name, const motion::Build& build) : sc_core::sc_module(name) {
   for (std::size_t i = 0; i < in_.size(); ++i) {
     in_[i] = std::make_unique<dda_input>(std::string(motion::kInputs[i].inst).c_str());
     dda_input& d = *in_[i];
     d.clk_i(clk_i);
-    d.rst_ni(rst_ni);
+    motion::Build all = build;
+    all.inputs = true;  // (without the inputs the whole of u_io is held in reset)
+    if (motion::input_built(motion::kInputs[i], all))
+      d.rst_ni(rst_ni);
+    else
+      d.rst_ni(off_);
     d.pin_i(pin_[i]);
     d.invert_i(invert_[i]);
     const bool probe = motion::kInputs[i].bit == motion::kProbeBit;

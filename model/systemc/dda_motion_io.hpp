@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "model/motion/build.hpp"
 #include "model/motion/motion_map.hpp"
 #include "model/systemc/dda_input.hpp"
 
@@ -25,7 +26,8 @@ SC_MODULE(dda_motion_io) {
   sc_core::sc_out<std::uint32_t> rd_o;
 
   SC_HAS_PROCESS(dda_motion_io);
-  explicit dda_motion_io(sc_core::sc_module_name name);
+  // The build (motion::Build): with 2 axes the Z limits and home are held in reset.
+  dda_motion_io(sc_core::sc_module_name name, const motion::Build& build);
 
   // The registers (names as in the RTL and motion::kBlockRegs below u_io).
   sc_core::sc_signal<std::uint32_t> pol_q{"pol_q"}, filt_sw_q{"filt_sw_q"}, filt_tick_q{"filt_tick_q"},
@@ -40,6 +42,7 @@ SC_MODULE(dda_motion_io) {
   // The inputs in motion::kInputs' order, named by its instances (u_estop, u_lxn, ...).
   std::array<std::unique_ptr<dda_input>, motion::kInputs.size()> in_;
   std::array<sc_core::sc_signal<bool>, motion::kInputs.size()> pin_, invert_, lvl_, rise_;
+  sc_core::sc_signal<bool> off_{"off"};  // never written: the reset of an input not built
   // The filters' ticks: the switches' (IN_FILTER.tick of the cycle count), the probe's
   // on every clock.
   sc_core::sc_signal<bool> sw_tick_{"sw_tick"}, every_{"every"};

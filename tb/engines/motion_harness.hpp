@@ -24,10 +24,12 @@ namespace dda::motion {
 // tb/CMakeLists.txt): small in the tests' harness, so that they fill it; the RTL's
 // default in the dda command's.
 // The build the harness's verilated block is made with (dda_motion_harness_lib in
-// cmake/dda_rtl.cmake): its queue depth and whether the machine inputs are built in.
+// cmake/dda_rtl.cmake): its queue depth, whether the machine inputs are built in, its
+// axes.
 inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
 inline constexpr bool kHarnessInputs = DDA_MOTION_TEST_INPUTS != 0;
-inline Build harness_build() { return Build{kHarnessDepthLog2, kHarnessInputs}; }
+inline constexpr int kHarnessAxes = DDA_MOTION_TEST_AXES;
+inline Build harness_build() { return Build{kHarnessDepthLog2, kHarnessInputs, kHarnessAxes}; }
 
 // The block's registers (kBlockRegs) and the core's register table of a Verilated
 // dda_motion, by name below `scope` (e.g. "dut.dda_motion"). Throws GuardError naming a

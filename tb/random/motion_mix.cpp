@@ -83,12 +83,15 @@ class Mix {
   WishboneMaster m_;
   MotionDriver d_;
   InputNoise noise_;  // glitches on the machine's inputs every batch, real trips in some
+  int axes_ = 3;      // the block's (CONFIG.axes): with 2, no arc moves the third axis
 };
 
 MixStats Mix::run(std::uint64_t arcs) {
   mon_.set_reset(false);
   m_.idle(2);
   mon_.set_reset(true);
+  d_.read_build();
+  axes_ = d_.axes();
   noise_.configure(true);
   while (st_.arcs < arcs) {
     ++st_.batches;
@@ -124,12 +127,14 @@ MixStats Mix::run(std::uint64_t arcs) {
 
 // The arcs of a batch: one short arc if large, else one to four, no more than the run
 // still needs; a third of the others move the third axis (3-D lines, plunges, helices),
-// turned onto another plane of the block's axes two times in three (the entry's axes).
+// turned onto another plane of the block's axes two times in three (the entry's axes);
+// on a block of two axes, those are planar arcs too.
 std::vector<Plan> Mix::draw_batch(bool large, bool paced, std::uint64_t arcs) {
   std::vector<Plan> batch;
   const std::uint64_t n = large ? 1 : paced ? 1 + rng_() % 2 : 1 + rng_() % 4;
   while (batch.size() < n && st_.arcs + batch.size() < arcs) {
-    RandomArcs& g = large ? short_arcs_ : paced ? paced_arcs_ : rng_() % 3 == 0 ? spatial_ : gen_;
+    const bool spatial = !large && !paced && rng_() % 3 == 0;  // (drawn whatever the axes: the same draws)
+    RandomArcs& g = large ? short_arcs_ : paced ? paced_arcs_ : spatial && axes_ == 3 ? spatial_ : gen_;
     if (auto p = g.next()) {
       st_.spatial += &g == &spatial_;
       if (&g == &spatial_) {
