@@ -143,6 +143,14 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
                 --then "--a 300 --b 200 --angle 30 --preload half --from-theta 10 --to-theta 200"
                 --then "--a 50 --b 20 --preload half --dir cw --center 5,-7 --from-theta 45 --to-theta 45")
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
+# The block's post-synthesis netlist (synth_ice40, Yosys' cell models) on two of those
+# sets, every output every cycle, and the LUTs that drive step_x_o and read data bit 0
+# inverted, which must fail (scripts/netlist-sim.sh): a few minutes of Icarus, so in the
+# long lane (`ctest -L netlist`).
+dda_rtl_test(netlist.post_synthesis NEEDS YOSYS IVERILOG VVP
+             COMMAND ${_dda_scripts}/netlist-sim.sh --mutants 0 ${_dda_bvec}/paper ${_dda_bvec}/abort)
+set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_paper;bvec_abort"
+                     LABELS "rtl;motion;netlist;long" TIMEOUT 900 ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
 # The pacer's comparisons at their thresholds on the bus: on a clock of 2^20 Hz the entry
 # speeds and the acceleration are whole fields, the cruise speed exactly one ramp step
 # above the minimum speed, and two ramp steps less one unit (tests/test_pace.cpp checks
