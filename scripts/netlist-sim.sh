@@ -8,8 +8,9 @@
 # cycle, as scripts/vector-bench.sh --bus does for the RTL.
 #   usage: scripts/netlist-sim.sh [--build SPEC] [--mutants N] [--seed S] SET...
 # The sets must share one bus (their manifests' "bus": the block's top, as in
-# vector-bench.sh) and be of the build synthesized (the default build's sets come from
-# `dda vectors --bus`). --mutants N (0 or more) then shows that the comparison can fail: the netlist
+# vector-bench.sh) and be of the build synthesized: `dda vectors --bus` writes the
+# default build's sets only, so --build is for sets whose behaviour the build does not
+# change (none of Z, none of the inputs). --mutants N (0 or more) then shows that the comparison can fail: the netlist
 # with the LUT that drives step_x_o inverted, with the LUT at the D of the register of
 # read data bit 0 (dat_q[0], Wishbone only) inverted, and N netlists each with one bit of
 # one random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default
@@ -32,6 +33,9 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ $# -ge 1 ] || { echo "usage: $0 [--build SPEC] [--mutants N] [--seed S] SET..." >&2; exit 2; }
+[[ "$mutants" =~ ^(-1|[0-9]+)$ ]] || { echo "netlist-sim: --mutants takes a count, not '$mutants'" >&2; exit 2; }
+[[ "$seed" =~ ^[0-9]+$ ]] || { echo "netlist-sim: --seed takes a whole number, not '$seed'" >&2; exit 2; }
+mkdir -p "$build" && build=$(cd "$build" && pwd)  # (absolute: the script changes folder)
 for tool in yosys iverilog vvp python3; do
   command -v "$tool" >/dev/null || { echo "netlist-sim: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done

@@ -145,8 +145,8 @@ dda_bus_vec_set(queue --a 10 --b 6 --bits 4 --preload zero --pipelined --ce-perc
 dda_bus_vec_set(abort --a 300 --b 200 --preload half --abort-after 400 --seed 5)
 # The block's post-synthesis netlist (synth_ice40, Yosys' cell models) on two of those
 # sets, every output every cycle, and the LUTs that drive step_x_o and read data bit 0
-# inverted, which must fail (scripts/netlist-sim.sh): a few minutes of Icarus, so in the
-# long lane (`ctest -L netlist`).
+# inverted, which must fail (scripts/netlist-sim.sh): about a minute of Yosys and Icarus,
+# so in the long lane (`ctest -L netlist`).
 dda_rtl_test(netlist.post_synthesis NEEDS YOSYS IVERILOG VVP
              COMMAND ${_dda_scripts}/netlist-sim.sh --mutants 0 ${_dda_bvec}/paper ${_dda_bvec}/abort)
 set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_paper;bvec_abort"

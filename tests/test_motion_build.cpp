@@ -90,6 +90,12 @@ TEST_CASE("build: without the inputs, the three engines equal and an active inpu
     INFO(r);
     CHECK(d.read(r) == 0);
   }
+  // A driver that has read the build refuses what would do nothing.
+  d.read_build();
+  CHECK(!d.inputs());
+  CHECK_THROWS_AS(d.arm_probe(), GuardError);
+  CHECK_THROWS_AS(d.snapshot(), GuardError);
+  CHECK_THROWS_AS(d.set_inputs(0, 1, 1, 0), GuardError);
 }
 
 TEST_CASE("build: without the inputs, 24 random arcs, the three engines equal every cycle", "[motion][cosim][build]") {

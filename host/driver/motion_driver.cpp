@@ -30,7 +30,16 @@ void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const P
   m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit") | ctrl_also);
 }
 
-void MotionDriver::read_build() { axes_ = int(get_field("CONFIG", "axes", m_.read(reg_offset("CONFIG")))); }
+void MotionDriver::read_build() {
+  const std::uint32_t config = m_.read(reg_offset("CONFIG"));
+  axes_ = int(get_field("CONFIG", "axes", config));
+  inputs_ = get_field("CONFIG", "inputs", config) != 0;
+}
+
+void MotionDriver::need_inputs(const char* what) const {
+  if (!inputs_)
+    throw GuardError(std::string("motion driver: ") + what + ": the block is built without its inputs (CONFIG.inputs)");
+}
 
 void MotionDriver::drain(int max_polls) {
   for (int i = 0; i < max_polls; ++i) {
@@ -70,10 +79,14 @@ void MotionDriver::hold() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "hold
 void MotionDriver::resume() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "resume")); }
 
 void MotionDriver::clear() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "clear")); }
-void MotionDriver::arm_probe() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "probe_arm")); }
+void MotionDriver::arm_probe() {
+  need_inputs("arm_probe");
+  m_.write(reg_offset("CTRL"), field_bit("CTRL", "probe_arm"));
+}
 
 void MotionDriver::set_inputs(std::uint32_t polarity, std::uint32_t filter_switches, std::uint32_t filter_probe,
                               std::uint32_t mode, std::uint32_t filter_tick) {
+  need_inputs("set_inputs");
   const auto fits = [](std::string_view f, std::uint32_t v) { return v >> field_of("IN_FILTER", f).width == 0; };
   if (polarity >> kNumInputs || !fits("switches", filter_switches) || !fits("probe", filter_probe) ||
       !fits("tick", filter_tick) || mode >> 5)
@@ -86,6 +99,7 @@ void MotionDriver::set_inputs(std::uint32_t polarity, std::uint32_t filter_switc
 }
 
 MotionDriver::Snapshot MotionDriver::snapshot() {
+  need_inputs("snapshot");
   m_.write(reg_offset("CTRL"), field_bit("CTRL", "snapshot"));
   return snapshot_registers();
 }

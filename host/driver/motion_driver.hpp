@@ -64,15 +64,20 @@ class MotionDriver {
   void wait_rest(int max_polls = 1000000);
   // Reads CONFIG: the block's build (docs/design.md, "Builds"). From then on queue()
   // refuses (GuardError) what a block of two axes would drop: an entry with Z motion or
-  // an axes field. Until then the driver takes the block for one of three axes.
+  // an axes field; and set_inputs(), arm_probe() and snapshot() refuse on a block built
+  // without its inputs, where they would do nothing. Until then the driver takes the
+  // block for the default build (three axes, the inputs).
   void read_build();
   int axes() const { return axes_; }
+  bool inputs() const { return inputs_; }
 
  private:
   BusMaster& m_;
   std::mt19937_64 rng_;
   bool shuffle_;
   int axes_ = 3;
+  bool inputs_ = true;
+  void need_inputs(const char* what) const;
 };
 
 }  // namespace dda::motion

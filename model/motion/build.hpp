@@ -5,9 +5,9 @@
 // gives, a constructor argument of the SystemC model (sc::dda_motion) and of the
 // reference model (MotionModel), and a field of the CONFIG register the host reads it
 // back from. The bus is the choice of top (Wishbone: dda_motion). `dda build SPEC`
-// prints a build's RTL parameters; scripts/synth takes the same spec (`--build
-// inputs=0,depth_log2=5`), and the "build: ..." tests check the RTL's parameters and the
-// script's against this table.
+// prints a build's RTL parameters, which scripts/synth and scripts/netlist-sim.sh set for
+// the same spec (`--build inputs=0,depth_log2=5`); the "build: ..." tests check the RTL's
+// parameters against this table.
 #pragma once
 #include <array>
 #include <string>

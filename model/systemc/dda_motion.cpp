@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "model/datapath/errors.hpp"
+
 namespace dda::sc {
 
 namespace {
@@ -40,6 +42,8 @@ dda_motion::dda_motion(sc_core::sc_module_name name, const motion::Build& build)
       mem_(std::size_t{1} << build.depth_log2, std::vector<std::uint32_t>(kEntryWords, 0)),
       rd_row_q(motion::kRowWords, 0),
       row0_q(motion::kRowWords, 0) {
+  if (build.depth_log2 < 1 || build.depth_log2 > motion::kMaxDepthLog2 || (build.axes != 2 && build.axes != 3))
+    throw GuardError("dda_motion: a build out of range (" + motion::build_spec(build) + ")");
   u_core.clk_i(clk_i);
   u_core.rst_ni(core_rst_n);
   u_core.ce_i(core_ce);

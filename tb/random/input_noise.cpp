@@ -28,7 +28,7 @@ void InputNoise::configure(bool redraw) {
   forced_ = glitch_ = 0;
   glitch_left_ = 0;
   const std::uint32_t mode = homing_ << field_of("IN_MODE", "home_x").lsb | std::uint32_t(rng_() % 2);
-  d_.set_inputs(polarity_, filter_, probe_filter_, mode, tick_);
+  if (d_.inputs()) d_.set_inputs(polarity_, filter_, probe_filter_, mode, tick_);
   settle();
   d_.clear();
 }
@@ -73,12 +73,14 @@ const char* InputNoise::trip() {
     m_.idle(switch_clocks() + int(probe_filter_) + 3 + int(rng_() % 20));
     d_.wait_rest();  // the batch's motion runs to its end
     forced_ = 0;
-    if (status("err") || status("aborted") || d_.read("TRIP") != 0 || d_.read("INPUTS") != 0)
+    if (status("err") || status("aborted") || status("probed") || d_.read("TRIP") != 0 || d_.read("INPUTS") != 0 ||
+        d_.positions("LATCH") != Point{} || d_.positions("PROBE") != Point{} || d_.positions("SNAP") != Point{})
       fail("an input acted on a block built without them");
     return "none built";
   }
   const std::uint32_t mode = d_.read("IN_MODE");
-  const unsigned axis = unsigned(rng_() % 3);
+  // (of the block's axes: with two, Z's limits and home are not built)
+  const unsigned axis = unsigned(rng_() % 3) % unsigned(d_.axes());
   m_.idle(int(rng_() % 300));
   const char* kind = nullptr;
   switch (rng_() % 4) {
