@@ -172,6 +172,9 @@ void add_bus_options(CLI::App* vectors, BusCli& c) {
                    "with --bus: the block behind its AXI4-Lite (axil: rtl/dda_motion_axil.v) or SPI (spi: "
                    "rtl/dda_motion_spi.v) bridge, driven by that bus (default: its Wishbone slave)")
       ->check(CLI::IsMember({"axil", "spi"}));
+  vectors->add_option("--build", c.build,
+                      "with --bus: the block's build, key=value choices separated by commas (depth_log2, inputs, "
+                      "axes, pacer: `dda build`, docs/design.md \"Builds\"; default: the default build)");
   vectors
       ->add_option("--abort-after", c.abort_after,
                    "with --bus: abort N cycles after the last commit (default: none, the queue drains)")
@@ -226,25 +229,32 @@ motion::StageTimings parse_timing(const std::string& opt, const std::string& s) 
 }  // namespace
 
 BusOptions bus_options(const BusCli& c) {
-  const bool any = c.pipelined || !c.bridge.empty() || c.abort_after || !c.timing.empty() || !c.timing_x.empty() ||
-                   !c.timing_y.empty() || !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 ||
-                   c.clock_hz != 0 || c.scenario();
+  // (An io scenario takes the bridge and the build, none of the others.)
+  const bool settings = c.pipelined || c.abort_after || !c.timing.empty() || !c.timing_x.empty() ||
+                        !c.timing_y.empty() || !c.timing_z.empty() || c.polarity || c.feed || c.feed_rate != 0 ||
+                        c.clock_hz != 0 || c.scenario();
+  const bool any = settings || !c.bridge.empty() || !c.build.empty();
   if (!c.bus) {
     if (any) {
       throw InputError(
-          "--pipelined, --bridge, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, "
+          "--pipelined, --bridge, --build, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, --vmin, "
           "--override*, "
           "--hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only");
     }
     return BusOptions{};
   }
   BusOptions b;
+  b.build = motion::parse_build(c.build);
   if (!c.io_scenario.empty()) {
     if (!motion::find_io_scenario(c.io_scenario))
       throw InputError("--io-scenario '" + c.io_scenario + "': no such scenario (--help lists them)");
-    if (any || c.planned)
-      throw InputError("--io-scenario runs its own moves and settings: give it with --bus, --out-dir, --vcd alone");
+    if (settings || c.planned)
+      throw InputError(
+          "--io-scenario runs its own moves and settings: give it with --bus, --bridge, --build, --out-dir, --vcd "
+          "alone");
+    if (!b.build.inputs) throw InputError("--io-scenario needs the machine inputs: the build has none (inputs=0)");
     b.io_scenario = c.io_scenario;
+    b.bridge = c.bridge == "axil" ? motion::Bus::axil : c.bridge == "spi" ? motion::Bus::spi : motion::Bus::wishbone;
     return b;
   }
   b.bridge = c.bridge == "axil" ? motion::Bus::axil : c.bridge == "spi" ? motion::Bus::spi : motion::Bus::wishbone;
@@ -280,6 +290,12 @@ BusOptions bus_options(const BusCli& c) {
   b.clock_hz = c.clock_hz;
   b.planned = c.planned;
   bus_pace_options(c, b);
+  // A build without the pacer runs every entry at its feed increment and takes no write of
+  // ACCEL, VMIN or OVERRIDE: a set that would rely on them is refused, not made wrong.
+  if (!b.build.pacer && (b.paced || b.planned || b.override_ != motion::kOverrideOne))
+    throw InputError(
+        "--accel, --speeds and --override pace entries by the pacer: the build has none (pacer=0; --feed-rate "
+        "paces by the feed increment)");
   return b;
 }
 
@@ -343,7 +359,8 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
   j["generator"] = "dda vectors --bus (the motion block's reference model, model/motion/motion_model.hpp)";
   j["command_line"] = opt.command_line;
   j["cycles"] = ncycles;
-  j["queue_depth_log2"] = motion::kMaxDepthLog2;
+  j["queue_depth_log2"] = bus.build.depth_log2;
+  j["build"] = motion::build_spec(bus.build);
   j["bus"] = std::string(motion::bus_name(bus.bridge));
   if (bus.bridge == motion::Bus::wishbone) j["bus_cycles"] = bus.pipelined ? "pipelined" : "classic";
   j["abort_after"] = bus.abort_after;
@@ -380,13 +397,22 @@ nlohmann::ordered_json bus_manifest(const Options& opt, const BusOptions& bus, s
 
 void write_bus_vector_set(const std::vector<Plan>& plans, const Options& opt, const BusOptions& bus) {
   if (plans.empty() && bus.io_scenario.empty()) throw InputError("vectors need at least one arc");
+  // A block of two axes reads no linear axis and no axes field: a set that needs them is
+  // refused. The RTL the tool runs for --vcd is the default build's.
+  if (bus.build.axes == 2)
+    for (const auto& p : plans)
+      for (const auto& piece : p.pieces)
+        if (piece.cmd.cnt_z != 0 || piece.rot != 0)
+          throw InputError("the build has two axes (axes=2): a move of the third axis or on another plane is refused");
+  if (!bus.vcd.empty() && motion::build_spec(bus.build) != motion::build_spec(motion::Build{}))
+    throw InputError("--vcd runs the default build's RTL: it does not go with another --build");
   // The per-cycle files stream into the set's temporary directory; every line of them
   // has the same length, so the count of cycles is the size: past --max-size the run
   // stops, and the temporary directory goes with the error (the target is untouched).
   SetWriter set(opt.out_dir);
   std::ostream& in_hex = set.open("cycle_in.hex");
   std::ostream& exp_hex = set.open("cycle_exp.hex");
-  motion::ModelTarget t(motion::kMaxDepthLog2, bus.bridge);
+  motion::ModelTarget t(bus.build, bus.bridge);
   std::uint64_t ncycles = 0;
   const auto inf = bus_input_fields(bus.bridge);
   const auto exf = bus_expect_fields(bus.bridge);

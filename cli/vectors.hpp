@@ -36,6 +36,7 @@ void write_vector_set(const std::vector<Plan>& plans, const Options& opt);
 // dda vectors --bus: the motion block's per-cycle set (cli/bus_vectors.cpp).
 struct BusOptions {
   motion::Bus bridge = motion::Bus::wishbone;  // the block's own bus, or behind a bridge
+  motion::Build build;                         // the block's build (docs/design.md, "Builds")
   bool pipelined = false;                      // Wishbone cycles: classic or pipelined
   int idle_percent = 20;                       // chance of an idle cycle before each request (seeded)
   int abort_after = 0;                         // > 0: abort that many cycles after the last commit
@@ -65,6 +66,7 @@ struct BusOptions {
 struct BusCli {
   bool bus = false, pipelined = false;
   std::string bridge;  // "axil", "spi" or empty (Wishbone)
+  std::string build;   // a build spec (motion::parse_build), empty: the default build
   int abort_after = 0;
   std::string timing, timing_x, timing_y, timing_z;
   std::uint32_t polarity = 0, feed = 0;

@@ -91,7 +91,7 @@ if(NOT DDA_WIDTHS_DEFAULT)
   set(DDA_MOTION_PARAMS ${DDA_RTL_PARAMS_DIR})
 endif()
 
-# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES] [NO_INPUTS] [AXES2]): the motion block's harness (tb/engines/)
+# dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES] [NO_INPUTS] [AXES2] [NO_PACER]): the motion block's harness (tb/engines/)
 # around the RTL verilated with that queue depth (MotionHarness compiled with the same
 # depth); "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the
 # generated header). BRIDGES: the block behind its AXI4-Lite and SPI bridges too
@@ -125,6 +125,13 @@ function(dda_motion_harness_lib target depth_log2)
     list(APPEND gparam -GAxes=2)
   else()
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_AXES=3)
+  endif()
+  # NO_PACER: the build without the pacer (motion::Build::pacer).
+  if("NO_PACER" IN_LIST ARGN)
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_PACER=0)
+    list(APPEND gparam -GPacer=0)
+  else()
+    target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_PACER=1)
   endif()
   if("BRIDGES" IN_LIST ARGN)
     list(APPEND tops dda_motion_axil dda_motion_spi)

@@ -48,7 +48,9 @@
 // speed times OVERRIDE, down to rest on a feed hold (CTRL.hold .. CTRL.resume). An entry
 // without (cruise 0) is paced by its feed increment: a phase accumulator adds it every
 // cycle the core may go on; its carry (or an increment of 0) lets the core iterate,
-// unless a feed hold is on; while a stage holds the core the accumulator waits.
+// unless a feed hold is on; while a stage holds the core the accumulator waits. A
+// block built without the pacer (Pacer 0) paces every entry so, its cruise speed
+// ignored: u_pace is held in reset and ACCEL, VMIN and OVERRIDE keep their reset values.
 `include "dda_params.vh"
 `include "dda_motion_regs.vh"
 
@@ -57,7 +59,8 @@
 module dda_motion #(
   parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
   parameter integer Inputs    = 1,  // 1: the machine inputs, latches and snapshot (u_io) are built in
-  parameter integer Axes      = 3   // 3: X, Y, Z; 2: X, Y (no linear axis, Z not built)
+  parameter integer Axes      = 3,  // 3: X, Y, Z; 2: X, Y (no linear axis, Z not built)
+  parameter integer Pacer     = 1   // 1: the pacer (u_pace) is built in; 0: every entry runs at its feed increment
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,      // synchronous, active low
@@ -273,7 +276,7 @@ module dda_motion #(
   wire [PaceRF-1:0] pace_speed;
   dda_pace #(.RF(PaceRF)) u_pace (
     .clk_i        (clk_i),
-    .rst_ni       (rst_ni & ~abort),
+    .rst_ni       (rst_ni & ~abort & (Pacer != 0)),  // not built (Pacer 0): held in reset
     .advance_i    (advance),
     .running_i    (core_busy_paced),
     .take_i       (take),
@@ -315,7 +318,7 @@ module dda_motion #(
     end else begin
       if (take) feed_q <= entry_feed;
       if (advance & ~halt) acc_q <= acc_sum[FW-1:0];
-      if (take) paced_q <= entry_cruise != 32'd0;
+      if (take) paced_q <= Pacer != 0 && entry_cruise != 32'd0;  // (no pacer: the feed increment paces)
       if (take) axes_q <= entry_axes;
       route_q <= axes_q;
     end
@@ -351,9 +354,9 @@ module dda_motion #(
       override_q  <= `DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH'(`DDA_MOTION_OVERRIDE_ONE);
     end else begin
       feed_hold_q <= hold_set | (feed_hold_q & ~hold_clr);
-      if (wr && adr == `DDA_MOTION_ACCEL_ADDR) accel_q <= wdat;
-      if (wr && adr == `DDA_MOTION_VMIN_ADDR) vmin_q <= wdat;
-      if (wr && adr == `DDA_MOTION_OVERRIDE_ADDR)
+      if (wr && adr == `DDA_MOTION_ACCEL_ADDR && Pacer != 0) accel_q <= wdat;
+      if (wr && adr == `DDA_MOTION_VMIN_ADDR && Pacer != 0) vmin_q <= wdat;
+      if (wr && adr == `DDA_MOTION_OVERRIDE_ADDR && Pacer != 0)
         override_q <= wdat > OverrideMax ? OverrideMax[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0]
                                          : wdat[`DDA_MOTION_OVERRIDE_OVERRIDE_WIDTH-1:0];
     end
@@ -602,6 +605,7 @@ module dda_motion #(
         rd[`DDA_MOTION_CONFIG_CNT_WIDTH_LSB+:`DDA_MOTION_CONFIG_CNT_WIDTH_WIDTH]     = `DDA_CNT_WIDTH;
         rd[`DDA_MOTION_CONFIG_INPUTS_LSB]                                           = Inputs != 0;
         rd[`DDA_MOTION_CONFIG_AXES_LSB+:`DDA_MOTION_CONFIG_AXES_WIDTH]               = `DDA_MOTION_CONFIG_AXES_WIDTH'(Axes);
+        rd[`DDA_MOTION_CONFIG_PACER_LSB]                                            = Pacer != 0;
       end
       `DDA_MOTION_STATUS_ADDR: begin
         rd[`DDA_MOTION_STATUS_BUSY_LSB]         = busy;

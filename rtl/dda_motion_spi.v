@@ -11,7 +11,8 @@
 module dda_motion_spi #(
   parameter integer DepthLog2 = `DDA_MOTION_MAX_DEPTH_LOG2,  // queue depth 2^DepthLog2 (1..7)
   parameter integer Inputs    = 1,  // the machine inputs built in (dda_motion's)
-  parameter integer Axes      = 3   // the block's axes (dda_motion's)
+  parameter integer Axes      = 3,  // the block's axes (dda_motion's)
+  parameter integer Pacer     = 1   // the pacer built in (dda_motion's)
 ) (
   input  wire                              clk_i,
   input  wire                              rst_ni,  // synchronous, active low
@@ -71,7 +72,8 @@ module dda_motion_spi #(
   dda_motion #(
     .DepthLog2 (DepthLog2),
     .Inputs    (Inputs),
-    .Axes      (Axes)
+    .Axes      (Axes),
+    .Pacer     (Pacer)
   ) u_motion (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),

@@ -55,16 +55,19 @@ TEST_CASE("build: a spec sets the choices it names, the others keep their defaul
   CHECK(b.depth_log2 == 3);
   CHECK(!b.inputs);
   CHECK(b.axes == 3);
-  CHECK(build_spec(b) == "depth_log2=3,inputs=0,axes=3");
+  CHECK(b.pacer);
+  CHECK(build_spec(b) == "depth_log2=3,inputs=0,axes=3,pacer=1");
   CHECK(parse_build(build_spec(b)).depth_log2 == 3);
   const auto p = rtl_params(b);
   REQUIRE(p.size() == kBuildParams.size());
   CHECK(p[0] == std::pair<std::string, int>{"DepthLog2", 3});
   CHECK(p[1] == std::pair<std::string, int>{"Inputs", 0});
   CHECK(p[2] == std::pair<std::string, int>{"Axes", 3});
+  CHECK(p[3] == std::pair<std::string, int>{"Pacer", 1});
   CHECK(parse_build("axes=2").axes == 2);
+  CHECK(!parse_build("pacer=0").pacer);
   for (const char* bad : {"inputs", "inputs=2", "inputs=-1", "depth_log2=0", "depth_log2=8", "axes=1", "axes=4",
-                          "lathe=1", "inputs=1,inputs=0", "inputs=1x", "inputs=", "inputs=0,"}) {
+                          "lathe=1", "pacer=2", "inputs=1,inputs=0", "inputs=1x", "inputs=", "inputs=0,"}) {
     INFO(bad);
     CHECK_THROWS_AS(parse_build(bad), InputError);
   }

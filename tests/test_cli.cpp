@@ -514,8 +514,8 @@ TEST_CASE("cli: vectors --bus writes the motion block's set, and --pipelined and
   r = run_dda(s, "vectors " + kPaper + " --pipelined --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK(r.err ==
-        "dda: error: --pipelined, --bridge, --abort-after, --timing*, --polarity, --feed*, --clock, --accel, "
-        "--vmin, --override*, --hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only\n");
+        "dda: error: --pipelined, --bridge, --build, --abort-after, --timing*, --polarity, --feed*, --clock, "
+        "--accel, --vmin, --override*, --hold-at, --resume-at, --soft-stop-at and --watchdog go with --bus only\n");
   CHECK_FALSE(fs::exists(bad));
   r = run_dda(s, "vectors " + kPaper + " --bus --abort-after 0 --out-dir " + bad.string());
   CHECK(r.status == 2);
@@ -543,7 +543,58 @@ TEST_CASE("cli: vectors --bus --bridge writes the bridged block's set, and carel
   CHECK(r.status == 2);
   r = run_dda(s, "vectors " + kPaper + " --bridge spi --out-dir " + bad.string());
   CHECK(r.status == 2);
-  r = run_dda(s, "vectors --bus --bridge spi --io-scenario estop --out-dir " + bad.string());
+  r = run_dda(s, "vectors --bus --bridge spi --io-scenario estop --pipelined --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK_FALSE(fs::exists(bad));
+}
+
+TEST_CASE("cli: vectors --bus --build writes a build's set and refuses what the build does not have",
+          "[cli][motion][errors]") {
+  Scratch s;
+  // The board's build behind SPI, a machine-input scenario: its manifest names the build.
+  const fs::path dir = s.dir / "estop";
+  Result r = run_dda(s, "vectors --bus --bridge spi --build pacer=0 --io-scenario estop --out-dir " + dir.string());
+  INFO("stderr: " << r.err);
+  REQUIRE(r.status == 0);
+  const auto m = nlohmann::json::parse(slurp(dir / "manifest.json"));
+  CHECK(m["build"] == "depth_log2=7,inputs=1,axes=3,pacer=0");
+  CHECK(m["bus"] == "spi");
+  CHECK(m["io_scenario"] == "estop");
+  // The default build's manifest names it too.
+  const fs::path plain = s.dir / "plain";
+  r = run_dda(s, "vectors " + kPaper + " --bus --out-dir " + plain.string());
+  REQUIRE(r.status == 0);
+  CHECK(nlohmann::json::parse(slurp(plain / "manifest.json"))["build"] == "depth_log2=7,inputs=1,axes=3,pacer=1");
+  const fs::path bad = s.dir / "bad";
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"--bus --build pacer=0 --feed-rate 1000 --clock 1e6 --accel 1e5",
+       "--accel, --speeds and --override pace entries by the pacer: the build has none (pacer=0; --feed-rate paces "
+       "by the feed increment)"},
+      {"--bus --build pacer=0 --override 50",
+       "--accel, --speeds and --override pace entries by the pacer: the build has none (pacer=0; --feed-rate paces "
+       "by the feed increment)"},
+      {"--bus --build pacer=2", "build: pacer=2 is not a whole number in 0 .. 1"},
+      {"--bus --build lathe=1", "build: no choice 'lathe' (the choices: depth_log2, inputs, axes, pacer)"},
+      {"--build pacer=0", ""},
+      {"--bus --build pacer=0 --vcd " + (s.dir / "w.vcd").string(),
+       "--vcd runs the default build's RTL: it does not go with another --build"},
+  };
+  for (const auto& [opts, err] : refused) {
+    INFO(opts);
+    r = run_dda(s, "vectors " + kPaper + " " + opts + " --out-dir " + bad.string());
+    CHECK(r.status == 2);
+    if (!err.empty()) CHECK(r.err == "dda: error: " + err + "\n");
+    CHECK_FALSE(fs::exists(bad));
+  }
+  r = run_dda(s, "vectors --bus --build inputs=0 --io-scenario homing --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK(r.err == "dda: error: --io-scenario needs the machine inputs: the build has none (inputs=0)\n");
+  // Two axes: a move of Z is refused, a planar arc is written.
+  r = run_dda(s, "vectors --line --from 0,0,0 --to 30,20,10 --bus --build axes=2 --out-dir " + bad.string());
+  CHECK(r.status == 2);
+  CHECK(r.err ==
+        "dda: error: the build has two axes (axes=2): a move of the third axis or on another plane is refused\n");
+  CHECK_FALSE(fs::exists(bad));
+  r = run_dda(s, "vectors " + kPaper + " --bus --build axes=2 --out-dir " + (s.dir / "lathe").string());
+  CHECK(r.status == 0);
 }

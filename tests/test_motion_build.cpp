@@ -11,7 +11,12 @@
 //   the lathe's, two axes with the inputs: CONFIG.axes reads 2, Z's registers read 0
 //     and take no write, an entry's linear axis and axes field are not read (a 3-D line
 //     queued as is moves X and Y only, Z's pins stay low), a Z limit held active stops
-//     nothing while an X limit does; the random work runs on it (planar arcs only).
+//     nothing while an X limit does; the random work runs on it (planar arcs only);
+//   the board's, without the pacer (rtl/board/): CONFIG.pacer reads 0, ACCEL, VMIN and
+//     OVERRIDE take no write, an entry with a cruise speed runs at its feed increment
+//     clock for clock as one without, a feed hold stops at once and the resume goes on to
+//     the end point; the random work runs on it (its paced batches fed, with a hold), and
+//     behind the SPI bridge as the board has it.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 #include <systemc>
@@ -20,9 +25,11 @@
 #include "host/planner/planner.hpp"
 #include "host/speed/pace_plan.hpp"
 #include "model/datapath/errors.hpp"
+#include "tb/cosim/bridge_cosim.hpp"
 #include "tb/cosim/motion_cosim.hpp"
 #include "tb/measure/pace_report.hpp"
 #include "tb/monitors/bus_monitors.hpp"
+#include "tb/random/bus_work.hpp"
 #include "tb/random/dda_random.hpp"
 #include "tb/random/motion_mix.hpp"
 
@@ -187,5 +194,118 @@ TEST_CASE("build: two axes, 32 random planar arcs, the three engines equal every
   CHECK(st.paced_pieces > 0);
   CHECK(st.spatial == 0);
   CHECK(st.pulses_z == 0);
+}
+#endif
+
+#if DDA_MOTION_TEST_PACER == 0
+namespace {
+
+// Clocks from the last commit to the last step pulse's rise, a line queued with a feed
+// increment and the given pacing fields (the driver not told the build), from a reset
+// (the feed's phase accumulator at 0).
+std::uint64_t run_line(MotionCosim& h, WishboneMaster& m, MotionDriver& d, const Plan& line, std::uint32_t feed,
+                       const std::vector<PaceEntry>& pace) {
+  h.set_reset(false);
+  m.idle(2);
+  h.set_reset(true);
+  m.idle(2);
+  d.preset(line.from);
+  for (std::size_t i = 0; i < line.pieces.size(); ++i) d.queue(line.pieces[i].cmd, feed, 0, pace[i]);
+  const std::uint64_t start = h.cycle();
+  std::uint64_t last = start;
+  bool was = false;
+  for (int i = 0; i < 40000; ++i) {
+    m.idle(1);
+    const BlockOutputs& o = h.outputs();
+    const bool any = o.step_x || o.step_y || o.step_z;
+    if (any && !was) last = h.cycle();
+    was = any;
+  }
+  d.drain();
+  CHECK(d.position() == line.to);
+  return last - start;
+}
+
+}  // namespace
+
+TEST_CASE("build: without the pacer, the three engines equal and every entry runs at its feed increment",
+          "[motion][cosim][build]") {
+  STATIC_REQUIRE(!kHarnessPacer);
+  MotionCosim h;
+  WishboneMaster m(h, 3, false, 10);  // (no random waits: the two runs' clocks compare)
+  MotionDriver d(m, 4, false);
+  h.set_reset(false);
+  m.idle(2);
+  h.set_reset(true);
+  m.idle(2);
+  CHECK(get_field("CONFIG", "pacer", d.read("CONFIG")) == 0);
+  CHECK(get_field("CONFIG", "inputs", d.read("CONFIG")) == 1);
+  CHECK(get_field("CONFIG", "axes", d.read("CONFIG")) == 3);
+  // The pacer's settings take no write.
+  d.set_pacing(1000, 2000);
+  d.set_override(100);
+  CHECK(d.read("ACCEL") == 0);
+  CHECK(d.read("VMIN") == 0);
+  CHECK(d.read("OVERRIDE") == kOverrideOne);
+  // A line with cruise speeds runs as the same line without, clock for clock: its feed
+  // increment paces it (a quarter of the full rate).
+  const Plan line = plan_line(Point{0, 0, 0}, Point{700, -260, 90}, Preload::Half);
+  std::vector<Command> cmds;
+  for (const auto& p : line.pieces) cmds.push_back(p.cmd);
+  const std::uint32_t feed = 0x40000000u;
+  const auto paced = pace_entries(cmds, 1u << 28, 1u << 22, 1u << 20);
+  REQUIRE(paced.front().cruise != 0);
+  const std::uint64_t with = run_line(h, m, d, line, feed, paced);
+  const std::uint64_t without = run_line(h, m, d, line, feed, std::vector<PaceEntry>(cmds.size()));
+  CHECK(with == without);
+  CHECK(with > 4 * 700);  // (700 iterations at least, each four clocks)
+  // A feed hold stops the steps at once; the resume goes on to the end point.
+  d.preset(line.from);
+  for (const auto& p : line.pieces) d.queue(p.cmd, feed);
+  m.idle(600);
+  d.hold();
+  CHECK(get_field("STATUS", "held", d.read("STATUS")) == 1);
+  const Point at = d.position();
+  CHECK(at != line.from);
+  m.idle(2000);
+  CHECK(d.position() == at);
+  CHECK(get_field("STATUS", "busy", d.read("STATUS")) == 1);
+  d.resume();
+  d.drain();
+  CHECK(d.position() == line.to);
+  // A driver that has read the build refuses a cruise speed and the pacer's settings.
+  d.read_build();
+  CHECK(!d.pacer());
+  CHECK_THROWS_AS(d.queue(cmds.front(), feed, 0, paced.front()), GuardError);
+  CHECK_THROWS_AS(d.set_pacing(1, 1), GuardError);
+  CHECK_THROWS_AS(d.set_override(kOverrideOne), GuardError);
+  CHECK(get_field("STATUS", "empty", d.read("STATUS")) == 1);
+}
+
+TEST_CASE("build: without the pacer, 24 random arcs, the three engines equal every cycle", "[motion][cosim][build]") {
+  const std::uint64_t seed = test_seed(89);
+  INFO("seed " << seed << " (DDA_SEED reruns it)");
+  MotionCosim h;
+  const MixStats st = run_motion_mix(h, seed, 24, true);
+  INFO(st.pieces << " pieces, " << h.cycle() << " cycles");
+  CHECK(st.arcs == 24);
+  CHECK(st.position_checks > 0);
+  CHECK(st.paced_pieces == 0);
+  CHECK(st.fed_pieces > 0);
+  CHECK(st.holds > 0);  // (the paced batches' holds, on fed batches)
+}
+
+TEST_CASE("build: without the pacer, random work over SPI, SystemC model and RTL equal every cycle, as over Wishbone",
+          "[motion][cosim][build][bridges]") {
+  const std::uint64_t seed = test_seed(97);
+  INFO("seed " << seed << " (DDA_SEED reruns it)");
+  BridgeCosim h(Bus::spi);
+  const BusWork got = run_bus_work(h, Bus::spi, seed, 3);
+  ModelTarget ref(harness_build());
+  const BusWork want = run_bus_work(ref, Bus::wishbone, seed, 3);
+  INFO(h.cycle() << " cycles");
+  CHECK(got.end == got.want);
+  CHECK(got.iterations.size() > 100);
+  CHECK(compare_work(want, got) == "");
 }
 #endif

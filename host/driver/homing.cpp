@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "host/driver/homing.hpp"
 
+#include <cmath>
 #include <string>
 
+#include "host/driver/feed.hpp"
 #include "host/planner/planner.hpp"
 #include "model/datapath/errors.hpp"
 #include "model/motion/pacer.hpp"
@@ -43,6 +45,12 @@ Point along(char axis, std::int64_t steps) {
 void queue_move(MotionDriver& d, Point delta, std::uint32_t speed) {
   if (speed == 0) throw GuardError("motion driver: a move needs a cruise speed");
   const Plan plan = plan_line(Point{}, delta, Preload::Half);
+  if (!d.pacer()) {  // each piece at its feed increment for the speed (steps per clock: a clock of 1 Hz)
+    const double per_clock = std::ldexp(double(speed), -kSpeedFrac);
+    for (const auto& piece : plan.pieces)
+      d.queue(piece.cmd, feed::feed_increment(feed::piece_motion(piece.cmd), per_clock, 1.0), piece.rot);
+    return;
+  }
   std::vector<Command> cmds;
   for (const auto& piece : plan.pieces) cmds.push_back(piece.cmd);
   const std::vector<PaceEntry> pace = pace_entries(cmds, speed, d.read("VMIN"), d.read("ACCEL"));

@@ -38,7 +38,8 @@ HomingResult home_axis(MotionDriver& d, const HomingParams& p);
 Point probe_move(MotionDriver& d, Point delta, std::uint32_t speed);
 
 // Queues a straight move by `delta` (the golden planner's pieces), paced at `speed` with
-// the block's ACCEL and VMIN (read from it).
+// the block's ACCEL and VMIN (read from it); on a block without the pacer (the driver
+// has read the build), each piece at the feed increment that runs it at `speed`.
 void queue_move(MotionDriver& d, Point delta, std::uint32_t speed);
 
 }  // namespace dda::motion

@@ -21,6 +21,8 @@ void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const P
                          std::uint32_t ctrl_also) {
   if (axes_ == 2 && (c.cnt_z != 0 || axes != 0))
     throw GuardError("motion driver: the block has two axes (CONFIG.axes): no Z motion or axes field");
+  if (!pacer_ && pace.cruise != 0)
+    throw GuardError("motion driver: the block has no pacer (CONFIG.pacer): no cruise speed; the feed increment paces");
   while (get_field("STATUS", "full", m_.read(reg_offset("STATUS")))) m_.idle(int(rng_() % 8));
   const std::vector<std::uint32_t> w = entry_words(c, feed, axes, pace);
   std::vector<std::size_t> order(w.size());
@@ -34,6 +36,12 @@ void MotionDriver::read_build() {
   const std::uint32_t config = m_.read(reg_offset("CONFIG"));
   axes_ = int(get_field("CONFIG", "axes", config));
   inputs_ = get_field("CONFIG", "inputs", config) != 0;
+  pacer_ = get_field("CONFIG", "pacer", config) != 0;
+}
+
+void MotionDriver::need_pacer(const char* what) const {
+  if (!pacer_)
+    throw GuardError(std::string("motion driver: ") + what + ": the block is built without its pacer (CONFIG.pacer)");
 }
 
 void MotionDriver::need_inputs(const char* what) const {
@@ -71,10 +79,14 @@ void MotionDriver::set_timings(char axis, const StageTimings& t) {
 void MotionDriver::set_polarity(std::uint32_t bits) { m_.write(reg_offset("POLARITY"), bits); }
 
 void MotionDriver::set_pacing(std::uint32_t accel, std::uint32_t vmin) {
+  need_pacer("set_pacing");
   m_.write(reg_offset("ACCEL"), accel);
   m_.write(reg_offset("VMIN"), vmin);
 }
-void MotionDriver::set_override(std::uint32_t value) { m_.write(reg_offset("OVERRIDE"), value); }
+void MotionDriver::set_override(std::uint32_t value) {
+  need_pacer("set_override");
+  m_.write(reg_offset("OVERRIDE"), value);
+}
 void MotionDriver::hold() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "hold")); }
 void MotionDriver::resume() { m_.write(reg_offset("CTRL"), field_bit("CTRL", "resume")); }
 

@@ -65,11 +65,14 @@ class MotionDriver {
   // Reads CONFIG: the block's build (docs/design.md, "Builds"). From then on queue()
   // refuses (GuardError) what a block of two axes would drop: an entry with Z motion or
   // an axes field; and set_inputs(), arm_probe() and snapshot() refuse on a block built
-  // without its inputs, where they would do nothing. Until then the driver takes the
-  // block for the default build (three axes, the inputs).
+  // without its inputs, where they would do nothing; on a block built without its pacer,
+  // queue() refuses an entry with a cruise speed (the block would run it at its feed
+  // increment) and set_pacing() and set_override() refuse. Until then the driver takes
+  // the block for the default build (three axes, the inputs, the pacer).
   void read_build();
   int axes() const { return axes_; }
   bool inputs() const { return inputs_; }
+  bool pacer() const { return pacer_; }
 
  private:
   BusMaster& m_;
@@ -77,7 +80,9 @@ class MotionDriver {
   bool shuffle_;
   int axes_ = 3;
   bool inputs_ = true;
+  bool pacer_ = true;
   void need_inputs(const char* what) const;
+  void need_pacer(const char* what) const;
 };
 
 }  // namespace dda::motion

@@ -17,6 +17,7 @@ int get(const Build& b, std::string_view key) {
   if (key == "depth_log2") return b.depth_log2;
   if (key == "inputs") return b.inputs ? 1 : 0;
   if (key == "axes") return b.axes;
+  if (key == "pacer") return b.pacer ? 1 : 0;
   throw std::logic_error(fmt::format("build: no member for '{}'", key));
 }
 void set(Build& b, std::string_view key, int v) {
@@ -26,6 +27,8 @@ void set(Build& b, std::string_view key, int v) {
     b.inputs = v != 0;
   else if (key == "axes")
     b.axes = v;
+  else if (key == "pacer")
+    b.pacer = v != 0;
   else
     throw std::logic_error(fmt::format("build: no member for '{}'", key));
 }

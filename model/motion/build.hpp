@@ -39,6 +39,12 @@ struct Build {
   // Y), STEP_Z, DIR_Z and POS_Z read 0 and take no write, step_z_o and dir_z_o stay low.
   // A host must not queue an entry with Z motion or an axes field on such a block.
   int axes = 3;
+  // The pacer (rtl/dda_pace.v, u_pace) with its norm unit. Without it u_pace is held in
+  // reset and every entry runs at its feed increment, as an entry without a cruise speed
+  // does on a block with it: no ramps (a feed hold or a soft stop stops at once), the
+  // cruise speed ignored; ACCEL, VMIN and OVERRIDE keep their reset values and take no
+  // write. A host must not queue an entry with a cruise speed on such a block.
+  bool pacer = true;
 };
 
 // A choice: its key in a spec and in CONFIG's fields, the RTL parameter, its range.
@@ -48,10 +54,11 @@ struct BuildParam {
   int min, max;
   std::string_view meaning;
 };
-inline constexpr std::array<BuildParam, 3> kBuildParams{{
+inline constexpr std::array<BuildParam, 4> kBuildParams{{
     {"depth_log2", "DepthLog2", 1, kMaxDepthLog2, "log2 of the queue depth (entries)"},
     {"inputs", "Inputs", 0, 1, "1: the machine inputs, their latches and the snapshot are built in"},
     {"axes", "Axes", 2, 3, "the block's axes: 3 (X, Y, Z) or 2 (X, Y; no linear axis in the core)"},
+    {"pacer", "Pacer", 0, 1, "1: the pacer is built in; 0: every entry runs at its feed increment"},
 }};
 
 // The value of each kBuildParams entry for a build, in kBuildParams' order.

@@ -34,6 +34,8 @@ class BusTarget {
   // The reference model beside the target, after the last edge (equal to the target's
   // registers: every target checks that edge by edge).
   virtual const MotionModel& model() const = 0;
+  // The bus the target takes (a bridged top's, or the block's own Wishbone).
+  virtual Bus bus() const { return Bus::wishbone; }
 };
 
 // A target between the bus master and another target that passes everything through to
@@ -49,6 +51,7 @@ class BusTap : public BusTarget {
   const BusIn& bus_seen() const override { return t_.bus_seen(); }
   const BlockOutputs& outputs() const override { return t_.outputs(); }
   const MotionModel& model() const override { return t_.model(); }
+  Bus bus() const override { return t_.bus(); }
 
  protected:
   BusTarget& t_;
@@ -74,7 +77,10 @@ class HeldInputs : public BusTarget {
 class ModelTarget : public HeldInputs {
  public:
   explicit ModelTarget(int depth_log2 = kMaxDepthLog2, Bus bus = Bus::wishbone)
-      : model_(depth_log2), bridge_(make_bridge(bus)) {}
+      : model_(depth_log2), bridge_(make_bridge(bus)), bus_(bus) {}
+  explicit ModelTarget(const Build& build, Bus bus = Bus::wishbone)
+      : model_(build), bridge_(make_bridge(bus)), bus_(bus) {}
+  Bus bus() const override { return bus_; }
   void tick(const BusIn& bus) override;
   const BusIn& bus_seen() const override { return seen_; }
   const BlockOutputs& outputs() const override { return out_; }
@@ -86,6 +92,7 @@ class ModelTarget : public HeldInputs {
  private:
   MotionModel model_;
   std::unique_ptr<Bridge> bridge_;
+  Bus bus_;
   BusIn seen_;
   BlockOutputs out_;
 };

@@ -28,7 +28,7 @@ namespace dda::motion {
 
 inline constexpr std::uint32_t kId = 0x44444131;  // "DDA1"
 inline constexpr int kVersionMajor = 6;
-inline constexpr int kVersionMinor = 1;
+inline constexpr int kVersionMinor = 2;
 // Bits an entry keeps above the command word for per-command fields of later blocks.
 inline constexpr int kEntryReservedBits = 16;
 inline constexpr int kCmdEntryWords = (hw::kCmdWidth + kEntryReservedBits + 31) / 32;
@@ -166,7 +166,8 @@ struct Register {
 inline constexpr std::array<Register, 43> kRegisters{{
     {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
     {"VERSION", 0x04, Access::RO, "register map version"},
-    {"CONFIG", 0x08, Access::RO, "the block's build: entry size, queue depth, widths, the machine inputs, the axes"},
+    {"CONFIG", 0x08, Access::RO,
+     "the block's build: entry size, queue depth, widths, the pacer, the machine inputs, the axes"},
     {"CTRL", 0x0C, Access::WO, "commands to the block (each bit acts when written 1)"},
     {"STATUS", 0x10, Access::RO, "state, queue level, the sticky error and its causes"},
     {"IRQ_STATUS", 0x14, Access::W1C, "interrupt causes (events), write 1 to clear"},
@@ -216,7 +217,7 @@ struct Field {
   int width;
   std::string_view meaning;
 };
-inline constexpr std::array<Field, 98> kFields{{
+inline constexpr std::array<Field, 99> kFields{{
     {"ID", "id", 0, 32, "0x44444131"},
     {"VERSION", "minor", 0, 16, "minor version"},
     {"VERSION", "major", 16, 16, "major version"},
@@ -226,6 +227,7 @@ inline constexpr std::array<Field, 98> kFields{{
      "block-RAM rows an entry takes (kEntryRows): the core takes one entry per as many clocks at most"},
     {"CONFIG", "acc_width", 16, 6, "the core's AccWidth"},
     {"CONFIG", "cnt_width", 24, 5, "the core's CntWidth"},
+    {"CONFIG", "pacer", 14, 1, "1: the pacer is built in; 0: every entry runs at its feed increment (Build::pacer)"},
     {"CONFIG", "inputs", 29, 1, "1: the machine inputs, their latches and the snapshot are built in (Build::inputs)"},
     {"CONFIG", "axes", 30, 2, "the block's axes: 3 (X, Y, Z) or 2 (X, Y) (Build::axes)"},
     {"CTRL", "commit", 0, 1, "append the entry written to the queue (refused: partial entry or full queue)"},

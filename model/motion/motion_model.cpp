@@ -198,7 +198,8 @@ std::uint32_t MotionModel::read(std::uint32_t adr) const {
            std::uint32_t(hw::kAccWidth) << std::uint32_t(field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(field_of("CONFIG", "cnt_width").lsb) |
            std::uint32_t(build_.inputs) << std::uint32_t(field_of("CONFIG", "inputs").lsb) |
-           std::uint32_t(build_.axes) << std::uint32_t(field_of("CONFIG", "axes").lsb);
+           std::uint32_t(build_.axes) << std::uint32_t(field_of("CONFIG", "axes").lsb) |
+           std::uint32_t(build_.pacer) << std::uint32_t(field_of("CONFIG", "pacer").lsb);
   }
   if (adr == reg_offset("STATUS")) {
     const auto bit = [&](std::string_view f, bool v) { return std::uint32_t(v) << field_of("STATUS", f).lsb; };
@@ -431,7 +432,7 @@ void MotionModel::load_feed(const Wires& w) {
   } else {
     if (w.take) reg("feed_q") = w.entry_feed;
     if (w.advance && !halt()) reg("acc_q") = w.acc_sum & mask_of(kFeedWidth);
-    if (w.take) reg("paced_q") = w.pace.entry.cruise != 0;
+    if (w.take) reg("paced_q") = build_.pacer && w.pace.entry.cruise != 0;  // (no pacer: the feed paces)
     reg("route_q") = get("axes_q");
     if (w.take) reg("axes_q") = w.entry_axes;
   }

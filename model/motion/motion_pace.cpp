@@ -62,8 +62,8 @@ void MotionModel::load_watchdog(const Wires& w) {
 }
 
 void MotionModel::load_pace(const Wires& w) {
-  // The pacer's reset is the core's: a reset or an abort.
-  if (w.abort) {
+  // The pacer's reset is the core's: a reset or an abort; not built, it is held in reset.
+  if (w.abort || !build_.pacer) {
     pacer_ = Pacer{};
   } else {
     pacer_.edge(w.pace);
@@ -96,6 +96,7 @@ void MotionModel::load_pace_settings(const Wires& w) {
   const bool ctrl = w.wr && w.adr == reg_offset("CTRL");
   const auto bit = [&](std::string_view f) { return ctrl && ((w.wsel >> field_of("CTRL", f).lsb) & 1u) != 0; };
   reg("feed_hold_q") = bit("hold") || (get("feed_hold_q") && !bit("resume"));
+  if (!build_.pacer) return;  // ACCEL, VMIN, OVERRIDE keep their reset values
   if (w.wr && w.adr == reg_offset("ACCEL")) reg("accel_q") = w.wdat;
   if (w.wr && w.adr == reg_offset("VMIN")) reg("vmin_q") = w.wdat;
   if (w.wr && w.adr == reg_offset("OVERRIDE")) reg("override_q") = std::min<std::uint32_t>(w.wdat, 2 * kOverrideOne);

@@ -95,7 +95,8 @@ void dda_motion::comb() {
   const bool abort = ctrl("abort") || ctrl("hard_stop") || soft_flush || iow.io_hard.read();
   flush.write(abort);
   core_rst_n.write(rst_ni.read() && !abort);
-  io_rst_n.write(rst_ni.read() && build_.inputs);  // u_io not built: held in reset
+  io_rst_n.write(rst_ni.read() && build_.inputs);             // u_io not built: held in reset
+  pace_rst_n.write(rst_ni.read() && !abort && build_.pacer);  // u_pace's: the core's, or held
   cmd_valid.write(fetch_q.read() == 2 && level_q.read() != 0);
   // A timing written on this edge holds the core once (the stages' look-ahead used the old).
   const bool wr = req && wb_we_i.read();
@@ -157,7 +158,8 @@ std::uint32_t dda_motion::read(std::uint32_t adr) const {
            std::uint32_t(hw::kAccWidth) << std::uint32_t(motion::field_of("CONFIG", "acc_width").lsb) |
            std::uint32_t(hw::kCntWidth) << std::uint32_t(motion::field_of("CONFIG", "cnt_width").lsb) |
            std::uint32_t(build_.inputs) << std::uint32_t(motion::field_of("CONFIG", "inputs").lsb) |
-           std::uint32_t(build_.axes) << std::uint32_t(motion::field_of("CONFIG", "axes").lsb);
+           std::uint32_t(build_.axes) << std::uint32_t(motion::field_of("CONFIG", "axes").lsb) |
+           std::uint32_t(build_.pacer) << std::uint32_t(motion::field_of("CONFIG", "pacer").lsb);
   }
   if (adr == motion::reg_offset("STATUS")) {
     const auto bit = [](std::string_view f, bool v) { return std::uint32_t(v) << motion::field_of("STATUS", f).lsb; };
@@ -382,8 +384,8 @@ void dda_motion::seq_feed(const Decode& d) {
     route_q.write(axes_q.read());
     if (d.take) axes_q.write(entry_axes.read());
     if (d.take) feed_q.write(entry_feed.read());
-    if (d.take) paced_q.write(entry_pace[0].read() != 0);
-    if (ce_i.read() && !hold.read() && !pace_halt.read())  // (a feed hold or a soft stop)
+    if (d.take) paced_q.write(build_.pacer && entry_pace[0].read() != 0);  // (no pacer: the feed paces)
+    if (ce_i.read() && !hold.read() && !pace_halt.read())                  // (a feed hold or a soft stop)
       acc_q.write(std::uint32_t((std::uint64_t{acc_q.read()} + feed_q.read()) & fmask));
   }
 }
@@ -409,9 +411,10 @@ void dda_motion::seq_pace_settings(const Decode& d) {
     return ctrl && ((d.wsel >> std::uint32_t(motion::field_of("CTRL", f).lsb)) & 1u) != 0;
   };
   feed_hold_q.write(bit("hold") || (feed_hold_q.read() && !bit("resume")));
-  if (d.wr && d.adr == motion::reg_offset("ACCEL")) accel_q.write(d.wdat);
-  if (d.wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
-  if (d.wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
+  const bool pace_wr = d.wr && build_.pacer;  // (no pacer: ACCEL, VMIN, OVERRIDE keep their reset values)
+  if (pace_wr && d.adr == motion::reg_offset("ACCEL")) accel_q.write(d.wdat);
+  if (pace_wr && d.adr == motion::reg_offset("VMIN")) vmin_q.write(d.wdat);
+  if (pace_wr && d.adr == motion::reg_offset("OVERRIDE")) override_q.write(std::min(d.wdat, 2 * motion::kOverrideOne));
   // The soft stop runs until its flush; the watchdog counts down from each write.
   stopping_q.write(!d.abort && (stopping_q.read() || d.soft_stop || d.bite || iow.io_soft.read()));
   if (d.wr && d.adr == motion::reg_offset("WATCHDOG")) {

@@ -96,8 +96,9 @@ SC_MODULE(dda_motion) {
       stepped{"stepped"}, pace_iterate{"pace_iterate"}, pace_halt{"pace_halt"};
   sc_core::sc_signal<std::uint64_t> norm_v_x{"norm_v_x"}, norm_v_y{"norm_v_y"}, norm_v_z{"norm_v_z"},
       norm_cap{"norm_cap"}, norm_cap_z{"norm_cap_z"}, pace_speed{"pace_speed"};
-  sc_core::sc_signal<bool> io_rst_n{"io_rst_n"};  // u_io's reset
-  sc_core::sc_signal<bool> off{"off"};            // never written: the reset and tag of a stage not built
+  sc_core::sc_signal<bool> io_rst_n{"io_rst_n"};      // u_io's reset
+  sc_core::sc_signal<bool> pace_rst_n{"pace_rst_n"};  // u_pace's reset
+  sc_core::sc_signal<bool> off{"off"};                // never written: the reset and tag of a stage not built
   sc_core::sc_signal<bool> core_rst_n{"core_rst_n"}, cmd_valid{"cmd_valid"}, core_ready{"core_ready"};
   sc_core::sc_signal<bool> core_busy{"core_busy"}, core_done{"core_done"}, core_err{"core_err"}, core_iter{"core_iter"};
   sc_core::sc_signal<bool> step_x{"step_x"}, step_y{"step_y"}, dir_x{"dir_x"}, dir_y{"dir_y"};

@@ -53,7 +53,7 @@ void dda_motion::bind_stages() {
 
 void dda_motion::bind_pace() {
   u_pace.clk_i(clk_i);
-  u_pace.rst_ni(core_rst_n);  // the core's reset: a reset or an abort
+  u_pace.rst_ni(pace_rst_n);  // the core's reset (a reset or an abort), or held (no pacer)
   u_pace.advance_i(advance);
   u_pace.running_i(pace_running);
   u_pace.take_i(take);

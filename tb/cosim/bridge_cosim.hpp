@@ -26,6 +26,7 @@ class BridgeCosim : public HeldInputs {
   const BusIn& bus_seen() const override { return seen_; }
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
+  Bus bus() const override { return bus_; }
   std::uint64_t cycle() const { return cycle_; }
 
  private:

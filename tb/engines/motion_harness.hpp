@@ -29,7 +29,8 @@ namespace dda::motion {
 inline constexpr int kHarnessDepthLog2 = DDA_MOTION_TEST_DEPTH_LOG2;
 inline constexpr bool kHarnessInputs = DDA_MOTION_TEST_INPUTS != 0;
 inline constexpr int kHarnessAxes = DDA_MOTION_TEST_AXES;
-inline Build harness_build() { return Build{kHarnessDepthLog2, kHarnessInputs, kHarnessAxes}; }
+inline constexpr bool kHarnessPacer = DDA_MOTION_TEST_PACER != 0;
+inline Build harness_build() { return Build{kHarnessDepthLog2, kHarnessInputs, kHarnessAxes, kHarnessPacer}; }
 
 // The block's registers (kBlockRegs) and the core's register table of a Verilated
 // dda_motion, by name below `scope` (e.g. "dut.dda_motion"). Throws GuardError naming a
@@ -82,6 +83,7 @@ class MotionHarness : public HeldInputs {
   // The outputs after the last edge (the RTL's; equal to the model's).
   const BlockOutputs& outputs() const override { return out_; }
   const MotionModel& model() const override { return model_; }
+  Bus bus() const override { return bus_; }
   std::uint64_t cycle() const { return cycle_; }
 
  private:

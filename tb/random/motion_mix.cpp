@@ -82,8 +82,9 @@ class Mix {
   PieceMonitor mon_;
   WishboneMaster m_;
   MotionDriver d_;
-  InputNoise noise_;  // glitches on the machine's inputs every batch, real trips in some
-  int axes_ = 3;      // the block's (CONFIG.axes): with 2, no arc moves the third axis
+  InputNoise noise_;   // glitches on the machine's inputs every batch, real trips in some
+  int axes_ = 3;       // the block's (CONFIG.axes): with 2, no arc moves the third axis
+  bool pacer_ = true;  // the block's (CONFIG.pacer): without, no batch is paced by the pacer
 };
 
 MixStats Mix::run(std::uint64_t arcs) {
@@ -92,14 +93,17 @@ MixStats Mix::run(std::uint64_t arcs) {
   mon_.set_reset(true);
   d_.read_build();
   axes_ = d_.axes();
+  pacer_ = d_.pacer();
   noise_.configure(true);
   while (st_.arcs < arcs) {
     ++st_.batches;
     // One to four arcs back to back from a preset position; a twentieth of the batches
     // are one short arc with large timings; a fifth are paced by the pacer (shorter
-    // arcs: a paced step takes a hundred clocks or more).
+    // arcs: a paced step takes a hundred clocks or more); on a block without the pacer
+    // those and a fifth more are fed batches with a feed hold.
     const unsigned kind = unsigned(rng_() % 20);
-    const bool large = kind == 0, paced = kind % 5 == 2;
+    const bool large = kind == 0, paced = kind % 5 == 2 && pacer_;
+    const bool held = !pacer_ && (kind % 5 == 2 || kind % 5 == 3);
     const std::vector<Plan> batch = draw_batch(large, paced, arcs);
     if (batch.empty()) break;
     d_.drain();
@@ -112,7 +116,7 @@ MixStats Mix::run(std::uint64_t arcs) {
     st_.arcs += batch.size();
     const bool cut = cut_short(batch.front());
     if (!cut) {
-      if (pc.on) pace_events(!pc.threshold);
+      if (pc.on || held) pace_events(pc.on && !pc.threshold);
       d_.drain();
       check_position(want);
     }
@@ -197,7 +201,8 @@ Mix::Pacing Mix::draw_pacing(bool paced) {
 
 // While a paced batch runs: an override change (0 to 235%: above 200% is clamped), a
 // feed hold and its end, the override back to 100%; at the thresholds the hold alone (an
-// override would move the cruise speed off them; the resume ramps through them again).
+// override would move the cruise speed off them; the resume ramps through them again),
+// and the hold alone on a fed batch of a block without the pacer.
 void Mix::pace_events(bool override) {
   m_.idle(int(rng_() % 3000));
   if (override) d_.set_override(std::uint32_t(20 + rng_() % 580));

@@ -43,7 +43,8 @@ class LimitWatch : public BusTap {
 void estop_mid_piece(BusTarget& block, const Expect& ex) {
   fresh(block);
   MachineSim t(block, Point{}, MachineSwitches{});
-  WishboneMaster m(t, 7, false, 0);
+  const auto master = make_master(block.bus(), t, 7, false, 0);
+  BusMaster& m = *master;
   MotionDriver d(m, 7);
   constexpr std::uint32_t kFilter = 4;
   d.set_inputs(0, kFilter, 1, 0);
@@ -97,7 +98,8 @@ void limit_hard(BusTarget& block, const Expect& ex) {
   sw.active_low = in_bit("limit_x_pos");  // wired active low, IN_POLARITY says so
   LimitWatch w(block);
   MachineSim t(w, Point{}, sw);
-  WishboneMaster m(t, 11, true, 10);
+  const auto master = make_master(block.bus(), t, 11, true, 10);
+  BusMaster& m = *master;
   MotionDriver d(m, 11);
   d.set_inputs(in_bit("limit_x_pos"), 3, 1, 0);
   queue_unpaced(d, Point{2000, 500, 0}, 8);
@@ -130,7 +132,8 @@ void limit_decel(BusTarget& block, const Expect& ex) {
   MachineSwitches sw;
   sw.limit_neg[1] = -200;
   MachineSim t(block, Point{}, sw);
-  WishboneMaster m(t, 13, false, 0);
+  const auto master = make_master(block.bus(), t, 13, false, 0);
+  BusMaster& m = *master;
   MotionDriver d(m, 13);
   d.set_pacing(kAccel, kVmin);
   d.set_inputs(0, 2, 1, field_bit("IN_MODE", "limit_decel"));
@@ -160,9 +163,11 @@ void home_each_axis(BusTarget& block, const Expect& outer) {
   sw.active_low = in_bit("home_y");
   const Point start{-840, 640, -340};
   MachineSim t(block, start, sw);
-  WishboneMaster m(t, 17, false, 0);
+  const auto master = make_master(block.bus(), t, 17, false, 0);
+  BusMaster& m = *master;
   MotionDriver d(m, 17);
-  d.set_pacing(kAccel << 2, kVmin);  // braking from the search speed: 8 steps
+  d.read_build();
+  if (d.pacer()) d.set_pacing(kAccel << 2, kVmin);  // braking from the search speed: 8 steps (no pacer: none)
   d.set_inputs(in_bit("home_y"), 3, 1, 0);
   d.preset(Point{5000, -5000, 12});  // the block's count: anything before homing
   const std::array<std::int64_t, 3> home_at{-900, 700, -400};
@@ -199,7 +204,8 @@ void probing(BusTarget& block, const Expect& ex) {
   MachineSwitches sw;
   sw.probe_z = -20;
   MachineSim t(block, Point{}, sw);
-  WishboneMaster m(t, 19, true, 5);
+  const auto master = make_master(block.bus(), t, 19, true, 5);
+  BusMaster& m = *master;
   MotionDriver d(m, 19);
   d.set_pacing(kAccel, kVmin);
   d.set_inputs(0, 2, 3, 0);
@@ -277,7 +283,8 @@ void snapshot_edges(BusTarget& block, const Expect& ex) {
     fresh(block);
     MachineSim t(block, Point{}, MachineSwitches{});
     record_snapshots(t, hist);
-    WishboneMaster m(t, 31, false, 0);
+    const auto master = make_master(block.bus(), t, 31, false, 0);
+    BusMaster& m = *master;
     MotionDriver d(m, 31);
     queue_unpaced(d, Point{400, 300, 0}, 3);
     queue_unpaced(d, Point{-20, 10, 0}, 3);
@@ -352,7 +359,8 @@ void snapshot_moving(BusTarget& block, const Expect& ex) {
         Rec{reg32(t, "pos_x_q"), reg32(t, "pos_y_q"), std::uint32_t(reg32(t, "level_q")),
             std::uint32_t(reg32(t, "done_count_q"))};
   };
-  WishboneMaster m(t, 23, false, 30);
+  const auto master = make_master(block.bus(), t, 23, false, 30);
+  BusMaster& m = *master;
   MotionDriver d(m, 23);
   for (int k = 0; k < 3; ++k) queue_unpaced(d, Point{900, 700, 0}, 3);
   int moving = 0;
@@ -378,7 +386,8 @@ void snapshot_moving(BusTarget& block, const Expect& ex) {
 void glitches(BusTarget& block, const Expect& outer) {
   fresh(block);
   MachineSim t(block, Point{}, MachineSwitches{});
-  WishboneMaster m(t, 29, false, 0);
+  const auto master = make_master(block.bus(), t, 29, false, 0);
+  BusMaster& m = *master;
   MotionDriver d(m, 29);
   constexpr int kSw = 6, kProbe = 3;
   d.set_inputs(0, kSw, kProbe,
