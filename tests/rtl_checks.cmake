@@ -151,6 +151,26 @@ dda_rtl_test(netlist.post_synthesis NEEDS YOSYS IVERILOG VVP
              COMMAND ${_dda_scripts}/netlist-sim.sh --mutants 0 ${_dda_bvec}/paper ${_dda_bvec}/abort)
 set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_paper;bvec_abort"
                      LABELS "rtl;motion;netlist;long" TIMEOUT 900 ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
+# The board top (rtl/board/, docs/board.md): its pins and settings against docs/board.md
+# (tests/check-board.py); its RTL on the board's five vector sets (scripts/board-sets.sh:
+# the block behind SPI in the board's build), every pin and register on every cycle, on
+# Icarus (about 20 s). Its bitstream and both netlists on the same sets with the LUT
+# mutants: the long lane (scripts/bitstream.sh, scripts/board-sim.sh; about an hour).
+add_test(NAME board.pins COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check-board.py ${PROJECT_BINARY_DIR})
+set_tests_properties(board.pins PROPERTIES LABELS "docs;board")
+set(_dda_board_sets ${CMAKE_CURRENT_BINARY_DIR}/board_sets)
+add_test(NAME board.gen_sets COMMAND ${_dda_scripts}/board-sets.sh ${_dda_board_sets})
+set_tests_properties(board.gen_sets PROPERTIES FIXTURES_SETUP board_sets LABELS "rtl;motion;board"
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
+set(_dda_board_set_dirs ${_dda_board_sets}/program ${_dda_board_sets}/hold ${_dda_board_sets}/softstop
+    ${_dda_board_sets}/estop ${_dda_board_sets}/homing)
+dda_rtl_test(board.rtl NEEDS IVERILOG VVP COMMAND ${_dda_scripts}/board-sim.sh --netlist rtl ${_dda_board_set_dirs})
+set_tests_properties(board.rtl PROPERTIES FIXTURES_REQUIRED board_sets LABELS "rtl;motion;board"
+                     ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
+dda_rtl_test(board.netlists NEEDS YOSYS NEXTPNR ICEPACK ICETIME IVERILOG VVP
+             COMMAND ${_dda_scripts}/board-sim.sh --netlist all --mutants 20 ${_dda_board_set_dirs})
+set_tests_properties(board.netlists PROPERTIES FIXTURES_REQUIRED board_sets LABELS "rtl;motion;board;netlist;long"
+                     TIMEOUT 7200 ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
 # The pacer's comparisons at their thresholds on the bus: on a clock of 2^20 Hz the entry
 # speeds and the acceleration are whole fields, the cruise speed exactly one ramp step
 # above the minimum speed, and two ramp steps less one unit (tests/test_pace.cpp checks

@@ -1,0 +1,167 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The board top (rtl/board/dda_hx8k_evn.v) against the golden vectors, as RTL and as its
+# two netlists, on Icarus: the bench tb/hdl/dda_board_tb.v compares every pin on every
+# cycle (and, where the netlist keeps their names, the set's registers) with a vector set
+# of the block behind its SPI bridge in the board's build (`dda vectors --bus --bridge
+# spi --build pacer=0`; docs/board.md, "Checked by simulation").
+#   usage: scripts/board-sim.sh [--netlist rtl|synth|routed|all] [--mutants N] [--seed S] SET...
+#   rtl     the RTL, with Yosys' model of SB_IO (registers compared too);
+#   synth   the post-synthesis netlist: the JSON scripts/bitstream.sh placed and routed,
+#           written out as Verilog (write_verilog -noattr), with Yosys' models of the cells
+#           it uses (registers compared too);
+#   routed  the routed bitstream's own netlist: icebox_vlog of the .asc scripts/bitstream.sh
+#           wrote (pins only: it keeps no register names);
+#   all     the three in turn (the default).
+# The PLL is the bench's model (tb/hdl/dda_board_pll.v). --mutants N (0 or more) then
+# shows on the post-synthesis netlist that the comparison can fail: the netlist with the
+# LUT that drives step_x_o inverted, with the LUT at the D of the SPI bridge's MISO
+# register (the bit a read shifts out) inverted, and N netlists each with one bit of one
+# random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default 1):
+# the first two, run on the first set, must fail; each random one runs on the sets in
+# turn until one fails, and the script reports how many fail. Runs scripts/bitstream.sh
+# first when its outputs are missing or older than the sources. Exit 1 when a set fails or a directed mutant passes.
+# Work files in $DDA_BUILD_DIR/board_sim.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${DDA_BUILD_DIR:-$root/build}
+which=all mutants=-1 seed=1
+usage="usage: $0 [--netlist rtl|synth|routed|all] [--mutants N] [--seed S] SET..."
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --netlist) which=$2; shift 2 ;;
+    --mutants) mutants=$2; shift 2 ;;
+    --seed) seed=$2; shift 2 ;;
+    -*) echo "$usage" >&2; exit 2 ;;
+    *) break ;;
+  esac
+done
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
+case "$which" in rtl|synth|routed|all) ;; *) echo "board-sim: --netlist is rtl, synth, routed or all, not '$which'" >&2; exit 2 ;; esac
+[[ "$mutants" =~ ^(-1|[0-9]+)$ ]] || { echo "board-sim: --mutants takes a count, not '$mutants'" >&2; exit 2; }
+[[ "$seed" =~ ^[0-9]+$ ]] || { echo "board-sim: --seed takes a whole number, not '$seed'" >&2; exit 2; }
+mkdir -p "$build" && build=$(cd "$build" && pwd)
+for tool in yosys iverilog vvp python3 icebox_vlog; do
+  command -v "$tool" >/dev/null || { echo "board-sim: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
+done
+top=dda_hx8k_evn
+# The board's build: the top's "Board build:" line, and its RTL parameters.
+board_build=$(sed -n 's|^// Board build: *||p' "$root/rtl/board/$top.v")
+[ -n "$board_build" ] || { echo "board-sim: no \"Board build:\" line in rtl/board/$top.v" >&2; exit 1; }
+[ -x "$build/bin/dda" ] || "$root/scripts/build.sh" >/dev/null
+board_params=$("$build/bin/dda" build "$board_build")
+sets=()
+for s in "$@"; do
+  [ -f "$s/manifest.json" ] || { echo "board-sim: $s is not a vector set (no manifest.json)" >&2; exit 2; }
+  read -r b spec < <(python3 -c 'import json,sys; m = json.load(open(sys.argv[1])); print(m.get("bus", "wishbone"), m.get("build", "default"))' "$s/manifest.json")
+  [ "$b" = spi ] || { echo "board-sim: $s is a $b set: the board's block is behind its SPI bridge (--bridge spi)" >&2; exit 2; }
+  [ "$spec" != default ] && [ "$("$build/bin/dda" build "$spec")" = "$board_params" ] ||
+    { echo "board-sim: $s is of the build '$spec', not the board's ($board_build: --build $board_build)" >&2; exit 2; }
+  sets+=("$(cd "$s" && pwd)")
+done
+work=$build/board_sim
+mkdir -p "$work"
+cd "$root"
+# The netlists of the sources as they are: scripts/bitstream.sh again when its outputs are
+# missing or older than a source, the pins or the script.
+if [ "$which" != rtl ] || [ "$mutants" -ge 0 ]; then
+  stale=0
+  [ -f "$build/board/$top.json" ] && [ -f "$build/board/$top.asc" ] || stale=1
+  for f in $(scripts/rtl-files.sh rtl/board/$top.f) rtl/*.vh "rtl/board/$top.pcf" scripts/bitstream.sh; do
+    [ "$stale" = 1 ] || [ ! "$f" -nt "$build/board/$top.asc" ] || stale=1
+  done
+  [ "$stale" = 0 ] || "$root/scripts/bitstream.sh"
+fi
+
+bin=$(command -v yosys)
+cells_sim=$(cd "$(dirname "$(readlink -f "$bin")")/../share/yosys/ice40" && pwd)/cells_sim.v
+# Yosys' models of the cells a netlist uses but the PLL (the bench's), from the installed
+# ice40/cells_sim.v (the whole file has parts Icarus rejects): its header's macros
+# without the ports' default values, then each module.
+models() {  # models NETLIST OUT [extra cell ...]
+  local used m
+  used=$( (grep -oE '^ *SB_[A-Z0-9_]+' "$1" | tr -d ' '; shift 2; printf '%s\n' "$@") | sort -u | grep -v '^SB_PLL40_CORE$' || true)
+  {
+    echo '`timescale 1ps / 1ps'
+    echo '`define SB_DFF_INIT initial Q = 0;'
+    echo '`define NO_ICE40_DEFAULT_ASSIGNMENTS'
+    awk '/^`ifndef NO_ICE40_DEFAULT_ASSIGNMENTS/ {p = 1} p {print} p && /^`endif/ {exit}' "$cells_sim"
+    for m in $used; do
+      awk -v m="$m" '$0 ~ "^module " m " *\\(" {p = 1} p {print} p && /^endmodule/ {p = 0}' "$cells_sim"
+    done
+  } >"$2"
+}
+compile() {  # compile OUT.vvp DEFINES SOURCES...
+  local out=$1 defs=$2
+  shift 2
+  # shellcheck disable=SC2086
+  iverilog -g2012 $defs -Irtl -Itb/hdl -o "$out" tb/hdl/dda_board_tb.v tb/hdl/dda_board_pll.v "$@" \
+    2>"$work/iverilog.log" || { grep -v warning "$work/iverilog.log" >&2; exit 1; }
+}
+run() {  # run VVP SET: 0 when the bench passes
+  vvp -n "$1" +vectors="$2" >"$work/run.log" 2>&1 && grep -q "dda_board_tb: PASS" "$work/run.log"
+}
+status=0
+run_sets() {  # run_sets NAME VVP
+  local s t0
+  for s in "${sets[@]}"; do
+    t0=$(date +%s.%N)
+    if run "$2" "$s"; then
+      echo "$1: $(grep "dda_board_tb: PASS" "$work/run.log" | sed 's/^dda_board_tb: //') in $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}') s"
+    else
+      echo "$1: FAIL on $s:" >&2; tail -3 "$work/run.log" >&2; status=1
+    fi
+  done
+}
+
+if [ "$which" = rtl ] || [ "$which" = all ]; then
+  models /dev/null "$work/cells_rtl.v" SB_IO
+  # shellcheck disable=SC2046
+  compile "$work/rtl.vvp" "-DDDA_BOARD_REGS" $(scripts/rtl-files.sh rtl/board/$top.f) "$work/cells_rtl.v"
+  run_sets rtl "$work/rtl.vvp"
+fi
+if [ "$which" = synth ] || [ "$which" = all ] || [ "$mutants" -ge 0 ]; then
+  yosys -q -p "read_json $build/board/$top.json; write_verilog -noattr $work/synth.v" >/dev/null
+  models "$work/synth.v" "$work/cells_synth.v"
+fi
+if [ "$which" = synth ] || [ "$which" = all ]; then
+  compile "$work/synth.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/synth.v" "$work/cells_synth.v"
+  run_sets "post-synthesis netlist" "$work/synth.vvp"
+fi
+if [ "$which" = routed ] || [ "$which" = all ]; then
+  # (icebox_vlog reads set_io lines without nextpnr's -pullup option.)
+  sed 's/-pullup yes //' "rtl/board/$top.pcf" >"$work/pins.pcf"
+  icebox_vlog -s -c -d ct256 -n "$top" -p "$work/pins.pcf" "$build/board/$top.asc" >"$work/routed.v"
+  models "$work/routed.v" "$work/cells_routed.v"
+  compile "$work/routed.vvp" "" "$work/routed.v" "$work/cells_routed.v"
+  run_sets "routed netlist" "$work/routed.vvp"
+fi
+[ "$mutants" -ge 0 ] || exit $status
+
+first=${sets[0]}
+for net in step_x_o "\\u_block.u_bridge.miso_q"; do
+  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$work/mutant.v" --drives "$net")
+  compile "$work/mutant.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/mutant.v" "$work/cells_synth.v"
+  if run "$work/mutant.vvp" "$first"; then
+    echo "mutant (drives $net) $what: PASSED: the comparison did not see it" >&2; status=1
+  else
+    echo "mutant (drives $net) $what: fails ($(grep -m1 -E "MISMATCH|FAIL" "$work/run.log" | cut -c1-100))"
+  fi
+done
+killed=0
+for ((k = 0; k < mutants; k++)); do
+  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$work/mutant.v" --random $((seed + k)))
+  compile "$work/mutant.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/mutant.v" "$work/cells_synth.v"
+  seen=""
+  for s in "${sets[@]}"; do
+    run "$work/mutant.vvp" "$s" || { seen=$(basename "$s"); break; }
+  done
+  if [ -n "$seen" ]; then
+    killed=$((killed + 1))
+    echo "random mutant $((seed + k)): $what: fails on $seen"
+  else
+    echo "random mutant $((seed + k)): $what: passes every set"
+  fi
+done
+echo "random single-LUT mutants: $killed of $mutants fail on one of the sets"
+exit $status
