@@ -255,6 +255,16 @@ BusOptions bus_options(const BusCli& c) {
     if (!b.build.inputs) throw InputError("--io-scenario needs the machine inputs: the build has none (inputs=0)");
     b.io_scenario = c.io_scenario;
     b.bridge = c.bridge == "axil" ? motion::Bus::axil : c.bridge == "spi" ? motion::Bus::spi : motion::Bus::wishbone;
+    const unsigned needs = motion::find_io_scenario(c.io_scenario)->needs;
+    const std::string which = "--io-scenario " + c.io_scenario;
+    if ((needs & motion::kNeedsPacer) && !b.build.pacer)
+      throw InputError(which + " needs the pacer (its ramped stops, its registers): the build has none (pacer=0)");
+    if ((needs & motion::kNeedsZ) && b.build.axes == 2)
+      throw InputError(which + " moves or reads the third axis: the build has two axes (axes=2)");
+    if ((needs & motion::kNeedsFastBus) && b.bridge == motion::Bus::spi)
+      throw InputError(which +
+                       " times its accesses closer than an SPI frame (some 300 clocks): run it on Wishbone "
+                       "or --bridge axil");
     return b;
   }
   b.bridge = c.bridge == "axil" ? motion::Bus::axil : c.bridge == "spi" ? motion::Bus::spi : motion::Bus::wishbone;

@@ -5,30 +5,34 @@
 # cycle (and, where the netlist keeps their names, the set's registers) with a vector set
 # of the block behind its SPI bridge in the board's build (`dda vectors --bus --bridge
 # spi --build pacer=0`; docs/board.md, "Checked by simulation").
-#   usage: scripts/board-sim.sh [--netlist rtl|synth|routed|all] [--mutants N] [--seed S] SET...
+#   usage: scripts/board-sim.sh [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S] SET...
 #   rtl     the RTL, with Yosys' model of SB_IO (registers compared too);
 #   synth   the post-synthesis netlist: the JSON scripts/bitstream.sh placed and routed,
 #           written out as Verilog (write_verilog -noattr), with Yosys' models of the cells
 #           it uses (registers compared too);
 #   routed  the routed bitstream's own netlist: icebox_vlog of the .asc scripts/bitstream.sh
 #           wrote (pins only: it keeps no register names);
-#   all     the three in turn (the default).
+#   all     the three in turn (the default);
+#   none    none of them (with --mutants: the mutants alone).
 # The PLL is the bench's model (tb/hdl/dda_board_pll.v). --mutants N (0 or more) then
-# shows on the post-synthesis netlist that the comparison can fail: the netlist with the
+# shows that the comparison can fail: the routed netlist with the LUT that drives
+# step_x_o inverted (with routed or all), and on the post-synthesis netlist: the netlist with the
 # LUT that drives step_x_o inverted, with the LUT at the D of the SPI bridge's MISO
 # register (the bit a read shifts out) inverted, and N netlists each with one bit of one
 # random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default 1):
 # the first two, run on the first set, must fail; each random one runs on the sets in
-# turn until one fails, and the script reports how many fail. Runs scripts/bitstream.sh
+# turn, shortest first, until one fails (two at a time with GNU parallel), and the
+# script reports how many fail. Runs scripts/bitstream.sh
 # first when its outputs are missing or older than the sources. Exit 1 when a set fails or a directed mutant passes.
 # Work files in $DDA_BUILD_DIR/board_sim.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
 which=all mutants=-1 seed=1
-usage="usage: $0 [--netlist rtl|synth|routed|all] [--mutants N] [--seed S] SET..."
+usage="usage: $0 [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S] SET..."
 while [ $# -gt 0 ]; do
   case "$1" in
+    --netlist|--mutants|--seed) [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; } ;;&
     --netlist) which=$2; shift 2 ;;
     --mutants) mutants=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
@@ -37,11 +41,14 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
-case "$which" in rtl|synth|routed|all) ;; *) echo "board-sim: --netlist is rtl, synth, routed or all, not '$which'" >&2; exit 2 ;; esac
+case "$which" in rtl|synth|routed|all|none) ;; *) echo "board-sim: --netlist is rtl, synth, routed, all or none, not '$which'" >&2; exit 2 ;; esac
 [[ "$mutants" =~ ^(-1|[0-9]+)$ ]] || { echo "board-sim: --mutants takes a count, not '$mutants'" >&2; exit 2; }
 [[ "$seed" =~ ^[0-9]+$ ]] || { echo "board-sim: --seed takes a whole number, not '$seed'" >&2; exit 2; }
+[ "$which" != none ] || [ "$mutants" -ge 0 ] || { echo "board-sim: --netlist none runs only --mutants N" >&2; exit 2; }
 mkdir -p "$build" && build=$(cd "$build" && pwd)
-for tool in yosys iverilog vvp python3 icebox_vlog; do
+tools="iverilog vvp python3"
+[ "$which" = rtl ] && [ "$mutants" -lt 0 ] || tools="$tools yosys icebox_vlog"
+for tool in $tools; do
   command -v "$tool" >/dev/null || { echo "board-sim: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done
 top=dda_hx8k_evn
@@ -53,6 +60,7 @@ board_params=$("$build/bin/dda" build "$board_build")
 sets=()
 for s in "$@"; do
   [ -f "$s/manifest.json" ] || { echo "board-sim: $s is not a vector set (no manifest.json)" >&2; exit 2; }
+  case "$(cd "$s" && pwd)" in *[[:space:]]*) echo "board-sim: a set's path has a space: '$s'" >&2; exit 2 ;; esac
   read -r b spec < <(python3 -c 'import json,sys; m = json.load(open(sys.argv[1])); print(m.get("bus", "wishbone"), m.get("build", "default"))' "$s/manifest.json")
   [ "$b" = spi ] || { echo "board-sim: $s is a $b set: the board's block is behind its SPI bridge (--bridge spi)" >&2; exit 2; }
   [ "$spec" != default ] && [ "$("$build/bin/dda" build "$spec")" = "$board_params" ] ||
@@ -64,7 +72,7 @@ mkdir -p "$work"
 cd "$root"
 # The netlists of the sources as they are: scripts/bitstream.sh again when its outputs are
 # missing or older than a source, the pins or the script.
-if [ "$which" != rtl ] || [ "$mutants" -ge 0 ]; then
+if { [ "$which" != rtl ] && [ "$which" != none ]; } || [ "$mutants" -ge 0 ]; then
   stale=0
   [ -f "$build/board/$top.json" ] && [ -f "$build/board/$top.asc" ] || stale=1
   for f in $(scripts/rtl-files.sh rtl/board/$top.f) rtl/*.vh "rtl/board/$top.pcf" scripts/bitstream.sh; do
@@ -135,11 +143,20 @@ if [ "$which" = routed ] || [ "$which" = all ]; then
   models "$work/routed.v" "$work/cells_routed.v"
   compile "$work/routed.vvp" "" "$work/routed.v" "$work/cells_routed.v"
   run_sets "routed netlist" "$work/routed.vvp"
+  if [ "$mutants" -ge 0 ]; then  # the routed netlist with the LUT that drives step_x_o inverted
+    what=$(python3 scripts/netlist_mutants.py "$work/routed.v" "$work/routed_mutant.v" --routed-drives step_x_o)
+    compile "$work/routed_mutant.vvp" "" "$work/routed_mutant.v" "$work/cells_routed.v"
+    if run "$work/routed_mutant.vvp" "${sets[0]}"; then
+      echo "routed mutant (drives step_x_o) $what: PASSED: the comparison did not see it" >&2; status=1
+    else
+      echo "routed mutant (drives step_x_o) $what: fails ($(grep -m1 -E "MISMATCH|FAIL" "$work/run.log" | cut -c1-100))"
+    fi
+  fi
 fi
 [ "$mutants" -ge 0 ] || exit $status
 
 first=${sets[0]}
-for net in step_x_o "\\u_block.u_bridge.miso_q"; do
+for net in step_x_o "\\u_block.u_bridge.spi_miso_o "; do
   what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$work/mutant.v" --drives "$net")
   compile "$work/mutant.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/mutant.v" "$work/cells_synth.v"
   if run "$work/mutant.vvp" "$first"; then
@@ -148,20 +165,33 @@ for net in step_x_o "\\u_block.u_bridge.miso_q"; do
     echo "mutant (drives $net) $what: fails ($(grep -m1 -E "MISMATCH|FAIL" "$work/run.log" | cut -c1-100))"
   fi
 done
-killed=0
-for ((k = 0; k < mutants; k++)); do
-  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$work/mutant.v" --random $((seed + k)))
-  compile "$work/mutant.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/mutant.v" "$work/cells_synth.v"
-  seen=""
-  for s in "${sets[@]}"; do
-    run "$work/mutant.vvp" "$s" || { seen=$(basename "$s"); break; }
+# The random mutants, two at a time (GNU parallel, when installed), each on the sets
+# from the shortest up until one fails.
+by_size=$(for s in "${sets[@]}"; do echo "$((16#$(cat "$s/counts.hex"))) $s"; done | sort -n | cut -d' ' -f2- | tr '\n' ' ')
+one_mutant() {  # one_mutant K: prints its line
+  local k=$1 m=$work/mutant$1 seen="" what s
+  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$m.v" --random "$k") || { echo "random mutant $k: not made"; return; }
+  iverilog -g2012 -DDDA_BOARD_REGS -DDDA_BOARD_NETLIST -Irtl -Itb/hdl -o "$m.vvp" tb/hdl/dda_board_tb.v \
+    tb/hdl/dda_board_pll.v "$m.v" "$work/cells_synth.v" 2>/dev/null || { echo "random mutant $k: does not compile"; return; }
+  for s in $by_size; do
+    if ! vvp -n "$m.vvp" +vectors="$s" >"$m.log" 2>&1 || ! grep -q "dda_board_tb: PASS" "$m.log"; then
+      seen=$(basename "$s")
+      break
+    fi
   done
-  if [ -n "$seen" ]; then
-    killed=$((killed + 1))
-    echo "random mutant $((seed + k)): $what: fails on $seen"
+  rm -f "$m.v" "$m.vvp" "$m.log"
+  if [ -n "$seen" ]; then echo "random mutant $k: $what: fails on $seen"; else echo "random mutant $k: $what: passes every set"; fi
+}
+: >"$work/mutants.txt"
+if [ "$mutants" -gt 0 ]; then
+  if parallel --version 2>/dev/null | grep -q "GNU parallel"; then
+    export -f one_mutant
+    export work by_size
+    seq "$seed" $((seed + mutants - 1)) | SHELL=$(command -v bash) parallel -j 2 -k one_mutant {} >"$work/mutants.txt"
   else
-    echo "random mutant $((seed + k)): $what: passes every set"
+    for ((k = seed; k < seed + mutants; k++)); do one_mutant "$k"; done >"$work/mutants.txt"
   fi
-done
-echo "random single-LUT mutants: $killed of $mutants fail on one of the sets"
+  cat "$work/mutants.txt"
+fi
+XX
 exit $status

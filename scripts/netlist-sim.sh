@@ -8,9 +8,8 @@
 # cycle, as scripts/vector-bench.sh --bus does for the RTL.
 #   usage: scripts/netlist-sim.sh [--build SPEC] [--mutants N] [--seed S] SET...
 # The sets must share one bus (their manifests' "bus": the block's top, as in
-# vector-bench.sh) and be of the build synthesized: `dda vectors --bus` writes the
-# default build's sets only, so --build is for sets whose behaviour the build does not
-# change (none of Z, none of the inputs). --mutants N (0 or more) then shows that the comparison can fail: the netlist
+# vector-bench.sh) and one build (their manifests' "build": `dda vectors --bus --build`),
+# which the script synthesizes; --build SPEC, when given, must be that build. --mutants N (0 or more) then shows that the comparison can fail: the netlist
 # with the LUT that drives step_x_o inverted, with the LUT at the D of the register of
 # read data bit 0 (dat_q[0], Wishbone only) inverted, and N netlists each with one bit of
 # one random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default
@@ -40,14 +39,23 @@ for tool in yosys iverilog vvp python3; do
   command -v "$tool" >/dev/null || { echo "netlist-sim: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done
 sets=()
-bus=""
+bus="" set_build=""
 for s in "$@"; do
   [ -f "$s/manifest.json" ] || { echo "netlist-sim: $s is not a vector set (no manifest.json)" >&2; exit 2; }
   b=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("bus", "wishbone"))' "$s/manifest.json")
   [ -z "$bus" ] || [ "$b" = "$bus" ] || { echo "netlist-sim: $s is a $b set, the first a $bus one" >&2; exit 2; }
   bus=$b
+  sb=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("build", ""))' "$s/manifest.json")
+  [ ${#sets[@]} = 0 ] || [ "$sb" = "$set_build" ] || { echo "netlist-sim: $s is of the build '$sb', the first of '$set_build'" >&2; exit 2; }
+  set_build=$sb
   sets+=("$(cd "$s" && pwd)")
 done
+# The sets' build (an older set names none: the default), and --build agreeing with it.
+[ -x "$build/bin/dda" ] || "$root/scripts/build.sh" >/dev/null
+if [ -n "$spec" ] && [ "$("$build/bin/dda" build "$spec")" != "$("$build/bin/dda" build "$set_build")" ]; then
+  echo "netlist-sim: --build $spec is not the sets' build (${set_build:-the default})" >&2; exit 2
+fi
+spec=$set_build
 case "$bus" in
   wishbone) top=dda_motion defs=() ;;
   axil|spi) top=dda_motion_$bus defs=("-DDDA_BVEC_$(echo "$bus" | tr a-z A-Z)") ;;

@@ -6,10 +6,14 @@ one bit, so that a simulation against the golden vectors shows whether it can fa
 
   usage: netlist_mutants.py NETLIST OUT --drives NET [--bit K]
          netlist_mutants.py NETLIST OUT --random SEED
+         netlist_mutants.py NETLIST OUT --routed-drives PORT
 --drives NET changes the LUT whose output is NET (a port such as step_x_o), or, when a
 flip-flop's Q is NET (a register such as dat_q[0]), the LUT at that flip-flop's D;
 --bit K flips bit K of its init, --bit all every bit (the LUT's output inverted, for
 any input; the default). --random picks a LUT and one bit from SEED. Prints the LUT's instance name, the bit and the inits.
+--routed-drives PORT works on icebox_vlog's netlist of a routed bitstream, where a LUT is
+`assign nK = /* LUT x y z */ EXPR;`: it inverts the LUT whose net the port is assigned
+from (`assign PORT = nK;`) and prints the LUT's place.
 """
 import random
 import re
@@ -23,11 +27,24 @@ def port(body, name):
     return m.group(1).strip() if m else None
 
 
+def routed(text, out, port_name):
+    m = re.search(r"assign\s+" + re.escape(port_name) + r"\s*=\s*(n\d+)\s*;", text)
+    if m is None:
+        sys.exit("netlist_mutants: the routed netlist assigns no net to " + port_name)
+    lut = re.search(r"(assign\s+" + m.group(1) + r"\s*=\s*/\* LUT ([^*]*)\*/\s*)(.*?);", text)
+    if lut is None:
+        sys.exit("netlist_mutants: no LUT drives %s (%s)" % (port_name, m.group(1)))
+    open(out, "w").write(text[:lut.start(3)] + "!(" + lut.group(3) + ")" + text[lut.end(3):])
+    print("LUT %s(%s) inverted" % (m.group(1), lut.group(2).strip()))
+
+
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
     src, out, mode = argv[1], argv[2], argv[3]
     text = open(src).read()
+    if mode == "--routed-drives":
+        return routed(text, out, argv[4])
     luts = list(LUT.finditer(text))
     if not luts:
         sys.exit("netlist_mutants: no SB_LUT4 in " + src)

@@ -52,6 +52,14 @@ bridge=wishbone
 if [ "$bus" = 1 ]; then
   bridge=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("bus", "wishbone"))' \
     "$set_dir/manifest.json")
+  # The bench runs the RTL at its default parameters: a set of another build is refused.
+  set_build=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("build", ""))' "$set_dir/manifest.json")
+  if [ -n "$set_build" ]; then
+    [ -x "$build/bin/dda" ] || "$root/scripts/build.sh" >/dev/null
+    [ "$("$build/bin/dda" build "$set_build")" = "$("$build/bin/dda" build "")" ] ||
+      { echo "vector-bench: $set_dir is a set of the build $set_build: the bench runs the default build" \
+          "(scripts/netlist-sim.sh and scripts/board-sim.sh take other builds)" >&2; exit 2; }
+  fi
   case "$bridge" in
     wishbone) out="${out}_bus" ;;
     axil|spi) out="${out}_$bridge"; defs+=("-DDDA_BVEC_$(echo "$bridge" | tr a-z A-Z)") ;;

@@ -25,11 +25,11 @@ DOC = ROOT / "docs/board.md"
 
 
 def ports(text):
-    """The top's ports as {name: width}."""
+    """The top's ports as {name: (width, direction)}."""
     head = text[text.index("module dda_hx8k_evn"):text.index(");", text.index(") (")) + 2]
     out = {}
     for m in re.finditer(r"\b(input|output|inout)\s+wire\s*(\[(\d+):0\])?\s*(\w+)", head):
-        out[m.group(4)] = int(m.group(3)) + 1 if m.group(3) else 1
+        out[m.group(4)] = (int(m.group(3)) + 1 if m.group(3) else 1, m.group(1))
     return out
 
 
@@ -37,8 +37,8 @@ def bits(name, width):
     return [name] if width == 1 else ["%s[%d]" % (name, i) for i in range(width)]
 
 
-def pcf_pins(text):
-    """{port bit: (ball, pulled up)} from the set_io lines."""
+def pcf_pins(text, errors):
+    """{port bit: (ball, pulled up)} from the set_io lines (a port given twice: an error)."""
     pins = {}
     for line in text.splitlines():
         line = line.split("#")[0].split()
@@ -46,13 +46,16 @@ def pcf_pins(text):
             continue
         pull = "-pullup" in line and line[line.index("-pullup") + 1] == "yes"
         rest = [w for i, w in enumerate(line[1:], 1) if not w.startswith("-") and line[i - 1] != "-pullup"]
+        if rest[0] in pins:
+            errors.append("%s: two set_io lines" % rest[0])
         pins[rest[0]] = (rest[1], pull)
     return pins
 
 
-def doc_pins(text):
-    """{port bit: (ball, pulled up, header pin)} from the table of docs/board.md whose
-    header is | port | ball | header pin | direction | pull-up | ..."""
+def doc_pins(text, errors):
+    """{port bit: (ball, pulled up, header pin, direction)} from the table of
+    docs/board.md whose header is | port | ball | header pin | direction | pull-up | ...
+    (a port in two rows: an error)"""
     pins, on = {}, False
     for line in text.splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")] if line.startswith("|") else None
@@ -67,7 +70,9 @@ def doc_pins(text):
         if set(cells[0]) <= set("-: "):
             continue
         name = cells[0].strip("`")
-        pins[name] = (cells[1], cells[4] == "yes", cells[2])
+        if name in pins:
+            errors.append("%s: two rows in the pin table of docs/board.md" % name)
+        pins[name] = (cells[1], cells[4] == "yes", cells[2], cells[3])
     return pins
 
 
@@ -77,10 +82,15 @@ def main():
     build = Path(sys.argv[1])
     errors = []
     top = TOP.read_text()
-    want = [b for n, w in ports(top).items() for b in bits(n, w)]
-    pcf = pcf_pins(PCF.read_text())
+    port_dirs = {b: d for n, (w, d) in ports(top).items() for b in bits(n, w)}
+    want = list(port_dirs)
+    pcf = pcf_pins(PCF.read_text(), errors)
     doc_text = DOC.read_text()
-    doc = doc_pins(doc_text)
+    doc = doc_pins(doc_text, errors)
+    # The direction column: "in", or "out" (an inout of the top is an output with an enable).
+    for b, d in port_dirs.items():
+        if b in doc and doc[b][3].split()[0] != ("in" if d == "input" else "out"):
+            errors.append("%s: docs/board.md says '%s', the top has an %s" % (b, doc[b][3], d))
     for b in want:
         if b not in pcf:
             errors.append("%s: no set_io line in %s" % (b, PCF.name))
@@ -112,21 +122,28 @@ def main():
         return int(m.group(1).replace("_", "")) if m else None
     hz = param("ClockHz")
     mhz = hz / 1e6
-    out = subprocess.run(["icepll", "-i", "12", "-o", "%g" % mhz], capture_output=True, text=True).stdout
+    try:
+        out = subprocess.run(["icepll", "-i", "12", "-o", "%g" % mhz], capture_output=True, text=True).stdout
+    except FileNotFoundError:
+        sys.exit("check-board: icepll not found (scripts/setup.sh installs IceStorm)")
     got = {k: int(re.search(k + r":\s+(\d+)", out).group(1)) for k in ("DIVR", "DIVF", "DIVQ", "FILTER_RANGE")}
     if "%.3f MHz (achieved)" % mhz not in out:
         errors.append("icepll does not reach %g MHz exactly from 12 MHz" % mhz)
     for k, p in (("DIVR", "PllDivr"), ("DIVF", "PllDivf"), ("DIVQ", "PllDivq"), ("FILTER_RANGE", "PllFilter")):
         if param(p) != got[k]:
             errors.append("%s is %s, icepll -i 12 -o %g gives %s %d" % (p, param(p), mhz, k, got[k]))
-    if "%g MHz" % mhz not in doc_text:
-        errors.append("docs/board.md does not state the board's clock, %g MHz" % mhz)
+    if "**%g MHz**" % mhz not in doc_text or "icepll -i 12 -o %g" % mhz not in doc_text:
+        errors.append("docs/board.md does not state the board's clock, **%g MHz** (icepll -i 12 -o %g)" % (mhz, mhz))
 
     # The board's build: the instance's parameters are dda build's.
     spec = re.search(r"^// Board build: *(\S+)", top, re.M).group(1)
     dda = build / "bin/dda"
     def build_params(s):
-        run = subprocess.run([str(dda), "build", s], capture_output=True, text=True, check=True)
+        if not dda.exists():
+            sys.exit("check-board: %s not built" % dda)
+        run = subprocess.run([str(dda), "build", s], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit("check-board: dda build '%s': %s" % (s, run.stderr.strip()))
         return dict(line.split() for line in run.stdout.splitlines())
     params, defaults = build_params(spec), build_params("")
     inst = top[top.index("dda_motion_spi #("):top.index(") u_block")]

@@ -589,6 +589,23 @@ TEST_CASE("cli: vectors --bus --build writes a build's set and refuses what the 
   r = run_dda(s, "vectors --bus --build inputs=0 --io-scenario homing --out-dir " + bad.string());
   CHECK(r.status == 2);
   CHECK(r.err == "dda: error: --io-scenario needs the machine inputs: the build has none (inputs=0)\n");
+  // A scenario the build or the bus cannot run is refused before it runs.
+  const std::vector<std::pair<std::string, std::string>> scenario_refused{
+      {"--build pacer=0 --io-scenario limit-decel",
+       "--io-scenario limit-decel needs the pacer (its ramped stops, its registers): the build has none (pacer=0)"},
+      {"--build axes=2 --io-scenario homing",
+       "--io-scenario homing moves or reads the third axis: the build has two axes (axes=2)"},
+      {"--bridge spi --io-scenario overflow",
+       "--io-scenario overflow times its accesses closer than an SPI frame (some 300 clocks): run it on Wishbone or "
+       "--bridge axil"},
+  };
+  for (const auto& [opts, err] : scenario_refused) {
+    INFO(opts);
+    r = run_dda(s, "vectors --bus " + opts + " --out-dir " + bad.string());
+    CHECK(r.status == 2);
+    CHECK(r.err == "dda: error: " + err + "\n");
+    CHECK_FALSE(fs::exists(bad));
+  }
   // Two axes: a move of Z is refused, a planar arc is written.
   r = run_dda(s, "vectors --line --from 0,0,0 --to 30,20,10 --bus --build axes=2 --out-dir " + bad.string());
   CHECK(r.status == 2);

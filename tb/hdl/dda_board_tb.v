@@ -124,7 +124,7 @@ module dda_board_tb;
       #4;
       clk = 1'b1;
       #1;
-      miso_got = vexp[145] & vexp[144];
+      miso_got = vexp[145];  // (while the enable is low, the pin's state is compared: high impedance)
       oe_got   = vexp[144];
       if (vexp[144] && miso_pin !== vexp[145]) miso_got = ~vexp[145];
       if (!vexp[144] && miso_pin !== 1'bz) oe_got = 1'b1;

@@ -49,7 +49,8 @@ void commit_words(BusMaster& m, const Command& c) {
 void queue_overflow(BusTarget& block, const Expect& ex) {
   fresh(block);
   MachineSim t(block, Point{}, MachineSwitches{});
-  WishboneMaster m(t, 37, true, 0);
+  const auto master = make_master(block.bus(), t, 37, true, 0);
+  BusMaster& m = *master;
   MotionDriver d(m, 37, false);
   const std::uint32_t depth = 1u << get_field("CONFIG", "depth_log2", d.read("CONFIG"));
   d.write("IRQ_LEVEL", depth - 1);
@@ -93,7 +94,8 @@ void queue_overflow(BusTarget& block, const Expect& ex) {
 void each_limit(BusTarget& block, const Expect& outer) {
   fresh(block);
   MachineSim t(block, Point{}, MachineSwitches{});
-  WishboneMaster m(t, 41, false, 3);
+  const auto master = make_master(block.bus(), t, 41, false, 3);
+  BusMaster& m = *master;
   MotionDriver d(m, 41);
   d.set_inputs(0, 2, 1, 0);
   for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -443,7 +445,8 @@ void timing_ranges(MotionDriver& d, std::mt19937_64& rng, const Expect& ex) {
 void field_ranges(BusTarget& block, const Expect& ex) {
   fresh(block);
   MachineSim t(block, Point{}, MachineSwitches{});
-  WishboneMaster m(t, 43, true, 2);
+  const auto master = make_master(block.bus(), t, 43, true, 2);
+  BusMaster& m = *master;
   MotionDriver d(m, 43);
   std::mt19937_64 rng(43);
   register_ranges(d, rng, ex);

@@ -431,14 +431,16 @@ void glitches(BusTarget& block, const Expect& outer) {
 const std::array<IoScenario, 10> kIoScenarios{{
     {"estop", "an E-stop in the middle of a piece", estop_mid_piece},
     {"limit-hard", "a limit hit during a move, stopped as a hard stop", limit_hard},
-    {"limit-decel", "a limit hit during a paced move, stopped at ACCEL", limit_decel},
-    {"homing", "a homing cycle on each axis", home_each_axis},
-    {"probing", "a touch while disarmed, a probing move that stops on the probe, and one that never touches", probing},
+    {"limit-decel", "a limit hit during a paced move, stopped at ACCEL", limit_decel, kNeedsPacer},
+    {"homing", "a homing cycle on each axis", home_each_axis, kNeedsZ},
+    {"probing", "a touch while disarmed, a probing move that stops on the probe, and one that never touches", probing,
+     kNeedsPacer | kNeedsZ},
     {"snapshot", "snapshots while two axes run", snapshot_moving},
     {"glitches", "pulses shorter than the filter on every input", glitches},
-    {"overflow", "the queue filled to its depth and one entry more", queue_overflow},
-    {"limits", "each of the six limits hit on a move toward it", each_limit},
-    {"ranges", "every register, position, command field, speed, filter and timing at its full width", field_ranges},
+    {"overflow", "the queue filled to its depth and one entry more", queue_overflow, kNeedsFastBus},
+    {"limits", "each of the six limits hit on a move toward it", each_limit, kNeedsZ},
+    {"ranges", "every register, position, command field, speed, filter and timing at its full width", field_ranges,
+     kNeedsPacer | kNeedsZ | kNeedsFastBus},
 }};
 
 const IoScenario* find_io_scenario(std::string_view name) {

@@ -46,9 +46,15 @@ class Expect {
   Report report_;
 };
 
+// What a scenario needs of the block beyond its machine inputs: the pacer (a ramped stop
+// at ACCEL, the pacer's registers), the third axis, a bus faster than SPI (one register
+// access a frame of some 300 clocks: a queue filled behind a short move, a filter's
+// window timed between accesses).
+enum ScenarioNeeds : unsigned { kNeedsPacer = 1, kNeedsZ = 2, kNeedsFastBus = 4 };
 struct IoScenario {
   std::string_view name, what;
   void (*run)(BusTarget& block, const Expect& expect);
+  unsigned needs = 0;  // ScenarioNeeds
 };
 // estop, limit-hard, limit-decel, homing, probing, snapshot, glitches; the block at the
 // ends of its ranges (block_scenarios.cpp): overflow, limits, ranges.
