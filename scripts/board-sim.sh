@@ -193,5 +193,8 @@ if [ "$mutants" -gt 0 ]; then
   fi
   cat "$work/mutants.txt"
 fi
-XX
+killed=$(grep -c ": fails on " "$work/mutants.txt" || true)
+made=$(grep -c -E ": fails on |: passes every set" "$work/mutants.txt" || true)
+echo "random single-LUT mutants: $killed of $made fail on one of the sets ($((mutants - made)) of $mutants not made or not compiled)"
+[ "$made" = "$mutants" ] || status=1
 exit $status
