@@ -155,7 +155,7 @@ set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_p
 # (tests/check-board.py); its RTL on the board's five vector sets (scripts/board-sets.sh:
 # the block behind SPI in the board's build), every pin and register on every cycle, on
 # Icarus (about 40 s with the sets' writing). Its bitstream and both netlists on the same sets with the LUT
-# mutants: the long lane (scripts/bitstream.sh, scripts/board-sim.sh; about an hour).
+# mutants: the long lane (scripts/bitstream.sh, scripts/board-sim.sh; about 80 min on 2 cores).
 add_test(NAME board.pins COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check-board.py ${PROJECT_BINARY_DIR})
 set_tests_properties(board.pins PROPERTIES LABELS "docs;board")
 set(_dda_board_sets ${CMAKE_CURRENT_BINARY_DIR}/board_sets)
