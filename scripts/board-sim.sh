@@ -46,8 +46,8 @@ case "$which" in rtl|synth|routed|all|none) ;; *) echo "board-sim: --netlist is 
 [[ "$seed" =~ ^[0-9]+$ ]] || { echo "board-sim: --seed takes a whole number, not '$seed'" >&2; exit 2; }
 [ "$which" != none ] || [ "$mutants" -ge 0 ] || { echo "board-sim: --netlist none runs only --mutants N" >&2; exit 2; }
 mkdir -p "$build" && build=$(cd "$build" && pwd)
-tools="iverilog vvp python3"
-[ "$which" = rtl ] && [ "$mutants" -lt 0 ] || tools="$tools yosys icebox_vlog"
+tools="iverilog vvp python3 yosys"
+[ "$which" = rtl ] && [ "$mutants" -lt 0 ] || tools="$tools icebox_vlog"
 for tool in $tools; do
   command -v "$tool" >/dev/null || { echo "board-sim: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done
@@ -81,23 +81,9 @@ if { [ "$which" != rtl ] && [ "$which" != none ]; } || [ "$mutants" -ge 0 ]; the
   [ "$stale" = 0 ] || "$root/scripts/bitstream.sh"
 fi
 
-bin=$(command -v yosys)
-cells_sim=$(cd "$(dirname "$(readlink -f "$bin")")/../share/yosys/ice40" && pwd)/cells_sim.v
-# Yosys' models of the cells a netlist uses but the PLL (the bench's), from the installed
-# ice40/cells_sim.v (the whole file has parts Icarus rejects): its header's macros
-# without the ports' default values, then each module.
+# Yosys' models of the cells a netlist uses but the PLL (the bench's model).
 models() {  # models NETLIST OUT [extra cell ...]
-  local used m
-  used=$( (grep -oE '^ *SB_[A-Z0-9_]+' "$1" | tr -d ' '; shift 2; printf '%s\n' "$@") | sort -u | grep -v '^SB_PLL40_CORE$' || true)
-  {
-    echo '`timescale 1ps / 1ps'
-    echo '`define SB_DFF_INIT initial Q = 0;'
-    echo '`define NO_ICE40_DEFAULT_ASSIGNMENTS'
-    awk '/^`ifndef NO_ICE40_DEFAULT_ASSIGNMENTS/ {p = 1} p {print} p && /^`endif/ {exit}' "$cells_sim"
-    for m in $used; do
-      awk -v m="$m" '$0 ~ "^module " m " *\\(" {p = 1} p {print} p && /^endmodule/ {p = 0}' "$cells_sim"
-    done
-  } >"$2"
+  scripts/ice40-models.sh "$@" --except SB_PLL40_CORE
 }
 compile() {  # compile OUT.vvp DEFINES SOURCES...
   local out=$1 defs=$2

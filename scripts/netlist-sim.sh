@@ -74,24 +74,8 @@ srcs=$(scripts/rtl-files.sh "rtl/$top.f" | tr "\n" " ")
 echo "netlist-sim: synthesizing $top${spec:+ (build $spec)}"
 yosys -q -l "$work/yosys.log" -p "read_verilog -sv -DDDA_ICE40 -Irtl $srcs; $build_set synth_ice40 -top $top; \
   write_verilog -noattr $work/netlist.v" >/dev/null
-# Yosys' models of the cells the netlist uses, from the installed ice40/cells_sim.v (the
-# whole file has parts Icarus rejects): its header's macros without the ports' default
-# values (Icarus has none; every port is connected), then each module.
-bin=$(command -v yosys)
-cells_sim=$(cd "$(dirname "$(readlink -f "$bin")")/../share/yosys/ice40" && pwd)/cells_sim.v
-used=$(grep -oE '^  SB_[A-Z0-9_]+' "$work/netlist.v" | sort -u | tr -d ' ')
-{
-  echo '`timescale 1ps / 1ps'
-  echo '`define SB_DFF_INIT initial Q = 0;'
-  echo '`define NO_ICE40_DEFAULT_ASSIGNMENTS'
-  awk '/^`ifndef NO_ICE40_DEFAULT_ASSIGNMENTS/ {p = 1} p {print} p && /^`endif/ {exit}' "$cells_sim"
-  for m in $used; do
-    awk -v m="$m" '$0 ~ "^module " m " *\\(" {p = 1} p {print} p && /^endmodule/ {p = 0}' "$cells_sim"
-  done
-} >"$work/cells.v"
-for m in $used; do
-  grep -q "^module $m *(" "$work/cells.v" || { echo "netlist-sim: no model of $m in $cells_sim" >&2; exit 1; }
-done
+# Yosys' models of the cells the netlist uses (scripts/ice40-models.sh).
+scripts/ice40-models.sh "$work/netlist.v" "$work/cells.v"
 
 compile() {  # compile NETLIST OUT.vvp
   iverilog -g2012 "${defs[@]}" -Irtl -Itb/hdl -o "$2" tb/hdl/dda_bus_tb.v "$1" "$work/cells.v" 2>"$work/iverilog.log" ||
