@@ -94,7 +94,8 @@ endif()
 # dda_motion_harness_lib(TARGET DEPTH_LOG2 [BRIDGES] [NO_INPUTS] [AXES2] [NO_PACER]): the motion block's harness (tb/engines/)
 # around the RTL verilated with that queue depth (MotionHarness compiled with the same
 # depth); "default": the RTL's default (DepthLog2 = motion::kMaxDepthLog2, from the
-# generated header). BRIDGES: the block behind its AXI4-Lite and SPI bridges too
+# generated header). Its build's -G parameters are the target's property
+# DDA_BUILD_GPARAMS. BRIDGES: the block behind its AXI4-Lite and SPI bridges too
 # (dda_motion_axil, dda_motion_spi), each verilated on its own.
 function(dda_motion_harness_lib target depth_log2)
   set(eng ${PROJECT_SOURCE_DIR}/tb/engines)
@@ -111,28 +112,32 @@ function(dda_motion_harness_lib target depth_log2)
     set(gparam -GDepthLog2=${depth_log2})
   endif()
   set(tops dda_motion)
+  set(bparam "")  # the build's parameters (without the depth): the target's DDA_BUILD_GPARAMS
   # NO_INPUTS: the build without the machine inputs (motion::Build::inputs; the
   # parameter's name is kBuildParams' and the test "build: ..." checks it).
   if("NO_INPUTS" IN_LIST ARGN)
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_INPUTS=0)
-    list(APPEND gparam -GInputs=0)
+    list(APPEND bparam -GInputs=0)
   else()
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_INPUTS=1)
   endif()
   # AXES2: the build of two axes (motion::Build::axes).
   if("AXES2" IN_LIST ARGN)
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_AXES=2)
-    list(APPEND gparam -GAxes=2)
+    list(APPEND bparam -GAxes=2)
   else()
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_AXES=3)
   endif()
   # NO_PACER: the build without the pacer (motion::Build::pacer).
   if("NO_PACER" IN_LIST ARGN)
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_PACER=0)
-    list(APPEND gparam -GPacer=0)
+    list(APPEND bparam -GPacer=0)
   else()
     target_compile_definitions(${target} PUBLIC DDA_MOTION_TEST_PACER=1)
   endif()
+  list(APPEND gparam ${bparam})
+  # (for the same build verilated elsewhere: the SystemC-side RTL of its co-simulation)
+  set_target_properties(${target} PROPERTIES DDA_BUILD_GPARAMS "${bparam}")
   if("BRIDGES" IN_LIST ARGN)
     list(APPEND tops dda_motion_axil dda_motion_spi)
     target_compile_definitions(${target} PRIVATE DDA_HARNESS_BRIDGES=1)
