@@ -95,9 +95,11 @@ BusWork run_bus_work(BusTarget& t, Bus bus, std::uint64_t seed, int arcs) {
     const auto draw = [&] { return std::uint32_t(rng() % 6); };
     d.set_timings(axis, StageTimings{draw(), draw(), draw(), draw()});
   }
+  // On a block of two axes (CONFIG.axes), planar arcs only: its Z is not built.
+  const bool spatial_ok = get_field("CONFIG", "axes", d.read("CONFIG")) == 3;
   std::vector<Plan> plans;
   while (int(plans.size()) < arcs) {
-    const bool turned = rng() % 3 == 0;
+    const bool turned = rng() % 3 == 0 && spatial_ok;
     if (auto p = (turned ? spatial : plane).next()) {
       if (turned) turn_axes(*p, int(rng() % 3));
       plans.push_back(std::move(*p));
