@@ -92,6 +92,24 @@ module dda_motion #(
   output wire                              irq_o
 );
 
+  // A build-time choice outside its range (kBuildParams, generated into
+  // dda_motion_regs.vh) stops elaboration: the module instantiated for it does not
+  // exist, so Yosys, Verilator and Icarus each fail and name it.
+  generate
+    if (DepthLog2 < `DDA_BUILD_DEPTHLOG2_MIN || DepthLog2 > `DDA_BUILD_DEPTHLOG2_MAX) begin : g_bad_depth_log2
+      dda_motion_DepthLog2_out_of_range u_bad ();
+    end
+    if (Inputs < `DDA_BUILD_INPUTS_MIN || Inputs > `DDA_BUILD_INPUTS_MAX) begin : g_bad_inputs
+      dda_motion_Inputs_out_of_range u_bad ();
+    end
+    if (Axes < `DDA_BUILD_AXES_MIN || Axes > `DDA_BUILD_AXES_MAX) begin : g_bad_axes
+      dda_motion_Axes_out_of_range u_bad ();
+    end
+    if (Pacer < `DDA_BUILD_PACER_MIN || Pacer > `DDA_BUILD_PACER_MAX) begin : g_bad_pacer
+      dda_motion_Pacer_out_of_range u_bad ();
+    end
+  endgenerate
+
   localparam integer Words = `DDA_MOTION_ENTRY_WORDS;
   localparam integer RowWords = `DDA_MOTION_ROW_WORDS;
   localparam integer Lanes    = 2 * RowWords;  // EBR lanes of a row

@@ -28,6 +28,10 @@ set(_dda_scripts ${PROJECT_SOURCE_DIR}/scripts)
 # Verilator lint with -Wall: fails on any %Warning or %Error (waivers in rtl/lint.vlt).
 dda_rtl_test(rtl.lint NEEDS VERILATOR COMMAND ${_dda_scripts}/rtl-lint.sh)
 
+# The build-time parameters outside their ranges (kBuildParams) stop elaboration of the
+# three tops on Icarus, and of the block on Verilator and Yosys, naming the parameter.
+dda_rtl_test(rtl.build_ranges NEEDS IVERILOG VERILATOR YOSYS COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check-build-ranges.sh)
+
 # synth_ice40: fails on an error, an inferred latch or multiple drivers; prints stat.
 dda_rtl_test(rtl.yosys_synth NEEDS YOSYS
              COMMAND ${_dda_scripts}/synth-check.sh ${CMAKE_CURRENT_BINARY_DIR}/rtl_synth.log)

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "model/datapath/errors.hpp"
+#include "model/motion/build.hpp"
 
 namespace dda::motion {
 
@@ -185,6 +186,11 @@ std::string verilog_header(const Map& m) {
   o += fmt::format(
       "`define DDA_MOTION_MAX_DEPTH_LOG2 {}\n`define DDA_MOTION_ENTRY_ROWS {}\n`define DDA_MOTION_ROW_WORDS {}\n",
       kMaxDepthLog2, kEntryRows, kRowWords);
+  // The build-time choices' ranges (kBuildParams): rtl/dda_motion.v refuses a parameter
+  // outside its range at elaboration.
+  for (const auto& p : kBuildParams) {
+    o += fmt::format("`define DDA_BUILD_{0}_MIN {1}\n`define DDA_BUILD_{0}_MAX {2}\n", upper(p.rtl), p.min, p.max);
+  }
   o +=
       fmt::format("`define DDA_MOTION_FEED_WORD {}\n`define DDA_MOTION_FEED_LSB {}\n`define DDA_MOTION_FEED_WIDTH {}\n",
                   kFeedWord, kFeedLsb, kFeedWidth);
