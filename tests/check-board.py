@@ -11,7 +11,9 @@ Checks that
     as the constraint file, and no ball twice;
   - the top's PLL settings are `icepll -i 12 -o` of its ClockHz, and docs/board.md states
     that clock;
-  - the block's parameters in the top are `dda build` of its "Board build:" line.
+  - the block's parameters in the top are `dda build` of its "Board build:" line;
+  - the board bench (tb/hdl/dda_board_tb.v) counts the top's power-on reset (PorBits) and
+    reset synchronizer (SyncEdges): it drives the reset pin by them.
 Exit 1 with every difference listed."""
 import re
 import subprocess
@@ -156,6 +158,16 @@ def main():
     for k in given:
         if k not in params:
             errors.append("the top sets %s, which is no build parameter" % k)
+
+    # The bench's reset timing: the top's power-on count and synchronizer depth.
+    bench = (ROOT / "tb/hdl/dda_board_tb.v").read_text()
+    for name in ("PorBits", "SyncEdges"):
+        m_top = re.search(r"(?:parameter|localparam)\s+integer\s+%s\s*=\s*(\d+)" % name, top)
+        m_tb = re.search(r"localparam\s+integer\s+%s\s*=\s*(\d+)" % name, bench)
+        if not m_top or not m_tb:
+            errors.append("%s not found in %s" % (name, TOP.name if not m_top else "tb/hdl/dda_board_tb.v"))
+        elif m_top.group(1) != m_tb.group(1):
+            errors.append("tb/hdl/dda_board_tb.v's %s is %s, the top's %s" % (name, m_tb.group(1), m_top.group(1)))
 
     for e in errors:
         print("check-board: " + e)

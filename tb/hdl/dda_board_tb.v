@@ -22,7 +22,7 @@
 
 module dda_board_tb;
 
-  localparam integer PorBits   = 8;  // the top's defaults
+  localparam integer PorBits   = 8;  // the top's defaults (tests/check-board.py compares them)
   localparam integer SyncEdges = 3;
 
   reg        clk = 1'b0;
