@@ -5,7 +5,8 @@
 # cycle (and, where the netlist keeps their names, the set's registers) with a vector set
 # of the block behind its SPI bridge in the board's build (`dda vectors --bus --bridge
 # spi --build pacer=0`; docs/board.md, "Checked by simulation").
-#   usage: scripts/board-sim.sh [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S] SET...
+#   usage: scripts/board-sim.sh [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S]
+#                               [--lut-coverage] SET...
 #   rtl     the RTL, with Yosys' model of SB_IO (registers compared too);
 #   synth   the post-synthesis netlist: the JSON scripts/bitstream.sh placed and routed,
 #           written out as Verilog (write_verilog -noattr), with Yosys' models of the cells
@@ -18,24 +19,31 @@
 # shows that the comparison can fail: the routed netlist with the LUT that drives
 # step_x_o inverted (with routed or all), and on the post-synthesis netlist: the netlist with the
 # LUT that drives step_x_o inverted, with the LUT at the D of the SPI bridge's MISO
-# register (the bit a read shifts out) inverted, and N netlists each with one bit of one
-# random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default 1):
-# the first two, run on the first set, must fail; each random one runs on the sets in
-# turn, shortest first, until one fails (two at a time with GNU parallel), and the
-# script reports how many fail. Runs scripts/bitstream.sh
+# register (the bit a read shifts out) inverted, N netlists each with one random LUT's
+# init replaced by a random one, and N each with one random LUT's init flipped at one
+# combination (scripts/netlist_mutants.py --kind init and bit, seeds S .. S + N - 1,
+# default 1; only combinations the LUT's inputs can take: a change elsewhere changes
+# nothing): the first two, run on the first set, must fail; each random one runs on the
+# sets in turn, shortest first, until one fails (two at a time with GNU parallel), and
+# the script reports how many of each kind fail. --lut-coverage runs the post-synthesis
+# netlist on the sets with tb/hdl/sb_lut4_cov.v for Yosys' LUT model and prints how many
+# of the LUTs' input combinations the sets reach (netlist_mutants.py --coverage-report);
+# the random mutants' lines then say how many of the combinations they change the sets
+# reach (a change the sets never reach cannot fail them). Runs scripts/bitstream.sh
 # first when its outputs are missing or older than the sources. Exit 1 when a set fails or a directed mutant passes.
 # Work files in $DDA_BUILD_DIR/board_sim.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DDA_BUILD_DIR:-$root/build}
-which=all mutants=-1 seed=1
-usage="usage: $0 [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S] SET..."
+which=all mutants=-1 seed=1 coverage=0
+usage="usage: $0 [--netlist rtl|synth|routed|all|none] [--mutants N] [--seed S] [--lut-coverage] SET..."
 while [ $# -gt 0 ]; do
   case "$1" in
     --netlist|--mutants|--seed) [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; } ;;&
     --netlist) which=$2; shift 2 ;;
     --mutants) mutants=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
+    --lut-coverage) coverage=1; shift ;;
     -*) echo "$usage" >&2; exit 2 ;;
     *) break ;;
   esac
@@ -44,7 +52,8 @@ done
 case "$which" in rtl|synth|routed|all|none) ;; *) echo "board-sim: --netlist is rtl, synth, routed, all or none, not '$which'" >&2; exit 2 ;; esac
 [[ "$mutants" =~ ^(-1|[0-9]+)$ ]] || { echo "board-sim: --mutants takes a count, not '$mutants'" >&2; exit 2; }
 [[ "$seed" =~ ^[0-9]+$ ]] || { echo "board-sim: --seed takes a whole number, not '$seed'" >&2; exit 2; }
-[ "$which" != none ] || [ "$mutants" -ge 0 ] || { echo "board-sim: --netlist none runs only --mutants N" >&2; exit 2; }
+[ "$which" != none ] || [ "$mutants" -ge 0 ] || [ "$coverage" = 1 ] ||
+  { echo "board-sim: --netlist none runs only --mutants N or --lut-coverage" >&2; exit 2; }
 mkdir -p "$build" && build=$(cd "$build" && pwd)
 tools="iverilog vvp python3 yosys"
 [ "$which" = rtl ] && [ "$mutants" -lt 0 ] || tools="$tools icebox_vlog"
@@ -72,7 +81,7 @@ mkdir -p "$work"
 cd "$root"
 # The netlists of the sources as they are: scripts/bitstream.sh again when its outputs are
 # missing or older than a source, the pins or the script.
-if { [ "$which" != rtl ] && [ "$which" != none ]; } || [ "$mutants" -ge 0 ]; then
+if { [ "$which" != rtl ] && [ "$which" != none ]; } || [ "$mutants" -ge 0 ] || [ "$coverage" = 1 ]; then
   stale=0
   [ -f "$build/board/$top.json" ] && [ -f "$build/board/$top.asc" ] || stale=1
   for f in $(scripts/rtl-files.sh rtl/board/$top.f) rtl/*.vh "rtl/board/$top.pcf" scripts/bitstream.sh; do
@@ -114,8 +123,11 @@ if [ "$which" = rtl ] || [ "$which" = all ]; then
   compile "$work/rtl.vvp" "-DDDA_BOARD_REGS" $(scripts/rtl-files.sh rtl/board/$top.f) "$work/cells_rtl.v"
   run_sets rtl "$work/rtl.vvp"
 fi
-if [ "$which" = synth ] || [ "$which" = all ] || [ "$mutants" -ge 0 ]; then
-  yosys -q -p "read_json $build/board/$top.json; write_verilog -noattr $work/synth.v" >/dev/null
+if [ "$which" = synth ] || [ "$which" = all ] || [ "$mutants" -ge 0 ] || [ "$coverage" = 1 ]; then
+  # (synth.v keeps its time when the netlist is the same: a coverage file newer than it is
+  # this netlist's)
+  yosys -q -p "read_json $build/board/$top.json; write_verilog -noattr $work/synth.new.v" >/dev/null
+  if cmp -s "$work/synth.new.v" "$work/synth.v"; then rm "$work/synth.new.v"; else mv "$work/synth.new.v" "$work/synth.v"; fi
   models "$work/synth.v" "$work/cells_synth.v"
 fi
 if [ "$which" = synth ] || [ "$which" = all ]; then
@@ -139,6 +151,22 @@ if [ "$which" = routed ] || [ "$which" = all ]; then
     fi
   fi
 fi
+if [ "$coverage" = 1 ]; then
+  models "$work/synth.v" "$work/cells_cov.v" --except SB_LUT4
+  compile "$work/cov.vvp" "-DDDA_BOARD_REGS -DDDA_BOARD_NETLIST" "$work/synth.v" "$work/cells_cov.v" tb/hdl/sb_lut4_cov.v
+  : >"$work/lut_coverage.new"
+  for s in "${sets[@]}"; do
+    t0=$(date +%s.%N)
+    if run "$work/cov.vvp" "$s"; then
+      echo "LUT coverage run: $(basename "$s"): passes in $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}') s"
+      grep "^LUTCOV " "$work/run.log" >>"$work/lut_coverage.new" || true  # (none: the report says so)
+    else
+      echo "LUT coverage run: FAIL on $s:" >&2; grep -v "^LUTCOV " "$work/run.log" | tail -3 >&2; status=1
+    fi
+  done
+  mv "$work/lut_coverage.new" "$work/lut_coverage.txt"
+  python3 scripts/netlist_mutants.py "$work/synth.v" --coverage-report "$work/lut_coverage.txt"
+fi
 [ "$mutants" -ge 0 ] || exit $status
 
 first=${sets[0]}
@@ -154,11 +182,16 @@ done
 # The random mutants, two at a time (GNU parallel, when installed), each on the sets
 # from the shortest up until one fails.
 by_size=$(for s in "${sets[@]}"; do echo "$((16#$(cat "$s/counts.hex"))) $s"; done | sort -n | cut -d' ' -f2- | tr '\n' ' ')
-one_mutant() {  # one_mutant K: prints its line
-  local k=$1 m=$work/mutant$1 seen="" what s
-  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$m.v" --random "$k") || { echo "random mutant $k: not made"; return; }
+# The sets' LUT coverage, when a run of --lut-coverage on this netlist left it.
+cov_opt=""
+[ -f "$work/lut_coverage.txt" ] && [ "$work/lut_coverage.txt" -nt "$work/synth.v" ] && cov_opt="--coverage $work/lut_coverage.txt"
+one_mutant() {  # one_mutant KIND K: prints its line
+  local kind=$1 k=$2 m=$work/mutant_$1_$2 seen="" what s
+  # shellcheck disable=SC2086
+  what=$(python3 scripts/netlist_mutants.py "$work/synth.v" "$m.v" --random "$k" --kind "$kind" $cov_opt) ||
+    { echo "random $kind mutant $k: not made"; return; }
   iverilog -g2012 -DDDA_BOARD_REGS -DDDA_BOARD_NETLIST -Irtl -Itb/hdl -o "$m.vvp" tb/hdl/dda_board_tb.v \
-    tb/hdl/dda_board_pll.v "$m.v" "$work/cells_synth.v" 2>/dev/null || { echo "random mutant $k: does not compile"; return; }
+    tb/hdl/dda_board_pll.v "$m.v" "$work/cells_synth.v" 2>/dev/null || { echo "random $kind mutant $k: does not compile"; return; }
   for s in $by_size; do
     if ! vvp -n "$m.vvp" +vectors="$s" >"$m.log" 2>&1 || ! grep -q "dda_board_tb: PASS" "$m.log"; then
       seen=$(basename "$s")
@@ -166,21 +199,30 @@ one_mutant() {  # one_mutant K: prints its line
     fi
   done
   rm -f "$m.v" "$m.vvp" "$m.log"
-  if [ -n "$seen" ]; then echo "random mutant $k: $what: fails on $seen"; else echo "random mutant $k: $what: passes every set"; fi
+  if [ -n "$seen" ]; then echo "random $kind mutant $k: $what: fails on $seen"; else echo "random $kind mutant $k: $what: passes every set"; fi
 }
 : >"$work/mutants.txt"
 if [ "$mutants" -gt 0 ]; then
   if parallel --version 2>/dev/null | grep -q "GNU parallel"; then
     export -f one_mutant
-    export work by_size
-    seq "$seed" $((seed + mutants - 1)) | SHELL=$(command -v bash) parallel -j 2 -k one_mutant {} >"$work/mutants.txt"
+    export work by_size cov_opt
+    SHELL=$(command -v bash) parallel -j 2 -k one_mutant {1} {2} ::: init bit ::: $(seq "$seed" $((seed + mutants - 1))) \
+      >"$work/mutants.txt"
   else
-    for ((k = seed; k < seed + mutants; k++)); do one_mutant "$k"; done >"$work/mutants.txt"
+    for kind in init bit; do
+      for ((k = seed; k < seed + mutants; k++)); do one_mutant "$kind" "$k"; done
+    done >"$work/mutants.txt"
   fi
   cat "$work/mutants.txt"
 fi
-killed=$(grep -c ": fails on " "$work/mutants.txt" || true)
-made=$(grep -c -E ": fails on |: passes every set" "$work/mutants.txt" || true)
-echo "random single-LUT mutants: $killed of $made fail on one of the sets ($((mutants - made)) of $mutants not made or not compiled)"
-[ "$made" = "$mutants" ] || status=1
+for kind in init bit; do
+  killed=$(grep -c "^random $kind mutant .*: fails on " "$work/mutants.txt" || true)
+  made=$(grep -c -E "^random $kind mutant .*: (fails on |passes every set)" "$work/mutants.txt" || true)
+  case $kind in
+    init) what="random single-LUT mutants (a LUT's init replaced)" ;;
+    bit) what="random single-bit mutants (a LUT's init flipped at one combination)" ;;
+  esac
+  echo "$what: $killed of $made fail on one of the sets ($((mutants - made)) of $mutants not made or not compiled)"
+  [ "$made" = "$mutants" ] || status=1
+done
 exit $status

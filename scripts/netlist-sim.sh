@@ -9,14 +9,16 @@
 #   usage: scripts/netlist-sim.sh [--build SPEC] [--mutants N] [--seed S] SET...
 # The sets must share one bus (their manifests' "bus": the block's top, as in
 # vector-bench.sh) and one build (their manifests' "build": `dda vectors --bus --build`),
-# which the script synthesizes; --build SPEC, when given, must be that build. --mutants N (0 or more) then shows that the comparison can fail: the netlist
-# with the LUT that drives step_x_o inverted, with the LUT at the D of the register of
-# read data bit 0 (dat_q[0], Wishbone only) inverted, and N netlists each with one bit of
-# one random LUT's init flipped (scripts/netlist_mutants.py, seeds S .. S + N - 1, default
-# 1): the first two, run on the first set, must fail; each random one runs on the sets in
-# turn until one fails, and the script reports how many fail (a flipped bit in logic the
-# sets never reach, or in an input combination they never make, passes). Exit 1 when a set fails on the netlist or a directed mutant
-# passes. A netlist runs a few hundred cycles a second on Icarus (the RTL: about 41,000),
+# which the script synthesizes; --build SPEC, when given, must be that build. --mutants
+# N (0 or more) then shows that the comparison can fail: the netlist with the LUT that
+# drives step_x_o inverted, with the LUT at the D of the register of read data bit 0
+# (dat_q[0], Wishbone only) inverted, and N netlists each with one random LUT's init
+# replaced by a random one that changes its function (scripts/netlist_mutants.py
+# --random, seeds S .. S + N - 1, default 1): the first two, run on the first set, must
+# fail; each random one runs on the sets in turn until one fails, and the script reports
+# how many fail (a change in logic the sets never reach, or in input combinations they
+# never make, passes; scripts/board-sim.sh --lut-coverage measures that for the board).
+# Exit 1 when a set fails on the netlist or a directed mutant passes. A netlist runs a few hundred cycles a second on Icarus (the RTL: about 41,000),
 # so the sets are the short ones. Work files in $DDA_BUILD_DIR/netlist_sim.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
