@@ -162,6 +162,9 @@ set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_p
 # mutants: the long lane (scripts/bitstream.sh, scripts/board-sim.sh; about 80 min on 2 cores).
 add_test(NAME board.pins COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check-board.py ${PROJECT_BINARY_DIR})
 set_tests_properties(board.pins PROPERTIES LABELS "docs;board")
+# The motion tops' port tables in docs/design.md ("Ports") against their port lists.
+add_test(NAME docs.ports COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check-ports.py)
+set_tests_properties(docs.ports PROPERTIES LABELS "docs")
 set(_dda_board_sets ${CMAKE_CURRENT_BINARY_DIR}/board_sets)
 add_test(NAME board.gen_sets COMMAND ${_dda_scripts}/board-sets.sh ${_dda_board_sets})
 set_tests_properties(board.gen_sets PROPERTIES FIXTURES_SETUP board_sets LABELS "rtl;motion;board"
