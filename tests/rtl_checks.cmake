@@ -159,7 +159,8 @@ set_tests_properties(netlist.post_synthesis PROPERTIES FIXTURES_REQUIRED "bvec_p
 # (tests/check-board.py); its RTL on the board's five vector sets (scripts/board-sets.sh:
 # the block behind SPI in the board's build), every pin and register on every cycle, on
 # Icarus (about 40 s with the sets' writing). Its bitstream and both netlists on the same sets with the LUT
-# mutants: the long lane (scripts/bitstream.sh, scripts/board-sim.sh; about 80 min on 2 cores).
+# mutants, 10 random ones of each kind: the long lane (scripts/bitstream.sh, scripts/board-sim.sh;
+# over an hour on 2 cores).
 add_test(NAME board.pins COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check-board.py ${PROJECT_BINARY_DIR})
 set_tests_properties(board.pins PROPERTIES LABELS "docs;board")
 # The motion tops' port tables in docs/design.md ("Ports") against their port lists.
@@ -175,7 +176,7 @@ dda_rtl_test(board.rtl NEEDS IVERILOG VVP COMMAND ${_dda_scripts}/board-sim.sh -
 set_tests_properties(board.rtl PROPERTIES FIXTURES_REQUIRED board_sets LABELS "rtl;motion;board"
                      ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
 dda_rtl_test(board.netlists NEEDS YOSYS NEXTPNR ICEPACK ICETIME IVERILOG VVP
-             COMMAND ${_dda_scripts}/board-sim.sh --netlist all --mutants 20 ${_dda_board_set_dirs})
+             COMMAND ${_dda_scripts}/board-sim.sh --netlist all --mutants 10 ${_dda_board_set_dirs})
 set_tests_properties(board.netlists PROPERTIES FIXTURES_REQUIRED board_sets LABELS "rtl;motion;board;netlist;long"
                      TIMEOUT 7200 ENVIRONMENT DDA_BUILD_DIR=${PROJECT_BINARY_DIR})
 # The pacer's comparisons at their thresholds on the bus: on a clock of 2^20 Hz the entry
