@@ -18,6 +18,46 @@
 #define DDA_MOTION_FEED_MASK 0xFFFFFFFFu
 #define DDA_MOTION_TIMING_WIDTH 12u
 
+/* The core's command, the first DDA_MOTION_CMD_BITS bits of an entry: field NAME
+ * occupies bits AT .. AT + WIDTH - 1, counted from bit 0 of entry word 0 (bit k in
+ * word k / 32, bit k % 32); a negative value in two's complement of WIDTH bits. */
+#define DDA_MOTION_CMD_JV_X_AT 0u  /* initial X integrand (scaled, two's complement) */
+#define DDA_MOTION_CMD_JV_X_WIDTH 51u
+#define DDA_MOTION_CMD_JV_Y_AT 51u  /* initial Y integrand (scaled, two's complement) */
+#define DDA_MOTION_CMD_JV_Y_WIDTH 51u
+#define DDA_MOTION_CMD_JR_X_AT 102u  /* initial X accumulator (preload), < cap */
+#define DDA_MOTION_CMD_JR_X_WIDTH 51u
+#define DDA_MOTION_CMD_JR_Y_AT 153u  /* initial Y accumulator (preload), < cap */
+#define DDA_MOTION_CMD_JR_Y_WIDTH 51u
+#define DDA_MOTION_CMD_CAP_AT 204u  /* accumulator capacity (2^n * a * b, or 2^(AccWidth-2) rotated), 0 < cap < 2^(AccWidth-1) */
+#define DDA_MOTION_CMD_CAP_WIDTH 51u
+#define DDA_MOTION_CMD_CNT_X_AT 255u  /* X steps to emit */
+#define DDA_MOTION_CMD_CNT_X_WIDTH 17u
+#define DDA_MOTION_CMD_CNT_Y_AT 272u  /* Y steps to emit */
+#define DDA_MOTION_CMD_CNT_Y_WIDTH 17u
+#define DDA_MOTION_CMD_DIR_X_AT 289u  /* X step direction (0 = +X, 1 = -X) */
+#define DDA_MOTION_CMD_DIR_X_WIDTH 1u
+#define DDA_MOTION_CMD_DIR_Y_AT 290u  /* Y step direction (0 = +Y, 1 = -Y) */
+#define DDA_MOTION_CMD_DIR_Y_WIDTH 1u
+#define DDA_MOTION_CMD_INC_X_ON_X_AT 291u  /* added to jv_x after an X step (two's complement) */
+#define DDA_MOTION_CMD_INC_X_ON_X_WIDTH 51u
+#define DDA_MOTION_CMD_INC_X_ON_Y_AT 342u  /* added to jv_x after a Y step (two's complement) */
+#define DDA_MOTION_CMD_INC_X_ON_Y_WIDTH 51u
+#define DDA_MOTION_CMD_INC_Y_ON_X_AT 393u  /* added to jv_y after an X step (two's complement) */
+#define DDA_MOTION_CMD_INC_Y_ON_X_WIDTH 51u
+#define DDA_MOTION_CMD_INC_Y_ON_Y_AT 444u  /* added to jv_y after a Y step (two's complement) */
+#define DDA_MOTION_CMD_INC_Y_ON_Y_WIDTH 51u
+#define DDA_MOTION_CMD_JV_Z_AT 495u  /* Z integrand (constant), 0 <= jv_z <= cap_z */
+#define DDA_MOTION_CMD_JV_Z_WIDTH 51u
+#define DDA_MOTION_CMD_JR_Z_AT 546u  /* initial Z accumulator (preload: the phase carried between pieces), < cap_z */
+#define DDA_MOTION_CMD_JR_Z_WIDTH 51u
+#define DDA_MOTION_CMD_CAP_Z_AT 597u  /* Z accumulator capacity, 0 < cap_z < 2^(AccWidth-1) */
+#define DDA_MOTION_CMD_CAP_Z_WIDTH 51u
+#define DDA_MOTION_CMD_CNT_Z_AT 648u  /* Z steps to emit */
+#define DDA_MOTION_CMD_CNT_Z_WIDTH 17u
+#define DDA_MOTION_CMD_DIR_Z_AT 665u  /* Z step direction (0 = +Z, 1 = -Z) */
+#define DDA_MOTION_CMD_DIR_Z_WIDTH 1u
+
 #define DDA_MOTION_AXES_WORD 20u  /* the entry word holding the axes: the core's x, y, z drive axes
                                   (i + AXES) mod 3 of X, Y, Z */
 #define DDA_MOTION_AXES_LSB 26u

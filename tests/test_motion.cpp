@@ -7,12 +7,16 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <fstream>
+#include <map>
 #include <random>
+#include <regex>
 #include <sstream>
 
 #include "host/accuracy/golden.hpp"
 #include "host/driver/motion_driver.hpp"
+#include "model/datapath/hw_command.hpp"
 #include "model/motion/motion_map.hpp"
 #include "tb/engines/motion_harness.hpp"
 #include "tb/random/dda_random.hpp"
@@ -41,6 +45,39 @@ TEST_CASE("motion_map: the checked-in files are generated from the register map"
   CHECK(slurp("rtl/dda_motion_regs.vh") == verilog_header());
   CHECK(slurp("fw/dda_motion_regs.h") == c_header());
   CHECK(slurp("docs/design.md").find(markdown()) != std::string::npos);
+}
+
+TEST_CASE("motion_map: the C header's command layout finds every field where an entry has it", "[motion]") {
+  // Its DDA_MOTION_CMD_<NAME>_AT and _WIDTH, read from the file as firmware reads them,
+  // against the words entry_words packs for a line and an arc, field by field.
+  const std::string h = slurp("fw/dda_motion_regs.h");
+  const std::regex re(R"(#define DDA_MOTION_CMD_(\w+)_AT (\d+)u[^\n]*\n#define DDA_MOTION_CMD_\1_WIDTH (\d+)u)");
+  std::map<std::string, std::pair<int, int>> at;
+  for (auto it = std::sregex_iterator(h.begin(), h.end(), re); it != std::sregex_iterator(); ++it)
+    at[(*it)[1]] = {std::stoi((*it)[2]), std::stoi((*it)[3])};
+  REQUIRE(at.size() == hw::kCmdFields.size());
+  const Plan line = plan_line(Point{-40, 7, 3}, Point{900, -350, 41}, Preload::Half);
+  ArcSpec spec;  // the paper's quarter ellipse
+  spec.a = 10;
+  spec.b = 6;
+  spec.bits = 4;
+  const Plan arc = plan_arc(spec);
+  for (const Command& c : {line.pieces.front().cmd, arc.pieces.front().cmd}) {
+    const std::vector<std::uint32_t> w = entry_words(c, 0x12345678u, 2);
+    const CmdFields f = hw::command_fields(c);
+    for (std::size_t i = 0; i < hw::kCmdFields.size(); ++i) {
+      std::string name(hw::kCmdFields[i].name);
+      for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+      INFO(name);
+      REQUIRE(at.count(name) == 1);
+      const auto [lsb, width] = at[name];
+      CHECK(width == hw::kCmdFields[i].width);
+      std::uint64_t v = 0;
+      for (int k = 0; k < width; ++k)
+        v |= std::uint64_t((w[std::size_t((lsb + k) / 32)] >> ((lsb + k) % 32)) & 1u) << k;
+      CHECK(v == (f[i] & ((std::uint64_t{1} << width) - 1)));
+    }
+  }
 }
 
 TEST_CASE("motion_map: a changed field drifts from every checked-in file, an overlap is refused",

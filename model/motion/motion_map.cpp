@@ -135,6 +135,18 @@ std::string c_header(const Map& m) {
       "#define DDA_MOTION_FEED_LSB {}u\n#define DDA_MOTION_FEED_MASK 0x{:08X}u\n#define DDA_MOTION_TIMING_WIDTH "
       "{}u\n\n",
       kFeedWord, kFeedLsb, ((std::uint64_t{1} << kFeedWidth) - 1) << kFeedLsb, kTimingWidth);
+  // The core's command in the entry: its fields LSB first from bit 0 of word 0.
+  o += fmt::format(
+      "/* The core's command, the first DDA_MOTION_CMD_BITS bits of an entry: field NAME\n"
+      " * occupies bits AT .. AT + WIDTH - 1, counted from bit 0 of entry word 0 (bit k in\n"
+      " * word k / 32, bit k % 32); a negative value in two's complement of WIDTH bits. */\n");
+  int at = 0;
+  for (const auto& f : hw::kCmdFields) {
+    o += fmt::format("#define DDA_MOTION_CMD_{}_AT {}u  /* {} */\n#define DDA_MOTION_CMD_{}_WIDTH {}u\n", upper(f.name),
+                     at, f.meaning, upper(f.name), f.width);
+    at += f.width;
+  }
+  o += "\n";
   o += fmt::format(
       "#define DDA_MOTION_AXES_WORD {}u  /* the entry word holding the axes: the core's x, y, z drive axes\n"
       "                                  (i + AXES) mod 3 of X, Y, Z */\n#define DDA_MOTION_AXES_LSB {}u\n"
