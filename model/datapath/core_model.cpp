@@ -2,6 +2,7 @@
 // The cycle-level reference model: the next-state code of every register of the table.
 #include "model/datapath/core_model.hpp"
 
+#include <array>
 #include <iterator>
 
 namespace dda {
@@ -176,24 +177,33 @@ CoreEdge CoreModel::edge(const CoreInputs& in) {
   return e;
 }
 
+namespace {
+// A port's index among the outputs.
+std::size_t out_index(std::string_view name) {
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < hw::port(name); ++i) k += hw::kPorts[i].dir == hw::PortDir::Out;
+  return k;
+}
+}  // namespace
+
 PortValues CoreModel::outputs(const Signals& s, bool ready) {
+  // (Each output's index found once: this runs on every edge.)
+  static const std::size_t ready_o = out_index("cmd_ready_o"), step_x = out_index("step_x_o"),
+                           step_y = out_index("step_y_o"), dir_x = out_index("dir_x_o"), dir_y = out_index("dir_y_o"),
+                           step_z = out_index("step_z_o"), dir_z = out_index("dir_z_o"), busy_o = out_index("busy_o"),
+                           done = out_index("done_o"), err = out_index("err_o"), iter = out_index("iter_o");
   PortValues p{};
-  const auto set = [&](std::string_view name, std::uint64_t v) {
-    std::size_t k = 0;  // index among the outputs
-    for (std::size_t i = 0; i < hw::port(name); ++i) k += hw::kPorts[i].dir == hw::PortDir::Out;
-    p[k] = v;
-  };
-  set("cmd_ready_o", ready);
-  set("step_x_o", s[kStepX]);
-  set("step_y_o", s[kStepY]);
-  set("dir_x_o", s[kDirX]);
-  set("dir_y_o", s[kDirY]);
-  set("step_z_o", s[kStepZ]);
-  set("dir_z_o", s[kDirZ]);
-  set("busy_o", s[kState] == kRun);
-  set("done_o", s[kDone]);
-  set("err_o", s[kErr]);
-  set("iter_o", s[kIter]);
+  p[ready_o] = ready;
+  p[step_x] = s[kStepX];
+  p[step_y] = s[kStepY];
+  p[dir_x] = s[kDirX];
+  p[dir_y] = s[kDirY];
+  p[step_z] = s[kStepZ];
+  p[dir_z] = s[kDirZ];
+  p[busy_o] = s[kState] == kRun;
+  p[done] = s[kDone];
+  p[err] = s[kErr];
+  p[iter] = s[kIter];
   return p;
 }
 

@@ -73,10 +73,11 @@ std::array<std::pair<bool, bool>, 3> MotionModel::routed_steps() const {
   // The core's step outputs (registered) to the stages: stage j takes the core's axis
   // (j - route) mod 3 (route 3 as 0).
   const PortValues po = CoreModel::outputs(core_.state(), false);
-  const auto port = [&](const char* name) { return po[core_out(name)] != 0; };
-  const std::array<bool, 3> step{port("step_x_o"), port("step_y_o"), port("step_z_o")};
-  const std::array<bool, 3> dir{port("dir_x_o"), port("dir_y_o"), port("dir_z_o")};
-  const std::size_t route = get("route_q") == 3 ? 0 : std::size_t(get("route_q"));
+  static const std::array<std::size_t, 6> at{core_out("step_x_o"), core_out("step_y_o"), core_out("step_z_o"),
+                                             core_out("dir_x_o"),  core_out("dir_y_o"),  core_out("dir_z_o")};
+  const std::array<bool, 3> step{po[at[0]] != 0, po[at[1]] != 0, po[at[2]] != 0};
+  const std::array<bool, 3> dir{po[at[3]] != 0, po[at[4]] != 0, po[at[5]] != 0};
+  const std::size_t route = r_[DDA_BREG("route_q")] == 3 ? 0 : std::size_t(r_[DDA_BREG("route_q")]);
   std::array<std::pair<bool, bool>, 3> r{};
   for (std::size_t j = 0; j < 3; ++j) r[j] = {step[(j + 3 - route) % 3], dir[(j + 3 - route) % 3]};
   return r;
@@ -111,7 +112,7 @@ void MotionModel::io_wires(const MachinePins& pins, Wires& w) const {
     hits |= std::uint32_t(hit_neg) << (2 * j) | std::uint32_t(hit_pos) << (2 * j + 1);
   }
   const bool estop = (lvl & 1u) != 0;
-  const std::uint32_t home_ev = (rise >> kHomeBit) & (mode >> field_of("IN_MODE", "home_x").lsb) & 7u;
+  const std::uint32_t home_ev = (rise >> kHomeBit) & (mode >> DDA_FIELD_LSB("IN_MODE", "home_x")) & 7u;
   const bool probe_ev = ((rise >> kProbeBit) & 1u) != 0 && r_[kProbeArmed] != 0;
   const bool decel = (mode & mode_bit("limit_decel")) != 0;
   w.limit_hit = hits != 0;
@@ -154,8 +155,8 @@ void MotionModel::load_io(const Wires& w) {
   if (w.snapshot) {
     latch("snap_");
     set("snap_cycle_q", r_[kCycle]);
-    set("snap_level_q", get("level_q"));
-    set("snap_done_q", get("done_count_q"));
+    set("snap_level_q", r_[DDA_BREG("level_q")]);
+    set("snap_done_q", r_[DDA_BREG("done_count_q")]);
   }
   r_[kCycle] = (r_[kCycle] + 1) & 0xFFFFFFFFu;
   for (std::size_t i = 0; i < kInputs.size(); ++i) {
@@ -170,22 +171,22 @@ void MotionModel::load_io(const Wires& w) {
 
 std::uint32_t MotionModel::read_io(std::uint32_t adr) const {
   if (!build_.inputs) return 0;
-  if (adr == reg_offset("STATUS")) {
+  if (adr == DDA_REG_OFFSET("STATUS")) {
     const auto bit = [&](std::string_view f, const char* r) {
       return std::uint32_t(get(kIo + r) != 0) << field_of("STATUS", f).lsb;
     };
     return bit("err_estop", "err_estop_q") | bit("err_limit", "err_limit_q") | bit("probe_armed", "probe_armed_q") |
            bit("probed", "probed_q");
   }
-  if (adr == reg_offset("INPUTS")) {
+  if (adr == DDA_REG_OFFSET("INPUTS")) {
     std::uint32_t lvl = 0;
     for (std::size_t i = 0; i < kInputs.size(); ++i) lvl |= std::uint32_t(input(i).lvl) << kInputs[i].bit;
     return lvl;
   }
-  if (adr == reg_offset("IN_FILTER")) {
-    return std::uint32_t(r_[kFiltSw]) << field_of("IN_FILTER", "switches").lsb |
-           std::uint32_t(r_[kFiltTick]) << field_of("IN_FILTER", "tick").lsb |
-           std::uint32_t(r_[kFiltProbe]) << field_of("IN_FILTER", "probe").lsb;
+  if (adr == DDA_REG_OFFSET("IN_FILTER")) {
+    return std::uint32_t(r_[kFiltSw]) << DDA_FIELD_LSB("IN_FILTER", "switches") |
+           std::uint32_t(r_[kFiltTick]) << DDA_FIELD_LSB("IN_FILTER", "tick") |
+           std::uint32_t(r_[kFiltProbe]) << DDA_FIELD_LSB("IN_FILTER", "probe");
   }
   static const std::array<std::pair<const char*, const char*>, 15> kPlain{{
       {"IN_POLARITY", "pol_q"},

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "model/datapath/hw_params.hpp"
@@ -335,12 +336,17 @@ constexpr std::uint32_t reg_offset(std::string_view name) {
   }
   throw "motion_map: no such register";
 }
+// reg_offset of a name the code spells out, found when it compiles (the model decodes
+// the bus on every edge).
+#define DDA_REG_OFFSET(name) (std::integral_constant<std::uint32_t, ::dda::motion::reg_offset(name)>::value)
 constexpr const Field& field_of(std::string_view reg, std::string_view name) {
   for (const auto& f : kFields) {
     if (f.reg == reg && f.name == name) return f;
   }
   throw "motion_map: no such field";
 }
+// A field's lsb of names the code spells out, found when it compiles.
+#define DDA_FIELD_LSB(reg, name) (std::integral_constant<int, ::dda::motion::field_of(reg, name).lsb>::value)
 
 // Copies the checks take (a drift test hands them a changed copy).
 struct Map {

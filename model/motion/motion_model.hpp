@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "model/datapath/core_model.hpp"
@@ -273,6 +274,9 @@ inline constexpr std::array<BlockReg, 157> kBlockRegs{{
 }};
 inline constexpr std::size_t kNumBlockRegs = kBlockRegs.size();
 constexpr std::size_t breg(std::string_view name) { return hw::index_of(kBlockRegs, name); }
+// breg of a name the code spells out, found when it compiles (the model reads its
+// registers on every edge).
+#define DDA_BREG(name) (std::integral_constant<std::size_t, ::dda::motion::breg(name)>::value)
 int width_bits(Width w, int depth_log2);
 using BlockRegs = std::array<std::uint64_t, kNumBlockRegs>;
 
@@ -332,9 +336,10 @@ class MotionModel {
   int rise_x() const { return rise_x_; }
   int rise_y() const { return rise_y_; }
   int rise_z() const { return rise_z_; }
+  // What a bus read of the register at byte address adr returns now (no side effect).
+  std::uint32_t read(std::uint32_t adr) const;
 
  private:
-  std::uint32_t read(std::uint32_t adr) const;
   std::uint64_t& reg(std::string_view name);
   std::uint64_t get(std::string_view name) const;
   StageRegs stage(char axis) const;

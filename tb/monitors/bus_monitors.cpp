@@ -46,10 +46,14 @@ void SpeedWatch::tick(const BusIn& bus) {
   t_.tick(bus);
   if (!mon_) return;
   const BlockOutputs& o = t_.outputs();
-  const std::uint64_t pol = t_.model().regs()[breg("polarity_q")];
-  const auto pin = [&](bool v, std::string_view f) { return v != (((pol >> field_of("POLARITY", f).lsb) & 1u) != 0); };
-  mon_->edge({pin(o.step_x, "step_x"), pin(o.step_y, "step_y"), pin(o.step_z, "step_z")},
-             {pin(o.dir_x, "dir_x"), pin(o.dir_y, "dir_y"), pin(o.dir_z, "dir_z")});
+  const std::uint64_t pol = t_.model().regs()[DDA_BREG("polarity_q")];
+  // (POLARITY's bits found once: this runs on every edge.)
+  static const std::array<int, 6> bit{field_of("POLARITY", "step_x").lsb, field_of("POLARITY", "step_y").lsb,
+                                      field_of("POLARITY", "step_z").lsb, field_of("POLARITY", "dir_x").lsb,
+                                      field_of("POLARITY", "dir_y").lsb,  field_of("POLARITY", "dir_z").lsb};
+  const auto pin = [&](bool v, std::size_t k) { return v != (((pol >> bit[k]) & 1u) != 0); };
+  mon_->edge({pin(o.step_x, 0), pin(o.step_y, 1), pin(o.step_z, 2)},
+             {pin(o.dir_x, 3), pin(o.dir_y, 4), pin(o.dir_z, 5)});
 }
 
 }  // namespace dda::motion

@@ -8,13 +8,35 @@
 
 namespace dda::motion {
 
+namespace {
+// An axis' registers and bits, found once (the checker runs on every edge).
+struct AxisIndex {
+  std::size_t steplen, stepspace, dirsetup, dirhold, pos;
+  int step_pol, dir_pol;  // POLARITY's bits
+  std::uint32_t pos_offset;
+};
+const AxisIndex& axis_index(std::size_t a) {
+  static const auto index = [] {
+    std::array<AxisIndex, kAxes.size()> t{};
+    for (std::size_t k = 0; k < kAxes.size(); ++k) {
+      const std::string n(1, kAxes[k]), up(1, char(kAxes[k] - 'a' + 'A'));
+      t[k] = {
+          breg("steplen_" + n + "_q"),          breg("stepspace_" + n + "_q"), breg("dirsetup_" + n + "_q"),
+          breg("dirhold_" + n + "_q"),          breg("pos_" + n + "_q"),       field_of("POLARITY", "step_" + n).lsb,
+          field_of("POLARITY", "dir_" + n).lsb, reg_offset("POS_" + up)};
+    }
+    return t;
+  }();
+  return index[a];
+}
+}  // namespace
+
 void StepDirChecker::load_timings(Axis& x, const BlockRegs& r, int a) {
-  const std::string n(1, kAxes[std::size_t(a)]);
-  const auto reg = [&](const std::string& f) { return r[breg(f + "_" + n + "_q")]; };
-  x.len = std::max<std::uint64_t>(reg("steplen"), 1);
-  x.space = std::max<std::uint64_t>(reg("stepspace"), 1);
-  x.setup = reg("dirsetup");
-  x.hold = reg("dirhold");
+  const AxisIndex& i = axis_index(std::size_t(a));
+  x.len = std::max<std::uint64_t>(r[i.steplen], 1);
+  x.space = std::max<std::uint64_t>(r[i.stepspace], 1);
+  x.setup = r[i.dirsetup];
+  x.hold = r[i.dirhold];
 }
 
 void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, bool preset, std::uint32_t pos) {
@@ -78,8 +100,8 @@ void StepDirChecker::check_axis(const BlockRegs& r, int a, bool step, bool dir, 
 
 void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, const BlockRegs& r) {
   ++cycle_;
-  const std::uint64_t pol = r[breg("polarity_q")];
-  const auto inv = [&](std::string_view f) { return ((pol >> field_of("POLARITY", f).lsb) & 1u) != 0; };
+  const std::uint64_t pol = r[DDA_BREG("polarity_q")];
+  const auto inv = [&](int bit) { return ((pol >> bit) & 1u) != 0; };
   const std::array<bool, kAxes.size()> steps{o.step_x, o.step_y, o.step_z}, dirs{o.dir_x, o.dir_y, o.dir_z};
   const bool restart = !started_ || !rst_n;  // the outputs and counters start again
   started_ = true;
@@ -88,16 +110,16 @@ void StepDirChecker::edge(const BusIn& bus, bool rst_n, const BlockOutputs& o, c
   const std::uint32_t adr = bus.adr & ((1u << kAddrWidth) - 1) & ~3u;
   const bool wrote = bus.cyc && bus.stb && bus.we && o.ack;
   for (std::size_t a = 0; a < kAxes.size(); ++a) {
-    const std::string n(1, kAxes[a]), up(1, char(kAxes[a] - 'a' + 'A'));
-    const bool step = steps[a] != inv("step_" + n), dir = dirs[a] != inv("dir_" + n);
-    const auto pos = std::uint32_t(r[breg("pos_" + n + "_q")]);
+    const AxisIndex& i = axis_index(a);
+    const bool step = steps[a] != inv(i.step_pol), dir = dirs[a] != inv(i.dir_pol);
+    const auto pos = std::uint32_t(r[i.pos]);
     if (restart) {
       ax_[a].step = step;
       ax_[a].dir = dir;
       ax_[a].pos0 = pos;
       load_timings(ax_[a], r, int(a));
     } else {
-      check_axis(r, int(a), step, dir, wrote && adr == reg_offset("POS_" + up), pos);
+      check_axis(r, int(a), step, dir, wrote && adr == i.pos_offset, pos);
     }
   }
 }
