@@ -29,12 +29,14 @@
 
 #include "cli/blocks/blocks_cmd.hpp"
 #include "cli/engines.hpp"
+#include "cli/entries/entries_cmd.hpp"
 #include "cli/gen_params_cmd.hpp"
 #include "cli/options/arc_options.hpp"
 #include "cli/options/output.hpp"
 #include "cli/options/program_cmd.hpp"
 #include "cli/options/temp_files.hpp"
 #include "cli/pace_cmd.hpp"
+#include "cli/run_cmd.hpp"
 #include "cli/speed_cmd.hpp"
 #include "cli/vectors.hpp"
 #include "cli/vectors_cmd.hpp"
@@ -142,6 +144,8 @@ struct Cli {
   FeedCli feed;
   GenParamsCli gen_params;
   BlocksCli blocks;
+  RunCli run;
+  EntriesCli entries;
   std::string build = "";  // `dda build SPEC`
 };
 
@@ -334,6 +338,14 @@ void set_up_blocks(CLI::App* sub, Cli& c) { add_blocks_options(sub, c.blocks); }
 
 void run_blocks(const Cli& c, int, char**) { run_blocks(c.blocks); }
 
+void set_up_run(CLI::App* sub, Cli& c) { add_run_options(sub, c.run); }
+
+void set_up_entries(CLI::App* sub, Cli& c) { add_entries_options(sub, c.entries); }
+
+void run_entries(const Cli& c, int, char**) { run_entries(c.entries); }
+
+void run_run(const Cli& c, int, char**) { run_run(c.run); }
+
 // The subcommands, in the order of the help: each one's options set up, and its run
 // once the command line is parsed (argc and argv: the command line, for records of it).
 struct Subcommand {
@@ -357,6 +369,10 @@ const Subcommand kSubcommands[] = {
      run_build},
     {"blocks", "the motion blocks a part program reads as, in machine coordinates (--program FILE)", set_up_blocks,
      run_blocks},
+    {"entries", "each piece's block-entry words (27 a piece: ENTRY + 4k, then CTRL.commit)", set_up_entries,
+     run_entries},
+    {"run", "run a part program live on a motion block (PROGRAM --port sim; exit statuses in --help)", set_up_run,
+     run_run},
 };
 
 // The first argument must be a command (or --help, -h, --version): an option before
@@ -446,6 +462,8 @@ int main(int argc, char** argv) {
         break;
       }
     }
+  } catch (const ExitStatus& e) {
+    return e.status();  // (its message said)
   } catch (const program::ProgramError& e) {
     std::cerr << e.what() << '\n';  // FILE:LINE:COLUMN: message, as compilers print
     return 2;

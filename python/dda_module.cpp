@@ -16,6 +16,8 @@
 #include "host/pipeline/pipeline.hpp"
 #include "host/program/program.hpp"
 #include "host/report/report.hpp"
+#include "host/run/entries.hpp"
+#include "host/run/live_run.hpp"
 #include "model/datapath/core_model.hpp"
 #include "model/datapath/hw_command.hpp"
 
@@ -88,6 +90,50 @@ std::vector<program::Move> read_moves(const py::kwargs& kw) {
   std::vector<program::Move> moves;
   program::read_stream(*in, run.file, run.read, [&](const program::Move& mv) { moves.push_back(mv); });
   return moves;
+}
+
+py::dict piece_entry(const live::PieceEntry& p) {
+  py::dict d;
+  d["piece"] = p.piece;
+  d["line"] = p.line;
+  d["from"] = point(p.from);
+  d["to"] = point(p.to);
+  d["words"] = p.words;
+  return d;
+}
+
+// A part program's entries: the program options by name, with machine_config (a file)
+// and clock (Hz) taken out first.
+py::dict program_entry_words(py::kwargs kw) {
+  std::string config;
+  double clock = 0;
+  if (kw.contains("machine_config")) {
+    config = py::str(kw["machine_config"]);
+    PyDict_DelItemString(kw.ptr(), "machine_config");
+  }
+  if (kw.contains("clock")) {
+    clock = kw["clock"].cast<double>();
+    PyDict_DelItemString(kw.ptr(), "clock");
+  }
+  const cli::ProgramCli prog = cli::program_from_args(to_args(kw));
+  ProgramRun run = cli::program_run(prog, Preload::Half, true);
+  speed::MachineLimits lim = speed::default_limits(run.read.machine);
+  if (!config.empty()) lim = speed::read_machine_config(config, lim, run.read.machine);
+  speed::check(lim, run.read.machine);
+  run.lattice.step = live::live_step(lim, run.read.machine, run.lattice.step);
+  if (clock == 0) clock = lim.live.clock_hz;
+  if (!(clock > 0 && clock <= 1e9)) throw InputError("clock is out of range: Hz, above 0 and at most 1e9");
+  const speed::PaceSetup setup = live::program_setup(run, lim, clock);
+  const auto in = program::open_program(prog.file);
+  py::list pieces;
+  live::program_entries(*in, run, lim, setup, [&](const live::PieceEntry& p) { pieces.append(piece_entry(p)); });
+  py::dict out;
+  out["accel"] = setup.accel;
+  out["vmin"] = setup.vmin;
+  out["clock_hz"] = setup.clock_hz;
+  out["step_mm"] = setup.step_mm;
+  out["pieces"] = pieces;
+  return out;
 }
 
 void bind_types(py::module_& m) {
@@ -269,6 +315,20 @@ void bind_functions(py::module_& m) {
       "what `dda stats` counts and measures (an arc or a line)");
   m.def("read_program", &read_moves,
         "the motion blocks of a part program (program='FILE' and the dda command's program options)");
+  m.def(
+      "entry_words",
+      [](const Plan& plan) {
+        py::list l;
+        for (const live::PieceEntry& p : live::plan_entries(plan)) l.append(piece_entry(p));
+        return l;
+      },
+      py::arg("plan"),
+      "each piece's block-entry words (dicts of piece, line, from, to and its 27 words, word 0 first: ENTRY + 4k, "
+      "then CTRL.commit), at the core's full rate, as `dda entries` prints them");
+  m.def("program_entry_words", &program_entry_words,
+        "a part program's pieces' block-entry words at their planned speeds (program='FILE', the program options, "
+        "machine_config='FILE', clock=HZ), as `dda entries --program` prints them and `dda run` writes them: a dict "
+        "of accel and vmin (ACCEL and VMIN, written before the entries), clock_hz, step_mm and pieces");
   m.def(
       "command_fields",
       [](const Command& c) {

@@ -18,7 +18,7 @@ PACKAGES=(
   catch2 libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev
   z3 librsvg2-bin clang-format clang-tidy parallel tao-pegtl-dev python3
   clang libclang-rt-14-dev  # scripts/fuzz-program.sh: libFuzzer and the sanitizers
-  time  # GNU time: peak memory in scripts/scale-table.sh
+  time  # GNU time: peak memory in scripts/scale-table.sh and scripts/run-long-program.sh
   pybind11-dev python3-pybind11 python3-pytest  # python/: `import dda` and its tests
   cvc4 cvc5  # scripts/formal.sh --solver: the other SMT solvers yosys-smtbmc drives
 )

@@ -21,7 +21,7 @@ case "$what" in
     missing=0 n=0
     for f in "${files[@]}"; do
       case "$f" in
-        *.cpp|*.hpp|*.h|*.v|*.vh|*.sv|*.py|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
+        *.cpp|*.hpp|*.c|*.h|*.v|*.vh|*.sv|*.py|*.f|*.vlt|*.sh|*.cmake|*CMakeLists.txt|scripts/*|.ci/*|*.gtkw|.clang-format) ;;
         *) continue ;;
       esac
       n=$((n + 1))

@@ -9,9 +9,17 @@
 #include <memory>
 #include <random>
 
+#include "model/datapath/errors.hpp"
 #include "model/motion/bus_target.hpp"
 
 namespace dda::motion {
+
+// The link to the block failed: a frame's status byte says bad, or a frame's access
+// count did not advance (a host that reads it stops the machine: `dda run` exits 6).
+class LinkError : public GuardError {
+ public:
+  using GuardError::GuardError;
+};
 
 // One register access.
 struct Transfer {
@@ -96,6 +104,9 @@ class SpiMaster : public BusMaster {
   // access, and the next frame's status must say bad (run() checks it).
   void stray_write(std::uint32_t adr, std::uint32_t dat);
   int strays() const { return strays_; }
+  // The status byte of the last frame (docs/design.md, "SPI frame": done, bad, irq,
+  // busy, count).
+  std::uint32_t last_status() const { return status_; }
 
  private:
   void hold(BusIn& b, int cycles);
@@ -106,6 +117,7 @@ class SpiMaster : public BusMaster {
   int count_ = -1;      // the status' access count expected next (-1: not known yet)
   bool stray_ = false;  // the last frame was of the wrong length
   int strays_ = 0;
+  std::uint32_t status_ = 0;
 };
 
 // A master for a target's bus: Wishbone (pipelined or classic), AXI4-Lite or SPI.

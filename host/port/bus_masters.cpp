@@ -163,11 +163,12 @@ void SpiMaster::stray_write(std::uint32_t adr, std::uint32_t dat) {
 
 std::uint32_t SpiMaster::run(const Transfer& t) {
   const auto check = [](std::uint32_t status, const char* what) {
-    if (status_field("bad", status)) throw GuardError(std::string("SPI master: the status says bad ") + what);
+    if (status_field("bad", status)) throw LinkError(std::string("SPI master: the status says bad ") + what);
   };
   const std::uint32_t s1 = take("status", frame(spi_frame_word(t.we, t.sel, t.adr, t.dat))) & 0xFFu;
+  status_ = s1;
   if (stray_) {
-    if (!status_field("bad", s1)) throw GuardError("SPI master: a frame of the wrong length, and the status not bad");
+    if (!status_field("bad", s1)) throw LinkError("SPI master: a frame of the wrong length, and the status not bad");
     stray_ = false;
   } else {
     check(s1, "before this access");
@@ -176,9 +177,10 @@ std::uint32_t SpiMaster::run(const Transfer& t) {
   // The read's data comes back in the next frame: a read of ID.
   const std::uint64_t back = frame(spi_frame_word(false, 0, reg_offset("ID"), 0));
   const std::uint32_t s2 = take("status", back);
+  status_ = s2;
   check(s2, "for a read");
   if (!status_field("done", s2) || status_field("count", s2) != ((status_field("count", s1) + 1) & 0xFu)) {
-    throw GuardError("SPI master: a read frame made no access (status 0x" + std::to_string(s2) + ")");
+    throw LinkError("SPI master: a read frame made no access (status 0x" + std::to_string(s2) + ")");
   }
   return take("data", back);
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "model/datapath/errors.hpp"
+#include "model/motion/motion_map.hpp"
 
 namespace dda::speed {
 
@@ -32,6 +33,81 @@ double number(const nlohmann::json& v, const std::string& name, const std::strin
   return x;
 }
 
+double non_negative(const nlohmann::json& v, const std::string& name, const std::string& key) {
+  if (!v.is_number()) bad(name, key + " must be a number");
+  const double x = v.get<double>();
+  if (!std::isfinite(x) || x < 0) bad(name, fmt::format("{} = {} must be 0 or more", key, x));
+  return x;
+}
+
+double finite(const nlohmann::json& v, const std::string& name, const std::string& key) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) bad(name, key + " must be a number");
+  return v.get<double>();
+}
+
+bool boolean(const nlohmann::json& v, const std::string& name, const std::string& key) {
+  if (!v.is_boolean()) bad(name, key + " must be true or false");
+  return v.get<bool>();
+}
+
+// An axis' live keys (AxisDrive); false for a key that is not one.
+bool read_drive(const std::string& key, const nlohmann::json& x, const std::string& name, const std::string& where,
+                AxisDrive& d) {
+  if (key == "steps_per_mm") {
+    d.steps_per_mm = number(x, name, where);
+  } else if (key == "step_len_ns") {
+    d.step_len_ns = non_negative(x, name, where);
+  } else if (key == "step_space_ns") {
+    d.step_space_ns = non_negative(x, name, where);
+  } else if (key == "dir_setup_ns") {
+    d.dir_setup_ns = non_negative(x, name, where);
+  } else if (key == "dir_hold_ns") {
+    d.dir_hold_ns = non_negative(x, name, where);
+  } else if (key == "invert_step") {
+    d.invert_step = boolean(x, name, where);
+  } else if (key == "invert_dir") {
+    d.invert_dir = boolean(x, name, where);
+  } else if (key == "limit_neg_mm") {
+    d.limit_neg_mm = finite(x, name, where);
+  } else if (key == "limit_pos_mm") {
+    d.limit_pos_mm = finite(x, name, where);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void read_inputs(const nlohmann::json& v, const std::string& name, LiveSettings& live) {
+  if (!v.is_object()) bad(name, "inputs must be an object");
+  for (const auto& [key, x] : v.items()) {
+    const std::string where = "inputs." + key;
+    if (key == "invert") {
+      if (!x.is_array()) bad(name, where + " must be a list of input names");
+      live.invert_inputs = 0;
+      for (const auto& n : x) {
+        const auto it = n.is_string()
+                            ? std::find_if(motion::kInputs.begin(), motion::kInputs.end(),
+                                           [&](const motion::Input& i) { return i.name == n.get<std::string>(); })
+                            : motion::kInputs.end();
+        if (it == motion::kInputs.end()) {
+          std::string names;
+          for (const auto& i : motion::kInputs) names += (names.empty() ? "" : ", ") + std::string(i.name);
+          bad(name, where + ": " + n.dump() + " is not an input (the inputs: " + names + ")");
+        }
+        live.invert_inputs |= 1u << it->bit;
+      }
+    } else if (key == "switch_filter_us") {
+      live.switch_filter_us = non_negative(x, name, where);
+    } else if (key == "probe_filter_us") {
+      live.probe_filter_us = non_negative(x, name, where);
+    } else if (key == "limit_decel") {
+      live.limit_decel = boolean(x, name, where);
+    } else {
+      bad(name, "unknown key '" + where + "' (inputs has invert, switch_filter_us, probe_filter_us, limit_decel)");
+    }
+  }
+}
+
 void read_axes(const nlohmann::json& axes, const std::string& name, Machine m, MachineLimits& l) {
   if (!axes.is_object()) bad(name, "axes must be an object of x, y, z");
   for (const auto& [axis, v] : axes.items()) {
@@ -48,8 +124,10 @@ void read_axes(const nlohmann::json& axes, const std::string& name, Machine m, M
         a.vmax = number(x, name, where);
       } else if (key == "accel_mm_per_s2") {
         a.accel = number(x, name, where);
-      } else {
-        bad(name, "unknown key '" + where + "' (an axis has vmax_mm_per_min and accel_mm_per_s2)");
+      } else if (!read_drive(key, x, name, where, l.live.axes[i])) {
+        bad(name, "unknown key '" + where +
+                      "' (an axis has vmax_mm_per_min, accel_mm_per_s2, steps_per_mm, step_len_ns, step_space_ns, "
+                      "dir_setup_ns, dir_hold_ns, invert_step, invert_dir, limit_neg_mm, limit_pos_mm)");
       }
     }
   }
@@ -94,10 +172,21 @@ MachineLimits parse_machine_config(const std::string& text, const std::string& n
       if (!v.is_number_integer() || v.get<std::int64_t>() < 2 || v.get<std::int64_t>() > 100000)
         bad(name, "window must be a whole number from 2 to 100000");
       l.window = v.get<std::size_t>();
+    } else if (key == "clock_hz") {
+      l.live.clock_hz = number(v, name, key);
+      if (l.live.clock_hz > 1e9) bad(name, fmt::format("clock_hz = {} is above 1e9", l.live.clock_hz));
+    } else if (key == "watchdog_ms") {
+      l.live.watchdog_ms = number(v, name, key);
+    } else if (key == "port") {
+      if (!v.is_string() || v.get<std::string>().empty()) bad(name, "port must be a port's name, such as \"sim\"");
+      l.live.port = v.get<std::string>();
+    } else if (key == "inputs") {
+      read_inputs(v, name, l.live);
     } else if (key != "comment") {
       bad(name, "unknown key '" + key +
                     "' (keys: axes, rapid_mm_per_min, junction_deviation_mm, min_speed_mm_per_min, "
-                    "tangential_share, default_feed_mm_per_min, window, comment)");
+                    "tangential_share, default_feed_mm_per_min, window, clock_hz, watchdog_ms, port, inputs, "
+                    "comment)");
     }
   }
   return l;

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "host/program/program.hpp"
@@ -19,6 +21,29 @@ namespace dda::speed {
 struct AxisLimits {
   double vmax = 0;   // mm/min
   double accel = 0;  // mm/s^2
+};
+
+// What a live machine needs beyond its limits (`dda run`; docs/programs.md, "Running a
+// program live"): per axis the steps per millimetre, the drive's step/dir timings, the
+// outputs' polarity and where its limit switches sit; the inputs' sense and filters;
+// the block's clock, the watchdog and the port.
+struct AxisDrive {
+  double steps_per_mm = 0;  // 0: not given (the lattice step, --step, decides)
+  // The drive's timings, ns: step pulse high and low, direction setup and hold.
+  double step_len_ns = 2000, step_space_ns = 2000, dir_setup_ns = 1000, dir_hold_ns = 1000;
+  bool invert_step = false, invert_dir = false;
+  // Where the limit switches close (mm, machine coordinates; the simulated machine's).
+  std::optional<double> limit_neg_mm, limit_pos_mm;
+};
+struct LiveSettings {
+  std::array<AxisDrive, 3> axes{};
+  double clock_hz = 30e6;           // the block's clock (the board's)
+  double watchdog_ms = 100;         // WATCHDOG: the block stops softly this long after the host's last write
+  std::string port;                 // the port when --port is not given ("": none)
+  std::uint32_t invert_inputs = 0;  // IN_POLARITY: a bit per input (motion::kInputs)
+  double switch_filter_us = 0;      // the switches' level holds this long before it counts (0: a clock)
+  double probe_filter_us = 0;       // the probe's
+  bool limit_decel = false;         // IN_MODE.limit_decel: a limit stops softly (else at once)
 };
 
 struct MachineLimits {
@@ -33,6 +58,7 @@ struct MachineLimits {
   double tangential_share = 0.5;
   double default_feed = 0;  // mm/min for feed moves of a program that gives no F (0: refused)
   std::size_t window = 16;  // pieces the lookahead plans over (at least 2)
+  LiveSettings live;        // a live machine's drives, inputs, clock and port
 };
 
 // The defaults of docs/programs.md, "Feeds and speeds": a mill (X, Y 6000 mm/min, Z

@@ -84,14 +84,15 @@ double clocks_per_path_step(std::uint64_t d, double axes) {
                   kRunClocks * stepping);
 }
 
+double piece_clock(const PlannedSegment& p, const Command& c, double step_mm) {
+  // (path steps per second at its fastest, times the clocks per path step)
+  return p.peak / step_mm * clocks_per_path_step(motion::min_iteration_distance(c), axes_factor(p.seg));
+}
+
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm) {
   double need = 0;
-  for (std::size_t k = 0; k < pp.segments.size(); ++k) {
-    const PlannedSegment& p = pp.segments[k];
-    const double v = p.peak / step_mm;  // path steps per second at its fastest
-    need = std::max(
-        need, v * clocks_per_path_step(motion::min_iteration_distance(pp.plan.pieces[k].cmd), axes_factor(p.seg)));
-  }
+  for (std::size_t k = 0; k < pp.segments.size(); ++k)
+    need = std::max(need, piece_clock(pp.segments[k], pp.plan.pieces[k].cmd, step_mm));
   const double ramp = std::sqrt(pl.accel / step_mm * std::ldexp(1.0, motion::kRampFrac - motion::kAccelWidth));
   return std::max(need, ramp);
 }

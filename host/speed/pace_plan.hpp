@@ -53,6 +53,8 @@ PlannedProgram plan_program_pieces(std::istream& in, const std::string& file, co
 // 100% override: an override above it needs the clock raised as much; step/dir timings
 // longer than kNormLatency + 1 clocks a step are not counted.
 double slowest_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm);
+// The clock one planned piece (command c) needs by that rule, Hz.
+double piece_clock(const PlannedSegment& p, const Command& c, double step_mm);
 // InputError, with the clock needed, for a setup's clock below slowest_clock.
 void check_clock(const PlannedProgram& pp, const PlannerLimits& pl, double step_mm, double clock_hz);
 

@@ -177,3 +177,36 @@ def test_a_refusal_is_the_commands_message(opts):
     assert isinstance(refused.value, ValueError)
     assert str(refused.value) in err.strip()
     assert len(str(refused.value)) > 10
+
+
+@pytest.mark.parametrize("opts", ARCS)
+def test_entry_words_are_the_commands(opts):
+    """Each piece's entry words, as `dda entries --format json` prints them; their command
+    bits are the command word the hardware takes (dda.command_fields' packing)."""
+    plan = dda.plan(**opts)
+    got = dda.entry_words(plan)
+    printed = json.loads(subprocess.run([DDA_BIN, "entries", *args_of(opts), "--format", "json"], check=True,
+                                        capture_output=True, text=True).stdout)
+    assert printed["accel"] is None
+    assert got == [{**p, "from": tuple(p["from"]), "to": tuple(p["to"])} for p in printed["pieces"]]
+    assert len(got) == len(plan.pieces)
+    for entry, piece in zip(got, plan.pieces):
+        assert len(entry["words"]) == 27
+        assert entry["from"] == piece.from_ and entry["to"] == piece.to
+        assert entry["words"][22:] == [0, 0, 0, 0, 0]  # no pacing: the core's full rate
+
+
+def test_program_entry_words_are_the_commands():
+    """A program's entries at its planned speeds: the module's and the command's agree."""
+    prog = str(SOURCE / "examples" / "lines.ngc")
+    config = str(SOURCE / "examples" / "machine-sim.json")
+    got = dda.program_entry_words(program=prog, machine_config=config)
+    printed = json.loads(subprocess.run([DDA_BIN, "entries", "--program", prog, "--machine-config", config,
+                                         "--format", "json"], check=True, capture_output=True, text=True).stdout)
+    assert got["pieces"] == [{**p, "from": tuple(p["from"]), "to": tuple(p["to"])} for p in printed["pieces"]]
+    assert (got["accel"], got["vmin"], got["clock_hz"]) == (printed["accel"], printed["vmin"], printed["clock_hz"])
+    assert got["clock_hz"] == 500000 and got["accel"] > 0 and got["vmin"] > 0
+    assert [e["line"] for e in got["pieces"]] == [7, 8, 9, 10, 11, 12, 13]
+    assert all(e["words"][22] > 0 for e in got["pieces"])  # a cruise speed: paced
+    with pytest.raises(dda.InputError):
+        dda.program_entry_words(program=prog, machine_config=config, clock=-1)
