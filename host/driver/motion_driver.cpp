@@ -28,7 +28,10 @@ void MotionDriver::queue(const Command& c, std::uint32_t feed, int axes, const P
   std::vector<std::size_t> order(w.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (shuffle_) std::shuffle(order.begin(), order.end(), rng_);
-  for (const std::size_t k : order) m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
+  for (const std::size_t k : order) {
+    m_.write(reg_offset("ENTRY") + 4 * std::uint32_t(k), w[k]);
+    if (each_word) each_word();
+  }
   m_.write(reg_offset("CTRL"), field_bit("CTRL", "commit") | ctrl_also);
 }
 

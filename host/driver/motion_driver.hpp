@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string_view>
 
@@ -26,6 +27,8 @@ class MotionDriver {
   // commit's write sets (on the same edge).
   void queue(const Command& c, std::uint32_t feed = 0, int axes = 0, const PaceEntry& pace = {},
              std::uint32_t ctrl_also = 0);
+  // Runs after each entry word queue() writes (a live host writes its watchdog there).
+  std::function<void()> each_word;
   // Until the queue is empty and the core idle; throws GuardError after max_polls.
   void drain(int max_polls = 1000000);
   void preset(Point p);

@@ -116,6 +116,9 @@ class Run {
   void wait_rest(bool for_dwell);
   // Until the block is at rest after a stop (busy and stopping low).
   void settle();
+  // WATCHDOG written now; or if a quarter of its timeout passed since the last write.
+  void kick();
+  void kick_if_due();
   // A soft stop to rest, on the way out of an error (which is the one said).
   void stop_softly() noexcept;
   void status_line(bool final);
@@ -134,6 +137,7 @@ class Run {
   double clock_hz_ = 0, step_mm_ = 0;
   std::uint32_t depth_ = 0, level_ = 0, watchdog_ = 0, override_ = motion::kOverrideOne;
   std::uint32_t last_done_ = 0;
+  std::uint64_t last_kick_ = 0;  // the port's clocks at the last WATCHDOG write
   std::uint64_t done_ = 0, sent_count_ = 0;
   std::deque<Sent> sent_;
   std::size_t line_ = 0, block_ = 0;
@@ -187,7 +191,7 @@ void Run::setup(const speed::PaceSetup& s) {
   d_.set_override(override_);
   d_.write("IRQ_LEVEL", std::max<std::uint32_t>(1, depth_ / 2));
   d_.write("IRQ_ENABLE", field_bit("IRQ_ENABLE", "low") | field_bit("IRQ_ENABLE", "err"));
-  d_.write("WATCHDOG", watchdog_);
+  kick();
   const std::uint32_t st = d_.read("STATUS");
   if (d_.inputs() && (d_.read("INPUTS") >> motion::input_bit("estop") & 1u))
     stop(kEstop, "E-stop is active before the start: release it (the block refuses every entry while it is)");
@@ -255,7 +259,7 @@ void Run::service() {
   }
   if (get_field("IRQ_STATUS", "low", d_.read("IRQ_STATUS"))) d_.write("IRQ_STATUS", field_bit("IRQ_STATUS", "low"));
   check_status(st);
-  d_.write("WATCHDOG", watchdog_);
+  kick();
   while (const std::optional<ControlRequest> r = controls_.poll(seconds())) apply(*r);
   if (opt_.status_every > 0 && seconds() >= next_status_) {
     status_line(false);
@@ -300,6 +304,16 @@ void Run::apply(const ControlRequest& r) {
   }
 }
 
+void Run::kick() {
+  d_.write("WATCHDOG", watchdog_);
+  last_kick_ = port_.clocks();
+}
+
+void Run::kick_if_due() {
+  // (A quarter of the timeout at most between writes, whatever the host does meanwhile.)
+  if (port_.clocks() - last_kick_ >= watchdog_ / 4) kick();
+}
+
 void Run::stop_softly() noexcept {
   try {
     d_.write("CTRL", field_bit("CTRL", "soft_stop"));
@@ -315,7 +329,7 @@ void Run::settle() {
   for (std::uint64_t t = 0; t < std::uint64_t(60 * clock_hz_); t += poll) {
     const std::uint32_t st = d_.read("STATUS");
     if (!get_field("STATUS", "busy", st) && !get_field("STATUS", "stopping", st)) return;
-    d_.write("WATCHDOG", watchdog_);
+    kick();
     port_.wait(poll);
   }
   throw GuardError("the block did not come to rest within a minute after the stop");
@@ -328,7 +342,7 @@ void Run::wait_rest(bool for_dwell) {
     if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st) && !get_field("STATUS", "stopping", st))
       break;
     if (stopping_) {
-      d_.write("WATCHDOG", watchdog_);
+      kick();
       if (get_field("STATUS", "err", st) && get_field("STATUS", "err_estop", st)) check_status(st);
     } else {
       service();
@@ -345,7 +359,7 @@ void Run::program_stop(std::size_t line) {
   status_.flush();
   const std::uint64_t poll = std::max<std::uint64_t>(1, std::uint64_t(opt_.poll_ms * 1e-3 * clock_hz_));
   for (;;) {
-    d_.write("WATCHDOG", watchdog_);
+    kick();
     check_status(d_.read("STATUS"));
     if (const std::optional<ControlRequest> r = controls_.poll(seconds())) {
       apply(*r);  // (a resume also ends a hold; a stop ends the run; an override stays)
@@ -384,7 +398,7 @@ void Run::send(const speed::StreamEntry& e) {
     if (port_.has_irq()) {
       for (int k = 0; k < 1000 && !port_.irq(); ++k) {
         port_.wait(poll);
-        d_.write("WATCHDOG", watchdog_);
+        kick();
         while (const std::optional<ControlRequest> r = controls_.poll(seconds())) apply(*r);
         if (opt_.status_every > 0 && seconds() >= next_status_) break;
       }
@@ -393,6 +407,7 @@ void Run::send(const speed::StreamEntry& e) {
     }
     service();
   }
+  d_.each_word = [this] { kick_if_due(); };
   d_.queue(e.piece.cmd, 0, e.piece.rot, e.pace);
   ++level_;
   sent_.push_back(Sent{e.block, e.line, e.time, e.piece.to});

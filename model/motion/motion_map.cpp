@@ -89,15 +89,26 @@ void check(const Map& m) {
   }
 }
 
+namespace {
+// A register's reset value as the table gives it.
+std::string reset_text(const Register& r) {
+  if (r.access == Access::WO) return "-";
+  if (r.reset == kResetBuild) return "the build's";
+  return fmt::format("0x{:08X}", std::uint32_t(r.reset));
+}
+}  // namespace
+
 std::string markdown(const Map& m) {
   std::string o = "Motion block registers (" + constants_comment() + "):\n\n";
-  o += "| offset | register | access | meaning |\n|---|---|---|---|\n";
+  o += "| offset | register | access | reset | meaning |\n|---|---|---|---|---|\n";
   for (const auto& r : m.regs) {
     const std::string off = r.name == "ENTRY"
                                 ? fmt::format("0x{:02X}..0x{:02X}", r.offset, r.offset + 4 * kEntryWords - 1)
                                 : fmt::format("0x{:02X}", r.offset);
-    o += fmt::format("| {} | `{}` | {} | {} |\n", off, r.name, access_name(r.access), r.meaning);
+    o += fmt::format("| {} | `{}` | {} | {} | {} |\n", off, r.name, access_name(r.access), reset_text(r), r.meaning);
   }
+  o += "\n(Reset: the value read out of reset with the machine's inputs inactive; a write-only register reads "
+       "0.)\n";
   o += "\n| register | field | bits | meaning |\n|---|---|---|---|\n";
   for (const auto& f : m.fields) {
     o += fmt::format("| `{}` | `{}` | {}:{} | {} |\n", f.reg, f.name, f.lsb + f.width - 1, f.lsb, f.meaning);
@@ -162,6 +173,12 @@ std::string c_header(const Map& m) {
   for (const auto& r : m.regs) {
     o += fmt::format("#define DDA_MOTION_{}_OFFSET 0x{:02X}u  /* {}: {} */\n", upper(r.name), r.offset,
                      access_name(r.access), r.meaning);
+  }
+  o += "\n/* The registers' values out of reset, the machine's inputs inactive (CONFIG: the build's; a\n"
+       "   write-only register reads 0). */\n";
+  for (const auto& r : m.regs) {
+    if (r.access == Access::WO || r.reset == kResetBuild) continue;
+    o += fmt::format("#define DDA_MOTION_{}_RESET 0x{:08X}u\n", upper(r.name), std::uint32_t(r.reset));
   }
   o += "\n";
   for (const auto& f : m.fields) {

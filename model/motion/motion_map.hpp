@@ -158,19 +158,23 @@ constexpr const SpiPart& spi_part(std::string_view name) {
 
 enum class Access { RO, RW, W1C, WO };  // WO: reads 0; W1C: write 1 to clear a bit
 
+// A register's value out of reset, with the machine's inputs inactive (a write-only one
+// reads 0); kResetBuild: the build's (CONFIG).
+inline constexpr std::int64_t kResetBuild = -1;
 struct Register {
   std::string_view name;
   unsigned offset;
   Access access;
   std::string_view meaning;
+  std::int64_t reset = 0;
 };
 inline constexpr std::array<Register, 43> kRegisters{{
-    {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")"},
-    {"VERSION", 0x04, Access::RO, "register map version"},
+    {"ID", 0x00, Access::RO, "identifies the block: 0x44444131 (\"DDA1\")", kId},
+    {"VERSION", 0x04, Access::RO, "register map version", std::int64_t{kVersionMajor} << 16 | kVersionMinor},
     {"CONFIG", 0x08, Access::RO,
-     "the block's build: entry size, queue depth, widths, the pacer, the machine inputs, the axes"},
+     "the block's build: entry size, queue depth, widths, the pacer, the machine inputs, the axes", kResetBuild},
     {"CTRL", 0x0C, Access::WO, "commands to the block (each bit acts when written 1)"},
-    {"STATUS", 0x10, Access::RO, "state, queue level, the sticky error and its causes"},
+    {"STATUS", 0x10, Access::RO, "state, queue level, the sticky error and its causes", 0x2 /* empty */},
     {"IRQ_STATUS", 0x14, Access::W1C, "interrupt causes (events), write 1 to clear"},
     {"IRQ_ENABLE", 0x18, Access::RW, "interrupt mask: irq_o = |(IRQ_STATUS & IRQ_ENABLE)"},
     {"IRQ_LEVEL", 0x1C, Access::RW, "queue level under which a dequeue raises IRQ_STATUS.low"},
@@ -189,7 +193,7 @@ inline constexpr std::array<Register, 43> kRegisters{{
     {"DIR_Z", 0x50, Access::RW, "Z step/dir stage: direction setup and hold (clock cycles)"},
     {"ACCEL", 0x54, Access::RW, "the pacer's tangential acceleration"},
     {"VMIN", 0x58, Access::RW, "the pacer's minimum speed"},
-    {"OVERRIDE", 0x5C, Access::RW, "feed override of the paced pieces (reset: 100%)"},
+    {"OVERRIDE", 0x5C, Access::RW, "feed override of the paced pieces (reset: 100%)", kOverrideOne},
     {"WATCHDOG", 0x60, Access::RW, "the watchdog's timeout; every write restarts it"},
     {"INPUTS", 0x64, Access::RO, "the machine's inputs as filtered, 1: active"},
     {"IN_POLARITY", 0x68, Access::RW, "a bit set inverts that input's sense (estop_ni: active high)"},

@@ -91,8 +91,8 @@ std::string SimPort::pins_report(const Point& pos, bool& agree) const {
   const std::array<std::int64_t, 3> p{o_.start.x + c[0], o_.start.y + c[1], o_.start.z + c[2]};
   agree = p[0] == pos.x && p[1] == pos.y && p[2] == pos.z;
   return fmt::format(
-      "pins: {} {} {} steps counted on the step/dir pins ({} the position registers); peak path speed "
-      "{:.0f} steps/s, peak path acceleration {:.0f} steps/s^2",
+      "pins: {} {} {} steps, the start and the steps counted on the step/dir pins ({} the position registers); "
+      "peak path speed {:.0f} steps/s, peak path acceleration {:.0f} steps/s^2",
       p[0], p[1], p[2], agree ? "equal to" : "NOT equal to", m.peak_speed(), m.peak_accel());
 }
 
