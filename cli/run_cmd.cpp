@@ -25,7 +25,7 @@ void add_run_options(CLI::App* sub, RunCli& r) {
                   "where the block is: sim (its RTL verilated here, behind its SPI bridge, with a simulated "
                   "machine), with options sim:KEY=VALUE,...: estop=S (the E-stop pressed at S seconds), "
                   "pause=PCT and pause-ms=MS (the host pauses before PCT% of its frames, up to MS each), "
-                  "host-dies=S (the host stops writing at S seconds), seed=N (default: the machine config's port)");
+                  "host-dies=S (the host stops writing at S seconds), seed=N. Default: the machine config's \"port\"");
   sub->add_option("--machine-config", r.machine_config,
                   "the machine (JSON, docs/programs.md): its limits, and for a live run the drives' steps per mm, "
                   "step/dir timings and polarity, the inputs, the block's clock, the watchdog and the port");
@@ -133,7 +133,9 @@ Prepared prepare(const RunCli& r) {
   // A first pass over a program file: the whole plan checked (the reader, the planners,
   // the clock, the hardware's widths) before anything moves, and its totals for the
   // progress. (Standard input is read once: it is checked as it runs.)
-  int plane = 170;
+  // (A lathe runs in G18; a program read once from standard input is taken in its
+  // machine's plane.)
+  int plane = machine == program::Machine::Lathe ? 180 : 170;
   Point start = program::on_lattice(p.run.read.start.value_or(program::Point2{}), step);
   const speed::PlannerLimits plim = speed::planner_limits(p.lim, machine);
   const speed::PaceSetup pace = speed::pace_setup(plim, p.lim, step, p.lim.live.clock_hz);
@@ -189,9 +191,13 @@ void run_run(const RunCli& r) {
   if (p.port.host_dies_at >= 0 && res.exit == live::kFailure && sim.host_died()) host_died(sim, p.port.clock_hz, res);
   bool agree = true;
   const std::string pins = sim.pins_report(res.position, agree);
-  std::cout << fmt::format("position: {} ({} {} {} steps)\n",
-                           live::position_mm(res.position, res.plane, p.step_mm, p.run.read.machine, res.axes),
-                           res.position.x, res.position.y, res.position.z);
+  if (res.position_known || (p.port.host_dies_at >= 0 && sim.host_died())) {
+    std::cout << fmt::format("position: {} ({} {} {} steps)\n",
+                             live::position_mm(res.position, res.plane, p.step_mm, p.run.read.machine, res.axes),
+                             res.position.x, res.position.y, res.position.z);
+  } else {
+    std::cout << "position: not read back (the block could not be reached)\n";
+  }
   if (!pins.empty()) std::cout << pins << '\n';
   std::cout << fmt::format("time: {:.3f} s of the machine's, {} entries\n", res.seconds, res.entries);
   if (res.exit == live::kDone && !agree) {

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "host/run/controls.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 #include "model/datapath/errors.hpp"
@@ -61,6 +64,11 @@ struct TerminalControls::Saved {
 };
 
 TerminalControls::TerminalControls(int fd) : fd_(fd) {
+  // (A run in the background of its terminal takes no keys: touching the terminal would
+  // stop it, SIGTTOU.)
+  // (A terminal that is not the process' controlling one has no foreground group: -1.)
+  const pid_t fg = tcgetpgrp(fd_);
+  if (fg > 0 && fg != getpgrp()) return;
   termios t{};
   if (tcgetattr(fd_, &t) != 0) return;
   saved_ = std::make_unique<Saved>(Saved{t});
@@ -80,6 +88,7 @@ const char* TerminalControls::keys() {
 }
 
 std::optional<ControlRequest> TerminalControls::poll(double) {
+  if (!saved_) return std::nullopt;
   char c = 0;
   while (::read(fd_, &c, 1) == 1) {
     switch (c) {
@@ -102,8 +111,27 @@ std::optional<ControlRequest> TerminalControls::poll(double) {
   return std::nullopt;
 }
 
-ControlFile::ControlFile(const std::string& path) : path_(path), in_(path) {
-  if (!in_) throw InputError("--control '" + path + "': cannot read it");
+ControlFile::ControlFile(const std::string& path) : path_(path), fd_(::open(path.c_str(), O_RDONLY | O_NONBLOCK)) {
+  if (fd_ < 0) throw InputError("--control '" + path + "': cannot read it: " + std::strerror(errno));
+}
+
+ControlFile::~ControlFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::optional<std::string> ControlFile::next_line() {
+  for (;;) {
+    if (const auto nl = partial_.find('\n'); nl != std::string::npos) {
+      std::string line = partial_.substr(0, nl);
+      partial_.erase(0, nl + 1);
+      return line;
+    }
+    char buf[512];
+    const ssize_t n = ::read(fd_, buf, sizeof buf);
+    // (0: the end for now, the file may grow or a FIFO's writer come; -1: EAGAIN or EINTR)
+    if (n <= 0) return std::nullopt;
+    partial_.append(buf, std::size_t(n));
+  }
 }
 
 std::optional<ControlRequest> ControlFile::poll(double seconds) {
@@ -115,16 +143,9 @@ std::optional<ControlRequest> ControlFile::poll(double seconds) {
       return r;
     }
     // The next whole line, as the file grows.
-    std::string chunk;
-    in_.clear();
-    if (!std::getline(in_, chunk)) return std::nullopt;
-    if (in_.eof()) {  // (no newline yet: the rest comes later)
-      partial_ += chunk;
-      in_.clear();
-      return std::nullopt;
-    }
-    std::string line = partial_ + chunk;
-    partial_.clear();
+    std::optional<std::string> next = next_line();
+    if (!next) return std::nullopt;
+    std::string line = std::move(*next);
     ++line_;
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     std::istringstream words(line);

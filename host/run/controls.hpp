@@ -4,7 +4,6 @@
 // polls between its accesses.
 #pragma once
 
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,11 +49,16 @@ class TerminalControls : public Controls {
 class ControlFile : public Controls {
  public:
   explicit ControlFile(const std::string& path);
+  ~ControlFile() override;
+  ControlFile(const ControlFile&) = delete;
+  ControlFile& operator=(const ControlFile&) = delete;
   std::optional<ControlRequest> poll(double seconds) override;
 
  private:
+  // The next whole line read so far (never waiting: the file is read without blocking).
+  std::optional<std::string> next_line();
   std::string path_;
-  std::ifstream in_;
+  int fd_ = -1;
   std::string partial_;
   std::size_t line_ = 0;
   std::optional<std::pair<double, ControlRequest>> waiting_;

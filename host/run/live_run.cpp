@@ -164,8 +164,12 @@ void Run::setup(const speed::PaceSetup& s) {
   d_.read_build();
   if (!d_.pacer()) throw InputError("the block is built without its pacer (CONFIG.pacer): dda run paces every entry");
   depth_ = 1u << get_field("CONFIG", "depth_log2", d_.read("CONFIG"));
+  // (A block used before: its queue flushed, a feed hold ended, its errors cleared, its
+  // count of finished entries taken as the start.)
   d_.write("CTRL", field_bit("CTRL", "abort"));
+  d_.resume();
   d_.clear();
+  last_done_ = d_.read("DONE_COUNT");
   const speed::LiveSettings& L = lim_.live;
   watchdog_ = std::uint32_t(std::min(4294967295.0, std::ceil(L.watchdog_ms * 1e-3 * clock_hz_)));
   if (d_.inputs()) {
@@ -245,6 +249,8 @@ void Run::check_status(std::uint32_t st) {
 
 void Run::service() {
   if (!configured_) return;
+  // (IRQ_STATUS.low cleared first: a dequeue after the STATUS read raises it again.)
+  if (get_field("IRQ_STATUS", "low", d_.read("IRQ_STATUS"))) d_.write("IRQ_STATUS", field_bit("IRQ_STATUS", "low"));
   const std::uint32_t st = d_.read("STATUS");
   const std::uint32_t done = d_.read("DONE_COUNT");
   done_ += std::uint32_t(done - last_done_);
@@ -257,7 +263,6 @@ void Run::service() {
     line_ = sent_.front().line;
     block_ = sent_.front().block;
   }
-  if (get_field("IRQ_STATUS", "low", d_.read("IRQ_STATUS"))) d_.write("IRQ_STATUS", field_bit("IRQ_STATUS", "low"));
   check_status(st);
   kick();
   while (const std::optional<ControlRequest> r = controls_.poll(seconds())) apply(*r);
@@ -319,7 +324,7 @@ void Run::stop_softly() noexcept {
     d_.write("CTRL", field_bit("CTRL", "soft_stop"));
     stopping_ = true;
     wait_rest(false);
-  } catch (const std::exception&) {  // (the error that brought it here is the one said)
+  } catch (...) {  // (the error that brought it here is the one said)
   }
 }
 
@@ -337,13 +342,22 @@ void Run::settle() {
 
 void Run::wait_rest(bool for_dwell) {
   const std::uint64_t poll = std::max<std::uint64_t>(1, std::uint64_t(opt_.poll_ms * 1e-3 * clock_hz_));
+  const std::uint64_t start = port_.clocks();
   for (;;) {
     const std::uint32_t st = d_.read("STATUS");
     if (get_field("STATUS", "empty", st) && !get_field("STATUS", "busy", st) && !get_field("STATUS", "stopping", st))
       break;
     if (stopping_) {
+      // (A soft stop ramps down: an E-stop or the operator's second stop ends it at once.)
       kick();
       if (get_field("STATUS", "err", st) && get_field("STATUS", "err_estop", st)) check_status(st);
+      if (const std::optional<ControlRequest> r = controls_.poll(seconds()))
+        if (r->what == Control::HardStop || r->what == Control::SoftStop) {
+          d_.write("CTRL", field_bit("CTRL", "hard_stop"));
+          stop(kOperator, fmt::format("hard stop by the operator at {}", where()));
+        }
+      if (port_.clocks() - start > std::uint64_t(60 * clock_hz_))
+        throw GuardError("the block did not come to rest within a minute of the machine's time after a soft stop");
     } else {
       service();
     }
@@ -458,6 +472,7 @@ LiveResult Run::go(std::istream& in) {
     service();
     if (opt_.status_every > 0) status_line(true);
     res.position = d_.position();
+    res.position_known = true;
     if (res.position != end_) {
       res.exit = kFailure;
       res.message = fmt::format("the block ends at {}, the program at {}: steps were lost", mm(res.position), mm(end_));
@@ -483,12 +498,19 @@ LiveResult Run::go(std::istream& in) {
   } catch (const InputError&) {
     if (configured_) stop_softly();
     throw;
+  } catch (const GuardError& e) {
+    // (A guard on the host's side: the block stops softly and the run says why.)
+    if (configured_) stop_softly();
+    res.exit = kFailure;
+    res.message = e.what();
   }
+  if (opt_.status_line && res.exit != kDone) status_ << '\n';  // (past the line rewritten in place)
   if (res.exit != kDone && res.exit != kLink) {
     // (A soft stop, of a limit, the watchdog or the operator, ramps down first.)
     try {
       settle();
       res.position = d_.position();
+      res.position_known = true;
     } catch (const std::exception& e) {
       res.message += std::string("; the position could not be read back: ") + e.what();
     }

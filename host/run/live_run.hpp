@@ -91,9 +91,10 @@ struct LiveOptions {
 
 struct LiveResult {
   int exit = kDone;
-  std::string message;  // the cause, one line ("" when the program ran to its end)
-  Point position;       // the block's position registers at the end, steps
-  double seconds = 0;   // the machine's time
+  std::string message;          // the cause, one line ("" when the program ran to its end)
+  Point position;               // the block's position registers at the end, steps
+  bool position_known = false;  // read back (not after a link failure)
+  double seconds = 0;           // the machine's time
   std::uint64_t entries = 0;
   int plane = 170;  // the run's plane (position_mm)
   int axes = 3;     // the block's (CONFIG.axes)

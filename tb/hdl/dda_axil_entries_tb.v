@@ -149,6 +149,7 @@ module dda_axil_entries_tb;
       base = 3 + 33 * k;
       // Room in the queue.
       for (polls = 0; polls >= 0; polls = polls + 1) begin
+        if (polls > 50000000) fail("the queue stayed full");
         axi_read(`DDA_MOTION_STATUS_ADDR, st);
         if (!st[`DDA_MOTION_STATUS_FULL_LSB]) polls = -2;
       end
